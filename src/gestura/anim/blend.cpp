@@ -5,54 +5,82 @@
 
 namespace gestura {
 
+namespace {
+
+// Per-thread scratch, grown once: blending allocates nothing in steady state.
+struct BlendScratch {
+  std::vector<float> claimed, scale;
+  void resize(std::size_t n) {
+    if (claimed.size() < n) claimed.resize(n), scale.resize(n);
+  }
+};
+
+float layer_weight(const BlendLayer& l, std::size_t j) {
+  return std::max(0.0f, l.weight * (l.joint_weights.empty() ? 1.0f : l.joint_weights[j]));
+}
+
+}  // namespace
+
 void blend_layers(std::span<const BlendLayer> layers, const Pose& rest, Pose& out) {
   const std::size_t n = rest.size();
   out.resize(n);
+  thread_local BlendScratch scratch;
+  scratch.resize(n);
+  float* claimed = scratch.claimed.data();
+  float* scale = scratch.scale.data();
+
   // Distinct priorities, highest first (few layers: a tiny local sort).
   int priorities[16];
   int level_count = 0;
-  for (const BlendLayer& l : layers) {
+  for (const BlendLayer& l : layers)
     if (std::find(priorities, priorities + level_count, l.priority) == priorities + level_count && level_count < 16)
       priorities[level_count++] = l.priority;
-  }
   std::sort(priorities, priorities + level_count, std::greater<int>());
 
-  for (std::size_t j = 0; j < n; ++j) {
-    vec3 t(0.0f), s(0.0f);
-    quat r(0, 0, 0, 0);
-    float claimed = 0.0f;
-    const quat* reference = nullptr;  // hemisphere of the first contributor
-    for (int level = 0; level < level_count && claimed < 1.0f; ++level) {
-      float level_sum = 0.0f;
-      for (const BlendLayer& l : layers)
-        if (l.priority == priorities[level])
-          level_sum += std::max(0.0f, l.weight * (l.joint_weights.empty() ? 1.0f : l.joint_weights[j]));
-      if (level_sum <= 0.0f) continue;
-      const float room = 1.0f - claimed;
-      const float scale = level_sum > room ? room / level_sum : 1.0f;
-      for (const BlendLayer& l : layers) {
-        if (l.priority != priorities[level]) continue;
-        const float w = scale * std::max(0.0f, l.weight * (l.joint_weights.empty() ? 1.0f : l.joint_weights[j]));
-        if (w <= 0.0f) continue;
-        const quat& q = l.pose->rotations[j];
-        if (!reference) reference = &q;
-        const float sign = glm::dot(*reference, q) < 0.0f ? -w : w;
-        r.w += sign * q.w, r.x += sign * q.x, r.y += sign * q.y, r.z += sign * q.z;
-        t += w * l.pose->translations[j];
-        s += w * l.pose->scales[j];
-      }
-      claimed += std::min(level_sum, room);
+  // Accumulate layer-major into `out` (contiguous passes over joints).
+  std::fill_n(claimed, n, 0.0f);
+  std::fill(out.rotations.begin(), out.rotations.end(), quat(0, 0, 0, 0));
+  std::fill(out.translations.begin(), out.translations.end(), vec3(0.0f));
+  std::fill(out.scales.begin(), out.scales.end(), vec3(0.0f));
+  for (int level = 0; level < level_count; ++level) {
+    // scale[j]: how much of this level's summed weight fits in what is left on joint j.
+    std::fill_n(scale, n, 0.0f);
+    for (const BlendLayer& l : layers)
+      if (l.priority == priorities[level])
+        for (std::size_t j = 0; j < n; ++j) scale[j] += layer_weight(l, j);
+    for (std::size_t j = 0; j < n; ++j) {
+      const float sum = scale[j], room = 1.0f - claimed[j];
+      const float fit = sum > room ? (sum > 0.0f ? room / sum : 0.0f) : 1.0f;
+      claimed[j] += sum * fit;
+      scale[j] = fit;
     }
-    if (claimed <= 1e-6f) {
+    for (const BlendLayer& l : layers) {
+      if (l.priority != priorities[level]) continue;
+      const quat* r = l.pose->rotations.data();
+      const vec3* t = l.pose->translations.data();
+      const vec3* s = l.pose->scales.data();
+      for (std::size_t j = 0; j < n; ++j) {
+        const float w = layer_weight(l, j) * scale[j];
+        quat& acc = out.rotations[j];
+        // Keep every contribution on the hemisphere of what is accumulated so far.
+        const float signed_w = (acc.w * r[j].w + acc.x * r[j].x + acc.y * r[j].y + acc.z * r[j].z) < 0.0f ? -w : w;
+        acc.w += signed_w * r[j].w, acc.x += signed_w * r[j].x, acc.y += signed_w * r[j].y, acc.z += signed_w * r[j].z;
+        out.translations[j] += w * t[j];
+        out.scales[j] += w * s[j];
+      }
+    }
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    if (claimed[j] <= 1e-6f) {  // no layer touches this joint
       out.rotations[j] = rest.rotations[j];
       out.translations[j] = rest.translations[j];
       out.scales[j] = rest.scales[j];
       continue;
     }
-    const float inv = 1.0f / claimed;  // normalise what the layers claimed
-    out.rotations[j] = glm::normalize(r);
-    out.translations[j] = t * inv;
-    out.scales[j] = s * inv;
+    const float inv = 1.0f / claimed[j];  // normalise what the layers claimed
+    out.rotations[j] = glm::normalize(out.rotations[j]);
+    out.translations[j] *= inv;
+    out.scales[j] *= inv;
   }
 }
 
