@@ -1,0 +1,93 @@
+// gestura convert IN OUT [--scale S] — motion files between formats, chosen by extension.
+//
+// The go-between is a BvhFile (skeleton + clip + channel layout): a BVH input keeps its layout so
+// BVH → BVH reproduces it; other readers can build one with make_bvh. New formats add a row to
+// readers() or writers().
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <map>
+
+#include "command.hpp"
+#include "gestura/core/error.hpp"
+#include "gestura/io/bvh.hpp"
+
+namespace {
+
+using gestura::BvhFile;
+using gestura::Error;
+
+using Reader = std::function<BvhFile(const std::string& path, float scale)>;
+using Writer = std::function<void(const std::string& path, const BvhFile& motion)>;
+
+const std::map<std::string, Reader>& readers() {
+  static const std::map<std::string, Reader> table{
+      {".bvh", [](const std::string& path, float scale) { return gestura::load_bvh(path, {scale}); }}};
+  return table;
+}
+
+const std::map<std::string, Writer>& writers() {
+  static const std::map<std::string, Writer> table{{".bvh", gestura::save_bvh}};
+  return table;
+}
+
+std::string extension_of(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+template <class Table>
+const typename Table::mapped_type& pick(const Table& table, const std::string& path, const char* direction) {
+  const std::string ext = extension_of(path);
+  const auto it = table.find(ext);
+  if (it != table.end()) return it->second;
+  std::string supported;
+  for (const auto& [known, fn] : table) {
+    if (!supported.empty()) supported += ", ";
+    supported += known;
+  }
+  throw Error(path + ": cannot " + direction + " '" + (ext.empty() ? "(no extension)" : ext) +
+              "' files (supported: " + supported + ")");
+}
+
+int run_convert(const std::vector<std::string>& args) {
+  std::vector<std::string> paths;
+  float scale = 1.0f;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--scale") {
+      const std::string value = gestura::cli::flag_value(args, i);
+      std::size_t used = 0;
+      try {
+        scale = std::stof(value, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != value.size() || !std::isfinite(scale) || !(scale > 0.0f))
+        throw Error("--scale needs a positive number, got '" + value + "'");
+    } else if (args[i].starts_with("--")) {
+      throw Error("unknown flag " + args[i]);
+    } else {
+      paths.push_back(args[i]);
+    }
+  }
+  if (paths.size() != 2) throw Error("usage: gestura convert IN OUT [--scale S]");
+  const Reader& read = pick(readers(), paths[0], "read");
+  const Writer& write = pick(writers(), paths[1], "write");
+  const BvhFile motion = read(paths[0], scale);
+  write(paths[1], motion);
+  std::cout << "wrote " << paths[1] << ": " << motion.skeleton.size() << " joints and end sites, " << motion.frame_count
+            << " frames\n";
+  return 0;
+}
+
+gestura::cli::Registration reg{{"convert", "convert motion files (BVH → BVH, optional unit scale)",
+                                "usage: gestura convert IN OUT [--scale S]\n\n"
+                                "Reads IN and writes OUT, formats chosen by extension (now: .bvh).\n"
+                                "--scale S multiplies all lengths (offsets, positions), e.g. 0.1 to turn\n"
+                                "the decimetres of MakeHuman BVH files into metres.",
+                                run_convert}};
+
+}  // namespace

@@ -1,0 +1,57 @@
+#include "gestura/body/avatar_params.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <sstream>
+
+#include "gestura/core/error.hpp"
+
+namespace gestura {
+
+std::string_view to_string(Sex sex) {
+  switch (sex) {
+    case Sex::Female: return "female";
+    case Sex::Male: return "male";
+    case Sex::Neutral: break;
+  }
+  return "neutral";
+}
+
+Sex parse_sex(std::string_view text) {
+  std::string lower(text);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == "female" || lower == "f") return Sex::Female;
+  if (lower == "male" || lower == "m") return Sex::Male;
+  if (lower == "neutral" || lower == "n") return Sex::Neutral;
+  throw Error("avatar sex '" + std::string(text) + "' is not one of female, male, neutral");
+}
+
+static void check_range(std::string_view name, float value, float lo, float hi, std::string_view unit) {
+  if (std::isfinite(value) && value >= lo && value <= hi) return;
+  std::ostringstream out;
+  out << "avatar parameter " << name << " = " << value << unit << " is ";
+  if (std::isnan(value))
+    out << "not a number";
+  else if (!std::isfinite(value))
+    out << "infinite";
+  else if (value <= 0.0f)
+    out << "not positive";
+  else
+    out << "outside the plausible range";
+  out << " (allowed " << lo << unit << " .. " << hi << unit << ")";
+  throw Error(out.str());
+}
+
+void AvatarParams::validate() const {
+  check_range("height", height, 1.0f, 2.5f, " m");
+  check_range("build", build, 0.6f, 1.6f, "");
+  check_range("shoulder_width", shoulder_width, 0.7f, 1.4f, "");
+  check_range("arm_length", arm_length, 0.8f, 1.25f, "");
+  check_range("hand_size", hand_size, 0.7f, 1.4f, "");
+  check_range("finger_length", finger_length, 0.7f, 1.4f, "");
+  check_range("finger_thickness", finger_thickness, 0.6f, 1.5f, "");
+  if (sex != Sex::Neutral && sex != Sex::Female && sex != Sex::Male)
+    throw Error("avatar parameter sex has an invalid value");
+}
+
+}  // namespace gestura

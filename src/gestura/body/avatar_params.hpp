@@ -1,0 +1,31 @@
+#pragma once
+// The few numbers that shape the default avatar. Everything else (joint positions, limb girths,
+// finger radii) is derived from these by fixed anthropometric proportions, so every valid
+// parameter set yields a plausible person.
+#include <string>
+#include <string_view>
+
+namespace gestura {
+
+enum class Sex { Neutral, Female, Male };
+
+std::string_view to_string(Sex sex);
+// "female", "male", "neutral" (case-insensitive); throws gestura::Error otherwise.
+Sex parse_sex(std::string_view text);
+
+struct AvatarParams {
+  float height = 1.70f;            // metres, crown to floor; allowed [1.0, 2.5]
+  float build = 1.0f;              // girth multiplier of trunk and limbs; allowed [0.6, 1.6]
+  float shoulder_width = 1.0f;     // multiplier of the sex's default shoulder width; [0.7, 1.4]
+  float arm_length = 1.0f;         // multiplier of upper arm and forearm lengths; [0.8, 1.25]
+  float hand_size = 1.0f;          // multiplier of the whole hand (palm and fingers); [0.7, 1.4]
+  float finger_length = 1.0f;      // extra multiplier of the phalanges only; [0.7, 1.4]
+  float finger_thickness = 1.0f;   // multiplier of finger radii; [0.6, 1.5]
+  Sex sex = Sex::Neutral;
+
+  // Throws gestura::Error naming the parameter, its value and the allowed range for a negative,
+  // NaN, infinite or absurd value.
+  void validate() const;
+};
+
+}  // namespace gestura
