@@ -1,0 +1,162 @@
+#include "gestura/body/body_sites.hpp"
+
+#include <vector>
+
+namespace gestura {
+
+std::optional<RayHit> cast_ray(const Mesh& mesh, const vec3& origin, const vec3& direction) {
+  // Möller–Trumbore over all triangles: a few hundred rays at bind pose, so brute force is fine.
+  const vec3 dir = glm::normalize(direction);
+  std::optional<RayHit> best;
+  const std::size_t tris = mesh.indices.size() / 3;
+  for (std::size_t t = 0; t < tris; ++t) {
+    const vec3& a = mesh.positions[mesh.indices[3 * t]];
+    const vec3& b = mesh.positions[mesh.indices[3 * t + 1]];
+    const vec3& c = mesh.positions[mesh.indices[3 * t + 2]];
+    const vec3 e1 = b - a, e2 = c - a;
+    const vec3 p = glm::cross(dir, e2);
+    const float det = glm::dot(e1, p);
+    if (std::abs(det) < 1e-12f) continue;
+    const float inv = 1.0f / det;
+    const vec3 s = origin - a;
+    const float u = glm::dot(s, p) * inv;
+    if (u < 0.0f || u > 1.0f) continue;
+    const vec3 q = glm::cross(s, e1);
+    const float v = glm::dot(dir, q) * inv;
+    if (v < 0.0f || u + v > 1.0f) continue;
+    const float dist = glm::dot(e2, q) * inv;
+    if (dist <= 1e-6f || (best && dist >= best->distance)) continue;
+    best = RayHit{dist, origin + dir * dist, glm::normalize(glm::cross(e1, e2))};
+  }
+  return best;
+}
+
+namespace {
+
+struct Anchors {
+  const Skeleton& skeleton;
+  std::vector<vec3> position;  // bind-pose model positions
+  std::vector<mat4> model;
+
+  explicit Anchors(const Skeleton& s) : skeleton(s), position(s.size()), model(s.size()) {
+    const Pose rest = rest_pose(s);
+    local_to_model(s, rest, model);
+    model_positions(model, position);
+  }
+  int find(const char* name) const { return skeleton.find(name); }
+  vec3 at(int joint) const { return position[static_cast<std::size_t>(joint)]; }
+};
+
+struct SiteRay {
+  std::string name;
+  int joint;
+  vec3 origin, direction;
+};
+
+void add_site(const Anchors& anchors, const Mesh& mesh, const SiteRay& ray, std::vector<BodySite>& out) {
+  if (ray.joint < 0) return;
+  const auto hit = cast_ray(mesh, ray.origin, ray.direction);
+  if (!hit) return;
+  const mat4 inv = glm::inverse(anchors.model[static_cast<std::size_t>(ray.joint)]);
+  out.push_back(BodySite{ray.name, ray.joint, vec3(inv * vec4(hit->point, 1.0f)),
+                         glm::normalize(vec3(inv * vec4(hit->normal, 0.0f)))});
+}
+
+}  // namespace
+
+std::vector<BodySite> find_body_sites(const Skeleton& skeleton, const Mesh& mesh) {
+  std::vector<BodySite> sites;
+  if (mesh.indices.empty()) return sites;
+  const Anchors a(skeleton);
+  std::vector<SiteRay> rays;
+  const vec3 up(0, 1, 0), fwd(0, 0, 1), back(0, 0, -1);
+
+  // Head and face: proportions from the eye line to the crown (e ≈ half the head height).
+  const int skull = a.find("skullbase"), l_eye = a.find("l_eyeball_joint"), r_eye = a.find("r_eyeball_joint");
+  const int crown = a.find("skull_tip");
+  if (skull >= 0 && l_eye >= 0 && r_eye >= 0) {
+    const vec3 eyes = 0.5f * (a.at(l_eye) + a.at(r_eye));
+    const float e = crown >= 0 ? a.at(crown).y - eyes.y : 1.1f * glm::distance(a.at(l_eye), a.at(r_eye)) * 1.6f;
+    const float half_eyes = 0.5f * glm::distance(a.at(l_eye), a.at(r_eye));
+    // Ray origins sit on the head's vertical axis (over the skull base), inside the head.
+    const vec3 axis(a.at(skull).x, 0.0f, a.at(skull).z);
+    auto level = [&](float fraction) { return vec3(axis.x, eyes.y + fraction * e, axis.z); };
+    rays.push_back({"head_top", skull, level(0.0f), up});
+    rays.push_back({"forehead", skull, level(0.5f), fwd});
+    rays.push_back({"eyebrows", skull, level(0.22f), fwd});
+    rays.push_back({"nose", skull, level(-0.38f), fwd});
+    rays.push_back({"upper_lip", skull, level(-0.62f), fwd});
+    rays.push_back({"lips", skull, level(-0.70f), fwd});
+    rays.push_back({"lower_lip", skull, level(-0.78f), fwd});
+    rays.push_back({"chin", skull, level(-0.98f), glm::normalize(vec3(0, -0.25f, 1))});
+    rays.push_back({"under_chin", skull, level(-0.85f) + vec3(0, 0, 0.02f), glm::normalize(vec3(0, -1, 0.35f))});
+    for (int side = 0; side < 2; ++side) {
+      const float x = side == 0 ? 1.0f : -1.0f;
+      const std::string p = side == 0 ? "l_" : "r_";
+      const int eye = side == 0 ? l_eye : r_eye;
+      rays.push_back({p + "eye", skull, vec3(a.at(eye).x, eyes.y, axis.z), fwd});
+      rays.push_back({p + "cheek", skull, level(-0.40f) + vec3(x * half_eyes, 0, 0), glm::normalize(vec3(0.6f * x, 0, 1))});
+      rays.push_back({p + "ear", skull, level(-0.12f), vec3(x, 0, 0)});
+      rays.push_back({p + "temple", skull, level(0.25f), glm::normalize(vec3(x, 0, 0.6f))});
+    }
+  }
+  // Neck and trunk: forward rays from the spine.
+  const char* trunk[][2] = {{"neck", "vc4"}, {"chest", "vt6"}, {"stomach", "vt12"}, {"belly", "vl3"}};
+  for (auto& [site, joint] : trunk) {
+    const int j = a.find(joint);
+    if (j >= 0) rays.push_back({site, j, a.at(j), fwd});
+  }
+  const int vt1 = a.find("vt1");
+  if (vt1 >= 0 && a.find("vt6") >= 0)
+    rays.push_back({"upper_chest", vt1, 0.5f * (a.at(vt1) + a.at(a.find("vt6"))), fwd});
+  // Arms and hands, per side.
+  for (int side = 0; side < 2; ++side) {
+    const float x = side == 0 ? 1.0f : -1.0f;
+    const std::string p = side == 0 ? "l_" : "r_";
+    const int shoulder = a.find((p + "shoulder").c_str()), elbow = a.find((p + "elbow").c_str());
+    const int wrist = a.find((p + "wrist").c_str());
+    const int index1 = a.find((p + "index1").c_str()), pinky1 = a.find((p + "pinky1").c_str());
+    const int middle1 = a.find((p + "middle1").c_str());
+    if (shoulder >= 0) rays.push_back({p + "shoulder_top", shoulder, a.at(shoulder), up});
+    if (shoulder >= 0 && elbow >= 0)
+      rays.push_back({p + "upper_arm", shoulder, 0.5f * (a.at(shoulder) + a.at(elbow)), vec3(x, 0, 0)});
+    if (elbow >= 0) rays.push_back({p + "elbow", elbow, a.at(elbow), back});
+    if (elbow >= 0 && wrist >= 0) {
+      rays.push_back({p + "forearm", elbow, 0.5f * (a.at(elbow) + a.at(wrist)), fwd});
+      rays.push_back({p + "wrist_back", wrist, a.at(wrist), vec3(x, 0, 0)});
+    }
+    if (wrist >= 0 && index1 >= 0 && pinky1 >= 0 && middle1 >= 0) {
+      // Palm centre between the wrist and the knuckles; the palm faces the body's midline at rest.
+      const vec3 centre = (a.at(wrist) + a.at(index1) + a.at(pinky1) + a.at(middle1)) * 0.25f;
+      rays.push_back({p + "palm", wrist, centre, vec3(-x, 0, 0)});
+      rays.push_back({p + "back_of_hand", wrist, centre, vec3(x, 0, 0)});
+    }
+    for (const char* finger : {"thumb", "index", "middle", "ring", "pinky"}) {
+      const int tip = a.find((p + finger + "_tip").c_str());
+      const int last = a.find((p + finger + "3").c_str());
+      if (tip >= 0 && last >= 0) {
+        // Just short of the tip, pointing along the finger: the pad of the fingertip.
+        const vec3 along = glm::normalize(a.at(tip) - a.at(last));
+        rays.push_back({p + finger + "_tip", last, a.at(last) + 0.5f * (a.at(tip) - a.at(last)), along});
+      }
+    }
+  }
+  for (const SiteRay& r : rays) add_site(a, mesh, r, sites);
+  return sites;
+}
+
+const BodySite* find_site(std::span<const BodySite> sites, const std::string& name) {
+  for (const BodySite& s : sites)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+vec3 site_position(const BodySite& site, std::span<const mat4> model) {
+  return vec3(model[static_cast<std::size_t>(site.joint)] * vec4(site.local_offset, 1.0f));
+}
+
+vec3 site_normal(const BodySite& site, std::span<const mat4> model) {
+  return glm::normalize(vec3(model[static_cast<std::size_t>(site.joint)] * vec4(site.local_normal, 0.0f)));
+}
+
+}  // namespace gestura

@@ -1,0 +1,94 @@
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "gestura/body/body_sites.hpp"
+
+using namespace gestura;
+
+namespace {
+
+// A UV sphere of radius r around c, triangles wound counter-clockwise seen from outside.
+void add_sphere(Mesh& m, vec3 c, float r) {
+  const int rings = 24, segments = 32;
+  const auto base = static_cast<std::uint32_t>(m.positions.size());
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j <= segments; ++j) {
+      const float th = kPi * static_cast<float>(i) / rings, ph = 2 * kPi * static_cast<float>(j) / segments;
+      m.positions.push_back(c + r * vec3(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph)));
+    }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const std::uint32_t a = base + static_cast<std::uint32_t>(i * (segments + 1) + j), b = a + segments + 1;
+      m.indices.insert(m.indices.end(), {a, a + 1, b, a + 1, b + 1, b});
+    }
+}
+
+Skeleton head_skeleton() {
+  Skeleton s;
+  const int skull = s.add_joint("skullbase", -1, vec3(0, 1.5f, 0));
+  s.add_joint("l_eyeball_joint", skull, vec3(0.03f, 0.1f, 0.08f));
+  s.add_joint("r_eyeball_joint", skull, vec3(-0.03f, 0.1f, 0.08f));
+  s.add_joint("skull_tip", skull, vec3(0, 0.2f, 0));
+  return s;
+}
+
+}  // namespace
+
+TEST(BodySites, FaceSitesLieOnTheSurfaceInTheirAnatomicalOrder) {
+  Mesh head;
+  const vec3 centre(0, 1.6f, 0);
+  add_sphere(head, centre, 0.1f);
+  const Skeleton s = head_skeleton();
+  const auto sites = find_body_sites(s, head);
+  std::vector<mat4> model(s.size());
+  local_to_model(s, rest_pose(s), model);
+  for (const char* name : {"forehead", "nose", "chin", "l_cheek", "r_cheek", "l_ear", "head_top"}) {
+    const BodySite* site = find_site(sites, name);
+    ASSERT_NE(site, nullptr) << name;
+    const vec3 p = site_position(*site, model);
+    EXPECT_NEAR(glm::distance(p, centre), 0.1f, 0.003f) << name;  // on the (tessellated) surface
+    EXPECT_GT(glm::dot(site_normal(*site, model), glm::normalize(p - centre)), 0.95f) << name;
+  }
+  const auto y = [&](const char* n) { return site_position(*find_site(sites, n), model).y; };
+  EXPECT_GT(y("head_top"), y("forehead"));
+  EXPECT_GT(y("forehead"), y("nose"));
+  EXPECT_GT(y("nose"), y("chin"));
+  EXPECT_GT(site_position(*find_site(sites, "l_cheek"), model).x, 0.0f);  // the avatar's left is +X
+  EXPECT_LT(site_position(*find_site(sites, "r_ear"), model).x, -0.09f);
+  EXPECT_GT(site_position(*find_site(sites, "forehead"), model).z, 0.05f);  // the face looks along +Z
+}
+
+TEST(BodySites, SitesFollowTheJointThatCarriesThem) {
+  Mesh head;
+  add_sphere(head, vec3(0, 1.6f, 0), 0.1f);
+  const Skeleton s = head_skeleton();
+  const auto sites = find_body_sites(s, head);
+  Pose pose = rest_pose(s);
+  pose.rotations[0] = glm::angleAxis(kPi / 2, vec3(0, 1, 0));  // turn the head to its left
+  std::vector<mat4> model(s.size());
+  local_to_model(s, pose, model);
+  const vec3 nose = site_position(*find_site(sites, "nose"), model);
+  EXPECT_GT(nose.x, 0.08f);  // the nose now points along +X
+  EXPECT_NEAR(nose.z, 0.0f, 0.01f);
+}
+
+TEST(BodySites, MissingJointsOrMeshGiveNoSitesRatherThanInventedOnes) {
+  Skeleton s;
+  s.add_joint("humanoid_root", -1, vec3(0, 1, 0));
+  Mesh empty;
+  EXPECT_TRUE(find_body_sites(s, empty).empty());
+  Mesh head;
+  add_sphere(head, vec3(0, 1.6f, 0), 0.1f);
+  EXPECT_TRUE(find_body_sites(s, head).empty());
+}
+
+TEST(BodySites, RayCastFindsTheNearestHit) {
+  Mesh m;
+  add_sphere(m, vec3(0), 1.0f);
+  const auto hit = cast_ray(m, vec3(0, 0, -5), vec3(0, 0, 1));
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_NEAR(hit->distance, 4.0f, 0.01f);
+  EXPECT_LT(hit->normal.z, -0.99f);  // outward normal where the ray enters from −Z
+  EXPECT_FALSE(cast_ray(m, vec3(0, 0, -5), vec3(0, 1, 0)).has_value());
+}
