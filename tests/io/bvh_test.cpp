@@ -171,6 +171,50 @@ TEST(Bvh, ScaleMultipliesOffsetsAndPositionsOnly) {
   EXPECT_THROW(load_bvh(path, {0.0f}), Error);
 }
 
+std::vector<vec3> rest_positions(const Skeleton& skeleton) {
+  std::vector<mat4> model(skeleton.size());
+  local_to_model(skeleton, rest_pose(skeleton), model);
+  std::vector<vec3> out(model.size());
+  model_positions(model, out);
+  return out;
+}
+
+TEST(Bvh, MakeHumanIsDecimetresZUpAndConvertsToMetresYUp) {
+  const std::string path = shared_data() + "/makehuman/poses/tpose.bvh";
+  const BvhFile raw = load_bvh(path), ours = load_bvh(path, {0.1f, true});
+  const auto p_raw = rest_positions(raw.skeleton), p = rest_positions(ours.skeleton);
+  auto at = [&](const std::vector<vec3>& ps, const char* name) {
+    const int j = raw.skeleton.find(name);
+    EXPECT_GE(j, 0) << name;
+    return ps[static_cast<std::size_t>(std::max(j, 0))];
+  };
+  // As written, the body stands along Z (head high, feet low), toes pointing to −Y: Z-up.
+  EXPECT_GT(at(p_raw, "head").z - at(p_raw, "foot.L").z, 10.0f);
+  EXPECT_LT(at(p_raw, "toe1-2.L").y, at(p_raw, "foot.L").y);
+  // Converted: +Y up, facing +Z, left is +X, in metres (a 1.5–1.9 m tall person, head to toe tip).
+  float lowest = 1e9f, highest = -1e9f;
+  for (const vec3& q : p) lowest = std::min(lowest, q.y), highest = std::max(highest, q.y);
+  EXPECT_GT(highest - lowest, 1.5f);
+  EXPECT_LT(highest - lowest, 1.9f);
+  EXPECT_GT(at(p, "head").y, at(p, "root").y + 0.5f);
+  EXPECT_GT(at(p, "toe1-2.L").z, at(p, "foot.L").z);
+  EXPECT_GT(at(p, "wrist.L").x, 0.3f);
+  EXPECT_LT(at(p, "wrist.R").x, -0.3f);
+  // The motion turns with the axes: frame-0 positions are the old ones mapped (x, y, z) → (x, z, −y).
+  Pose pose_raw, pose;
+  sample_clip(raw.clip, 0.0f, WrapMode::Clamp, rest_pose(raw.skeleton), pose_raw);
+  sample_clip(ours.clip, 0.0f, WrapMode::Clamp, rest_pose(ours.skeleton), pose);
+  std::vector<mat4> m_raw(raw.skeleton.size()), m(ours.skeleton.size());
+  local_to_model(raw.skeleton, pose_raw, m_raw);
+  local_to_model(ours.skeleton, pose, m);
+  for (std::size_t j = 0; j < m.size(); ++j) {
+    const vec3 a(m_raw[j][3]), b(m[j][3]);
+    ASSERT_NEAR(b.x, 0.1f * a.x, 1e-4f) << j;
+    ASSERT_NEAR(b.y, 0.1f * a.z, 1e-4f) << j;
+    ASSERT_NEAR(b.z, -0.1f * a.y, 1e-4f) << j;
+  }
+}
+
 // A two-joint chain whose positions are worked out by hand (see the comments on each frame).
 constexpr const char* kChain = R"(HIERARCHY
 ROOT base
@@ -549,6 +593,16 @@ TEST(BvhCli, ConvertWritesAFileThatReadsBackScaled) {
   const CliRun info = run_cli("info '" + out + "'");
   EXPECT_EQ(info.exit_code, 0);
   EXPECT_NE(info.output.find("frames:     1\n"), std::string::npos) << info.output;
+  // --z-up renames the axes of every offset: (x, y, z) → (x, z, −y).
+  const CliRun turned = run_cli("convert '" + in + "' '" + out + "' --z-up");
+  EXPECT_EQ(turned.exit_code, 0) << turned.output;
+  const Scan c = scan(read_text(out));
+  ASSERT_EQ(a.offsets.size(), c.offsets.size());
+  for (std::size_t i = 0; i + 2 < a.offsets.size(); i += 3) {
+    EXPECT_NEAR(c.offsets[i], a.offsets[i], 1e-5);
+    EXPECT_NEAR(c.offsets[i + 1], a.offsets[i + 2], 1e-5);
+    EXPECT_NEAR(c.offsets[i + 2], -a.offsets[i + 1], 1e-5);
+  }
   std::filesystem::remove(out);
 }
 
@@ -572,6 +626,9 @@ TEST(BvhCli, BadInputExitsOneWithOneClearLine) {
   EXPECT_NE(run.output.find("unsupported file type '.txt'"), std::string::npos) << run.output;
   run = run_cli("convert only_one.bvh");
   EXPECT_EQ(run.exit_code, 1);
+  run = run_cli("convert a.bvh b.bvh --frobnicate");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.output.find("unknown flag --frobnicate"), std::string::npos) << run.output;
   run = run_cli("convert a.bvh b.bvh --scale -2");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.output.find("--scale needs a positive number"), std::string::npos) << run.output;

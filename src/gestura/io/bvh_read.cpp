@@ -6,6 +6,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "gestura/anim/change_basis.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/io/text_cursor.hpp"
 
@@ -16,13 +17,14 @@ namespace {
 class BvhReader {
  public:
   BvhReader(std::string_view text, const std::string& source, const BvhReadOptions& options)
-      : in_(text, source), scale_(options.scale) {}
+      : in_(text, source), scale_(options.scale), z_up_(options.z_up) {}
 
   BvhFile read() {
     if (!std::isfinite(scale_) || !(scale_ > 0.0f)) throw Error(in_.source() + ": scale must be a positive number");
     read_hierarchy();
     read_motion();
     build_clip();
+    if (z_up_) change_basis(out_.skeleton, out_.clip, z_up_to_y_up());
     return std::move(out_);
   }
 
@@ -291,6 +293,7 @@ class BvhReader {
 
   TextCursor in_;
   float scale_;
+  bool z_up_;
   BvhFile out_;
   Token root_;
   std::vector<OpenJoint> open_;
