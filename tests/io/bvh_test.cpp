@@ -312,6 +312,17 @@ Frame Time: 0.1
   }
 }
 
+TEST(Bvh, JointNamesWithSpacesAndGluedBracesRead) {
+  const std::string text =
+      "HIERARCHY\nROOT Left Hip{\nOFFSET 0 0 0\nCHANNELS 1 Zrotation\nJOINT  Left   Knee \n{ OFFSET 0 -1 0\n"
+      "CHANNELS 0 }}\nMOTION\nFrames: 1\nFrame Time: 0.1\n45\n";
+  const BvhFile bvh = read_bvh(text, "names.bvh");
+  ASSERT_EQ(bvh.skeleton.size(), 2u);
+  EXPECT_EQ(bvh.skeleton.names[0], "Left Hip");
+  EXPECT_EQ(bvh.skeleton.names[1], "Left Knee");
+  EXPECT_EQ(read_bvh(write_bvh(bvh), "again.bvh").skeleton.names, bvh.skeleton.names);
+}
+
 TEST(Bvh, ChannelSubsetsAndOrdersRoundTrip) {
   const std::string text = R"(HIERARCHY
 ROOT hips
@@ -379,6 +390,9 @@ TEST(Bvh, MakeBvhGivesADefaultLayoutForOtherClips) {
   Clip clip2 = clip;
   clip2.resize_joints(4);
   EXPECT_THROW(write_bvh(make_bvh(two, clip2, 0.25f)), Error);
+  Skeleton braces = skeleton;
+  braces.names[2] = "knee{1}";
+  EXPECT_THROW(write_bvh(make_bvh(braces, clip, 0.25f)), Error);
   Clip scaled = clip;
   scaled.scales[1].add(0.0f, vec3(2.0f));
   EXPECT_THROW(write_bvh(make_bvh(skeleton, scaled, 0.25f)), Error);

@@ -32,25 +32,31 @@ class BvhReader {
   Token expect(std::string_view word, std::string_view context) {
     const Token t = in_.next();
     if (!t.is(word))
-      in_.fail(t, "expected '" + std::string(word) + "' " + std::string(context) + ", found " + describe(t));
+      in_.fail(t, "expected '" + std::string(word) + "' " + std::string(context) + ", found " + found(t));
     return t;
   }
 
+  // A token for messages; an empty one is the end of the line or of the file, whichever it is.
+  std::string found(const Token& t) const { return describe(t, !in_.eof()); }
+
   double number(const Token& t, std::string_view what) {
     const auto v = parse_number(t.text);
-    if (!v) in_.fail(t, "expected a number for " + std::string(what) + ", found " + describe(t, true));
-    if (std::abs(*v) > kBvhMaxMagnitude)
-      in_.fail(t, std::string(what) + " " + std::string(t.text) + " is out of range (limit ±1e7)");
+    if (!v || std::abs(*v) > kBvhMaxMagnitude) bad_number(t, what);
     return *v;
+  }
+
+  [[noreturn]] void bad_number(const Token& t, std::string_view what) {
+    if (parse_number(t.text))
+      in_.fail(t, std::string(what) + " " + std::string(t.text) + " is out of range (limit ±1e7)");
+    in_.fail(t, "expected a number for " + std::string(what) + ", found " + found(t));
   }
 
   // The joint name is the rest of the line up to a brace; names with blanks are kept (single spaced).
   std::string read_name(const Token& keyword) {
     std::string name;
-    for (Token t = in_.next_on_line(); !t.empty() && !t.is("{"); t = in_.next_on_line()) {
+    while (!in_.at_line_end() && !in_.peek().is("{")) {
       if (!name.empty()) name += ' ';
-      name.append(t.text);
-      if (in_.at_line_end() || in_.peek().is("{")) break;
+      name.append(in_.next_on_line().text);
     }
     if (name.empty()) in_.fail(keyword, "expected a joint name after " + std::string(keyword.text));
     return name;
@@ -69,17 +75,17 @@ class BvhReader {
     const Token count_token = in_.next();
     const auto count = parse_integer(count_token.text);
     if (!count || *count < 0 || *count > 6)
-      in_.fail(count_token, "expected a channel count from 0 to 6, found " + describe(count_token));
+      in_.fail(count_token, "expected a channel count from 0 to 6, found " + found(count_token));
     BvhChannels channels;
     for (long long i = 0; i < *count; ++i) {
       const Token t = in_.next();
-      int found = -1;
+      int index = -1;
       for (int c = 0; c < 6; ++c)
-        if (t.text == to_string(static_cast<BvhChannel>(c))) found = c;
-      if (found < 0)
+        if (t.text == to_string(static_cast<BvhChannel>(c))) index = c;
+      if (index < 0)
         in_.fail(t, "CHANNELS declares " + std::to_string(*count) + " channels; expected a channel name (" +
-                        "Xposition, Yposition, Zposition, Xrotation, Yrotation, Zrotation), found " + describe(t));
-      const auto channel = static_cast<BvhChannel>(found);
+                        "Xposition, Yposition, Zposition, Xrotation, Yrotation, Zrotation), found " + found(t));
+      const auto channel = static_cast<BvhChannel>(index);
       if (std::find(channels.order.begin(), channels.order.begin() + channels.count, channel) !=
           channels.order.begin() + channels.count)
         in_.fail(t, "channel " + std::string(t.text) + " appears twice in joint '" + std::string(joint) + "'");
@@ -122,7 +128,7 @@ class BvhReader {
 
   void read_end_site(const Token& end) {
     const Token site = in_.next();
-    if (!site.is("Site")) in_.fail(site, "expected 'Site' after 'End', found " + describe(site));
+    if (!site.is("Site")) in_.fail(site, "expected 'Site' after 'End', found " + found(site));
     expect("{", "after End Site");
     const int parent = open_.back().joint;
     const vec3 offset = read_offset(out_.skeleton.names[static_cast<std::size_t>(parent)] + " End Site");
@@ -146,7 +152,7 @@ class BvhReader {
         const OpenJoint& inner = open_.back();
         in_.fail(t, "expected JOINT, End Site or '}' in joint '" +
                         out_.skeleton.names[static_cast<std::size_t>(inner.joint)] + "' (opened at line " +
-                        std::to_string(inner.line) + "), found " + describe(t));
+                        std::to_string(inner.line) + "), found " + found(t));
       }
     }
     name_end_sites();
@@ -171,13 +177,13 @@ class BvhReader {
     if (motion.is("ROOT"))
       in_.fail(motion, "a second ROOT; only BVH files with a single ROOT are supported (first ROOT at line " +
                            std::to_string(root_.line) + ")");
-    if (!motion.is("MOTION")) in_.fail(motion, "expected MOTION after the hierarchy, found " + describe(motion));
+    if (!motion.is("MOTION")) in_.fail(motion, "expected MOTION after the hierarchy, found " + found(motion));
 
     const Token frames_label = expect("Frames:", "after MOTION");
     const Token frames_token = in_.next_on_line();
     const auto frames = parse_integer(frames_token.text);
     if (!frames || *frames < 0)
-      in_.fail(frames_token, "expected a frame count (a whole number ≥ 0), found " + describe(frames_token, true));
+      in_.fail(frames_token, "expected a frame count (a whole number ≥ 0), found " + found(frames_token));
     if (*frames > kBvhMaxFrames)
       in_.fail(frames_token, "frame count " + std::to_string(*frames) + " is over the limit of " +
                                  std::to_string(kBvhMaxFrames));
@@ -185,7 +191,7 @@ class BvhReader {
 
     expect("Frame", "(Frame Time:) after the frame count");
     const Token time_label = in_.next_on_line();
-    if (!time_label.is("Time:")) in_.fail(time_label, "expected 'Time:' after 'Frame', found " + describe(time_label, true));
+    if (!time_label.is("Time:")) in_.fail(time_label, "expected 'Time:' after 'Frame', found " + found(time_label));
     const Token time_token = in_.next_on_line();
     const double frame_time = number(time_token, "the frame time");
     // At least a microsecond keeps every frame time of the longest allowed clip distinct as a float.
@@ -194,14 +200,14 @@ class BvhReader {
     out_.frame_time = static_cast<float>(frame_time);
     if (!in_.at_line_end()) {
       const Token extra = in_.next_on_line();
-      in_.fail(extra, "unexpected " + describe(extra) + " after the frame time");
+      in_.fail(extra, "unexpected " + found(extra) + " after the frame time");
     }
     in_.skip_line_end();
     read_frames(frames_label.line);
 
     if (!in_.at_end()) {
       const Token extra = in_.next();
-      in_.fail(extra, "unexpected " + describe(extra) + " after the " + std::to_string(out_.frame_count) +
+      in_.fail(extra, "unexpected " + found(extra) + " after the " + std::to_string(out_.frame_count) +
                           " frames declared at line " + std::to_string(frames_label.line) +
                           " (more frames than declared?)");
     }
@@ -227,7 +233,8 @@ class BvhReader {
           in_.fail(t, "frame " + std::to_string(f + 1) + " has more than " + std::to_string(n) +
                           " values (one per channel)");
         const auto v = parse_number(t.text);
-        if (!v || std::abs(*v) > kBvhMaxMagnitude) number(t, "channel " + column_name(count));
+        if (!v || std::abs(*v) > kBvhMaxMagnitude) [[unlikely]]
+          bad_number(t, "channel " + column_name(count));
         values_.push_back(static_cast<float>(*v * column_scale[count]));
         ++count;
       }
