@@ -438,6 +438,7 @@ TEST(BvhErrors, MalformedHierarchy) {
   expect_error("   \n\n", 3, "expected 'HIERARCHY'", "blank file");
   expect_error(with_line(2, "JOINT base"), 2, "expected 'ROOT'", "no ROOT");
   expect_error(with_line(2, "ROOT"), 2, "joint name", "ROOT without a name");
+  expect_error(with_line(6, std::string("\tJOINT a\0rm", 11)), 6, "contains control characters", "NUL in a name");
   expect_error(with_line(3, ""), 4, "expected '{'", "missing opening brace");
   expect_error(with_line(4, "\tOFFSET 1 2"), 5, "OFFSET coordinate", "short OFFSET");
   expect_error(with_line(4, "\tOFFSET 1 two 3"), 4, "found 'two'", "non-numeric OFFSET");
@@ -510,6 +511,39 @@ TEST(BvhErrors, TruncatedAnywhereIsAnErrorNotACrash) {
       EXPECT_GT(e.where().line, 0) << e.what();
     }
   }
+}
+
+TEST(BvhErrors, RandomByteMutationsGiveAModelOrAnError) {
+  // 3,000 deterministic mutations (overwrite, insert, delete a byte): each read either succeeds, and
+  // then writes, or throws gestura::Error with a line; any other exception or a crash fails.
+  const std::string base = kChain;
+  std::uint32_t seed = 12345;
+  auto next = [&] { return seed = seed * 1664525u + 1013904223u, seed >> 8; };
+  const char alphabet[] = "{}0123456789.-+eE \t\nXYZpositionrotationJOINTEnd Site\x00\xff";
+  int parsed = 0;
+  for (int i = 0; i < 3000; ++i) {
+    std::string text = base;
+    for (int edits = 1 + static_cast<int>(next() % 3); edits > 0; --edits) {
+      const std::size_t at = next() % text.size();
+      const char c = alphabet[next() % (sizeof alphabet - 1)];
+      switch (next() % 3) {
+        case 0: text[at] = c; break;
+        case 1: text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), c); break;
+        default: text.erase(at, 1); break;
+      }
+    }
+    try {
+      const BvhFile bvh = read_bvh(text, "mutant.bvh");
+      ++parsed;
+      EXPECT_NO_THROW(read_bvh(write_bvh(bvh), "rewritten.bvh")) << text;
+    } catch (const Error& e) {
+      EXPECT_GT(e.where().line, 0) << e.what();
+    }
+  }
+  // Some mutations are harmless (a digit for a digit), most are not.
+  std::printf("    %d of 3000 mutants read as valid BVH\n", parsed);
+  EXPECT_GT(parsed, 0);
+  EXPECT_LT(parsed, 3000);
 }
 
 TEST(BvhErrors, BinaryJunk) {

@@ -55,8 +55,12 @@ class BvhReader {
   std::string read_name(const Token& keyword) {
     std::string name;
     while (!in_.at_line_end() && !in_.peek().is("{")) {
+      const Token part = in_.next_on_line();
+      const auto is_control = [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7F; };
+      if (std::any_of(part.text.begin(), part.text.end(), is_control))
+        in_.fail(part, "joint name " + found(part) + " contains control characters");
       if (!name.empty()) name += ' ';
-      name.append(in_.next_on_line().text);
+      name.append(part.text);
     }
     if (name.empty()) in_.fail(keyword, "expected a joint name after " + std::string(keyword.text));
     return name;
