@@ -88,7 +88,7 @@ int run_convert(const std::vector<std::string>& args) {
   return 0;
 }
 
-gestura::cli::Registration reg{{"convert", "convert motion files (BVH → BVH, optional unit scale)",
+gestura::cli::Registration reg{{"convert", "convert motion files (BVH → BVH; unit scale, Z-up → Y-up)",
                                 "usage: gestura convert IN OUT [--scale S] [--z-up]\n\n"
                                 "Reads IN and writes OUT, formats chosen by extension (now: .bvh).\n"
                                 "--scale S  multiplies all lengths (offsets, positions), e.g. 0.1 to turn\n"

@@ -169,6 +169,8 @@ TEST(Bvh, ScaleMultipliesOffsetsAndPositionsOnly) {
                 0.1 * (declared.offsets[static_cast<std::size_t>(a)] + declared.frames[0][static_cast<std::size_t>(a)]), 1e-5);
   EXPECT_EQ(m.clip.rotations[0].values[0], dm.clip.rotations[0].values[0]);
   EXPECT_THROW(load_bvh(path, {0.0f}), Error);
+  EXPECT_THROW(load_bvh(path, {1e30f}), Error);
+  EXPECT_THROW(load_bvh(path, {std::nanf("")}), Error);
 }
 
 std::vector<vec3> rest_positions(const Skeleton& skeleton) {

@@ -61,7 +61,7 @@ struct BvhFile {
 };
 
 struct BvhReadOptions {
-  float scale = 1.0f;  // multiplies offsets and position channels (e.g. 0.1 for decimetres → metres)
+  float scale = 1.0f;  // multiplies offsets and position channels (e.g. 0.1 for dm → m); 1e-6..1e6
   bool z_up = false;   // the file is Z-up facing −Y (MakeHuman, Blender): turn it to +Y up facing +Z
 };
 

@@ -20,7 +20,8 @@ class BvhReader {
       : in_(text, source), scale_(options.scale), z_up_(options.z_up) {}
 
   BvhFile read() {
-    if (!std::isfinite(scale_) || !(scale_ > 0.0f)) throw Error(in_.source() + ": scale must be a positive number");
+    // Within 1e-6..1e6 every scaled value (at most 1e7 in the file) stays a finite float.
+    if (!(scale_ >= 1e-6f && scale_ <= 1e6f)) throw Error(in_.source() + ": scale must lie in 1e-6..1e6");
     read_hierarchy();
     read_motion();
     build_clip();
