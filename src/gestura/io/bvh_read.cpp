@@ -262,15 +262,17 @@ class BvhReader {
   void build_clip() {
     const auto frames = static_cast<std::size_t>(out_.frame_count);
     const auto per_frame = static_cast<std::size_t>(out_.channel_count());
-    std::vector<float> times(frames);
-    for (std::size_t f = 0; f < frames; ++f) times[f] = static_cast<float>(static_cast<double>(f) * out_.frame_time);
-
+    auto time_of = [&](std::size_t f) { return static_cast<float>(static_cast<double>(f) * out_.frame_time); };
     Clip& clip = out_.clip;
     clip.name = in_.source();
     if (const auto slash = clip.name.find_last_of('/'); slash != std::string::npos) clip.name.erase(0, slash + 1);
     if (const auto dot = clip.name.rfind('.'); dot != std::string::npos && dot > 0) clip.name.erase(dot);
-    clip.duration = frames > 1 ? times.back() : 0.0f;
+    clip.duration = frames > 1 ? time_of(frames - 1) : 0.0f;
     clip.resize_joints(out_.skeleton.size());
+    if (per_frame == 0) return;  // no tracks (and no key times for a declared-but-empty motion)
+
+    std::vector<float> times(frames);
+    for (std::size_t f = 0; f < frames; ++f) times[f] = time_of(f);
 
     std::vector<vec3> angles(frames), positions(frames);
     std::size_t column = 0;
