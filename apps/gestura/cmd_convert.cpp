@@ -19,12 +19,14 @@ namespace {
 using gestura::BvhFile;
 using gestura::Error;
 
-using Reader = std::function<BvhFile(const std::string& path, float scale)>;
+using Reader = std::function<BvhFile(const std::string& path, const gestura::BvhReadOptions& options)>;
 using Writer = std::function<void(const std::string& path, const BvhFile& motion)>;
 
 const std::map<std::string, Reader>& readers() {
   static const std::map<std::string, Reader> table{
-      {".bvh", [](const std::string& path, float scale) { return gestura::load_bvh(path, {scale}); }}};
+      {".bvh", [](const std::string& path, const gestura::BvhReadOptions& options) {
+         return gestura::load_bvh(path, options);
+       }}};
   return table;
 }
 
@@ -55,7 +57,8 @@ const typename Table::mapped_type& pick(const Table& table, const std::string& p
 
 int run_convert(const std::vector<std::string>& args) {
   std::vector<std::string> paths;
-  float scale = 1.0f;
+  gestura::BvhReadOptions options;
+  float& scale = options.scale;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--scale") {
       const std::string value = gestura::cli::flag_value(args, i);
@@ -67,27 +70,31 @@ int run_convert(const std::vector<std::string>& args) {
       }
       if (used != value.size() || !std::isfinite(scale) || !(scale > 0.0f))
         throw Error("--scale needs a positive number, got '" + value + "'");
+    } else if (args[i] == "--z-up") {
+      options.z_up = true;
     } else if (args[i].starts_with("--")) {
       throw Error("unknown flag " + args[i]);
     } else {
       paths.push_back(args[i]);
     }
   }
-  if (paths.size() != 2) throw Error("usage: gestura convert IN OUT [--scale S]");
+  if (paths.size() != 2) throw Error("usage: gestura convert IN OUT [--scale S] [--z-up]");
   const Reader& read = pick(readers(), paths[0], "read");
   const Writer& write = pick(writers(), paths[1], "write");
-  const BvhFile motion = read(paths[0], scale);
+  const BvhFile motion = read(paths[0], options);
   write(paths[1], motion);
   std::cout << "wrote " << paths[1] << ": " << motion.skeleton.size() << " joints and end sites, " << motion.frame_count
             << " frames\n";
   return 0;
 }
 
-gestura::cli::Registration reg{{"convert", "convert motion files (BVH → BVH, optional unit scale)",
-                                "usage: gestura convert IN OUT [--scale S]\n\n"
+gestura::cli::Registration reg{{"convert", "convert motion files (BVH → BVH; unit scale, Z-up → Y-up)",
+                                "usage: gestura convert IN OUT [--scale S] [--z-up]\n\n"
                                 "Reads IN and writes OUT, formats chosen by extension (now: .bvh).\n"
-                                "--scale S multiplies all lengths (offsets, positions), e.g. 0.1 to turn\n"
-                                "the decimetres of MakeHuman BVH files into metres.",
+                                "--scale S  multiplies all lengths (offsets, positions), e.g. 0.1 to turn\n"
+                                "           the decimetres of MakeHuman BVH files into metres.\n"
+                                "--z-up     IN is Z-up facing -Y (MakeHuman, Blender): write it +Y up,\n"
+                                "           facing +Z, as gestura uses.",
                                 run_convert}};
 
 }  // namespace

@@ -64,6 +64,14 @@ int describe_bvh(const std::string& path, int tree_depth) {
   std::printf("frames:     %d\n", bvh.frame_count);
   std::printf("frame time: %g s (%g fps)\n", static_cast<double>(bvh.frame_time), static_cast<double>(fps));
   std::printf("duration:   %g s (first to last frame)\n", static_cast<double>(bvh.clip.duration));
+  // Where the joints are at rest tells the unit and the up axis, which BVH does not name.
+  std::vector<gestura::mat4> model(skeleton.size());
+  gestura::local_to_model(skeleton, gestura::rest_pose(skeleton), model);
+  gestura::vec3 lo(1e30f), hi(-1e30f);
+  for (const auto& m : model) lo = glm::min(lo, gestura::vec3(m[3])), hi = glm::max(hi, gestura::vec3(m[3]));
+  std::printf("rest extent: x %.4g..%.4g  y %.4g..%.4g  z %.4g..%.4g (file units)\n", static_cast<double>(lo.x),
+              static_cast<double>(hi.x), static_cast<double>(lo.y), static_cast<double>(hi.y),
+              static_cast<double>(lo.z), static_cast<double>(hi.z));
   std::printf("tree:\n");
   std::fflush(stdout);
   print_tree(bvh, tree_depth);

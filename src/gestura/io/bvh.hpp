@@ -10,7 +10,9 @@
 //   outermost first: "Zrotation Xrotation Yrotation" is R = Rz·Rx·Ry = RotationOrder::ZXY.
 // - Frame k is at time k · frame_time. Rotation tracks use slerp, translation tracks lerp; a joint
 //   without rotation (position) channels has an empty rotation (translation) track.
-// - Units are the file's, times `scale` (BvhReadOptions). BVH does not name its unit or up axis.
+// - Units and axes are the file's unless BvhReadOptions say otherwise: BVH names neither its unit
+//   nor its up axis. The MakeHuman files are decimetres and Z-up ({0.1f, true} gives our metres,
+//   +Y up); after an axis change the same channel layout is written in the new axes.
 //
 // Writing samples the clip at every frame time and turns rotations back into Euler angles with
 // the previous frame as hint, so angle sequences do not flip; values are printed with the shortest
@@ -59,7 +61,8 @@ struct BvhFile {
 };
 
 struct BvhReadOptions {
-  float scale = 1.0f;  // multiplies offsets and position channels (e.g. 0.1 for decimetres → metres)
+  float scale = 1.0f;  // multiplies offsets and position channels (e.g. 0.1 for dm → m); 1e-6..1e6
+  bool z_up = false;   // the file is Z-up facing −Y (MakeHuman, Blender): turn it to +Y up facing +Z
 };
 
 // Limits that keep hostile files from exhausting memory; larger input is rejected with an Error.

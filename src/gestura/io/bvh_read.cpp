@@ -6,6 +6,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "gestura/anim/change_basis.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/io/text_cursor.hpp"
 
@@ -16,13 +17,15 @@ namespace {
 class BvhReader {
  public:
   BvhReader(std::string_view text, const std::string& source, const BvhReadOptions& options)
-      : in_(text, source), scale_(options.scale) {}
+      : in_(text, source), scale_(options.scale), z_up_(options.z_up) {}
 
   BvhFile read() {
-    if (!std::isfinite(scale_) || !(scale_ > 0.0f)) throw Error(in_.source() + ": scale must be a positive number");
+    // Within 1e-6..1e6 every scaled value (at most 1e7 in the file) stays a finite float.
+    if (!(scale_ >= 1e-6f && scale_ <= 1e6f)) throw Error(in_.source() + ": scale must lie in 1e-6..1e6");
     read_hierarchy();
     read_motion();
     build_clip();
+    if (z_up_) change_basis(out_.skeleton, out_.clip, z_up_to_y_up());
     return std::move(out_);
   }
 
@@ -30,25 +33,35 @@ class BvhReader {
   Token expect(std::string_view word, std::string_view context) {
     const Token t = in_.next();
     if (!t.is(word))
-      in_.fail(t, "expected '" + std::string(word) + "' " + std::string(context) + ", found " + describe(t));
+      in_.fail(t, "expected '" + std::string(word) + "' " + std::string(context) + ", found " + found(t));
     return t;
   }
 
+  // A token for messages; an empty one is the end of the line or of the file, whichever it is.
+  std::string found(const Token& t) const { return describe(t, !in_.eof()); }
+
   double number(const Token& t, std::string_view what) {
     const auto v = parse_number(t.text);
-    if (!v) in_.fail(t, "expected a number for " + std::string(what) + ", found " + describe(t, true));
-    if (std::abs(*v) > kBvhMaxMagnitude)
-      in_.fail(t, std::string(what) + " " + std::string(t.text) + " is out of range (limit ±1e7)");
+    if (!v || std::abs(*v) > kBvhMaxMagnitude) bad_number(t, what);
     return *v;
+  }
+
+  [[noreturn]] void bad_number(const Token& t, std::string_view what) {
+    if (parse_number(t.text))
+      in_.fail(t, std::string(what) + " " + std::string(t.text) + " is out of range (limit ±1e7)");
+    in_.fail(t, "expected a number for " + std::string(what) + ", found " + found(t));
   }
 
   // The joint name is the rest of the line up to a brace; names with blanks are kept (single spaced).
   std::string read_name(const Token& keyword) {
     std::string name;
-    for (Token t = in_.next_on_line(); !t.empty() && !t.is("{"); t = in_.next_on_line()) {
+    while (!in_.at_line_end() && !in_.peek().is("{")) {
+      const Token part = in_.next_on_line();
+      const auto is_control = [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7F; };
+      if (std::any_of(part.text.begin(), part.text.end(), is_control))
+        in_.fail(part, "joint name " + found(part) + " contains control characters");
       if (!name.empty()) name += ' ';
-      name.append(t.text);
-      if (in_.at_line_end() || in_.peek().is("{")) break;
+      name.append(part.text);
     }
     if (name.empty()) in_.fail(keyword, "expected a joint name after " + std::string(keyword.text));
     return name;
@@ -67,17 +80,17 @@ class BvhReader {
     const Token count_token = in_.next();
     const auto count = parse_integer(count_token.text);
     if (!count || *count < 0 || *count > 6)
-      in_.fail(count_token, "expected a channel count from 0 to 6, found " + describe(count_token));
+      in_.fail(count_token, "expected a channel count from 0 to 6, found " + found(count_token));
     BvhChannels channels;
     for (long long i = 0; i < *count; ++i) {
       const Token t = in_.next();
-      int found = -1;
+      int index = -1;
       for (int c = 0; c < 6; ++c)
-        if (t.text == to_string(static_cast<BvhChannel>(c))) found = c;
-      if (found < 0)
+        if (t.text == to_string(static_cast<BvhChannel>(c))) index = c;
+      if (index < 0)
         in_.fail(t, "CHANNELS declares " + std::to_string(*count) + " channels; expected a channel name (" +
-                        "Xposition, Yposition, Zposition, Xrotation, Yrotation, Zrotation), found " + describe(t));
-      const auto channel = static_cast<BvhChannel>(found);
+                        "Xposition, Yposition, Zposition, Xrotation, Yrotation, Zrotation), found " + found(t));
+      const auto channel = static_cast<BvhChannel>(index);
       if (std::find(channels.order.begin(), channels.order.begin() + channels.count, channel) !=
           channels.order.begin() + channels.count)
         in_.fail(t, "channel " + std::string(t.text) + " appears twice in joint '" + std::string(joint) + "'");
@@ -120,7 +133,7 @@ class BvhReader {
 
   void read_end_site(const Token& end) {
     const Token site = in_.next();
-    if (!site.is("Site")) in_.fail(site, "expected 'Site' after 'End', found " + describe(site));
+    if (!site.is("Site")) in_.fail(site, "expected 'Site' after 'End', found " + found(site));
     expect("{", "after End Site");
     const int parent = open_.back().joint;
     const vec3 offset = read_offset(out_.skeleton.names[static_cast<std::size_t>(parent)] + " End Site");
@@ -144,7 +157,7 @@ class BvhReader {
         const OpenJoint& inner = open_.back();
         in_.fail(t, "expected JOINT, End Site or '}' in joint '" +
                         out_.skeleton.names[static_cast<std::size_t>(inner.joint)] + "' (opened at line " +
-                        std::to_string(inner.line) + "), found " + describe(t));
+                        std::to_string(inner.line) + "), found " + found(t));
       }
     }
     name_end_sites();
@@ -169,13 +182,13 @@ class BvhReader {
     if (motion.is("ROOT"))
       in_.fail(motion, "a second ROOT; only BVH files with a single ROOT are supported (first ROOT at line " +
                            std::to_string(root_.line) + ")");
-    if (!motion.is("MOTION")) in_.fail(motion, "expected MOTION after the hierarchy, found " + describe(motion));
+    if (!motion.is("MOTION")) in_.fail(motion, "expected MOTION after the hierarchy, found " + found(motion));
 
     const Token frames_label = expect("Frames:", "after MOTION");
     const Token frames_token = in_.next_on_line();
     const auto frames = parse_integer(frames_token.text);
     if (!frames || *frames < 0)
-      in_.fail(frames_token, "expected a frame count (a whole number ≥ 0), found " + describe(frames_token, true));
+      in_.fail(frames_token, "expected a frame count (a whole number ≥ 0), found " + found(frames_token));
     if (*frames > kBvhMaxFrames)
       in_.fail(frames_token, "frame count " + std::to_string(*frames) + " is over the limit of " +
                                  std::to_string(kBvhMaxFrames));
@@ -183,7 +196,7 @@ class BvhReader {
 
     expect("Frame", "(Frame Time:) after the frame count");
     const Token time_label = in_.next_on_line();
-    if (!time_label.is("Time:")) in_.fail(time_label, "expected 'Time:' after 'Frame', found " + describe(time_label, true));
+    if (!time_label.is("Time:")) in_.fail(time_label, "expected 'Time:' after 'Frame', found " + found(time_label));
     const Token time_token = in_.next_on_line();
     const double frame_time = number(time_token, "the frame time");
     // At least a microsecond keeps every frame time of the longest allowed clip distinct as a float.
@@ -192,14 +205,14 @@ class BvhReader {
     out_.frame_time = static_cast<float>(frame_time);
     if (!in_.at_line_end()) {
       const Token extra = in_.next_on_line();
-      in_.fail(extra, "unexpected " + describe(extra) + " after the frame time");
+      in_.fail(extra, "unexpected " + found(extra) + " after the frame time");
     }
     in_.skip_line_end();
     read_frames(frames_label.line);
 
     if (!in_.at_end()) {
       const Token extra = in_.next();
-      in_.fail(extra, "unexpected " + describe(extra) + " after the " + std::to_string(out_.frame_count) +
+      in_.fail(extra, "unexpected " + found(extra) + " after the " + std::to_string(out_.frame_count) +
                           " frames declared at line " + std::to_string(frames_label.line) +
                           " (more frames than declared?)");
     }
@@ -225,7 +238,8 @@ class BvhReader {
           in_.fail(t, "frame " + std::to_string(f + 1) + " has more than " + std::to_string(n) +
                           " values (one per channel)");
         const auto v = parse_number(t.text);
-        if (!v || std::abs(*v) > kBvhMaxMagnitude) number(t, "channel " + column_name(count));
+        if (!v || std::abs(*v) > kBvhMaxMagnitude) [[unlikely]]
+          bad_number(t, "channel " + column_name(count));
         values_.push_back(static_cast<float>(*v * column_scale[count]));
         ++count;
       }
@@ -248,15 +262,17 @@ class BvhReader {
   void build_clip() {
     const auto frames = static_cast<std::size_t>(out_.frame_count);
     const auto per_frame = static_cast<std::size_t>(out_.channel_count());
-    std::vector<float> times(frames);
-    for (std::size_t f = 0; f < frames; ++f) times[f] = static_cast<float>(static_cast<double>(f) * out_.frame_time);
-
+    auto time_of = [&](std::size_t f) { return static_cast<float>(static_cast<double>(f) * out_.frame_time); };
     Clip& clip = out_.clip;
     clip.name = in_.source();
     if (const auto slash = clip.name.find_last_of('/'); slash != std::string::npos) clip.name.erase(0, slash + 1);
     if (const auto dot = clip.name.rfind('.'); dot != std::string::npos && dot > 0) clip.name.erase(dot);
-    clip.duration = frames > 1 ? times.back() : 0.0f;
+    clip.duration = frames > 1 ? time_of(frames - 1) : 0.0f;
     clip.resize_joints(out_.skeleton.size());
+    if (per_frame == 0) return;  // no tracks (and no key times for a declared-but-empty motion)
+
+    std::vector<float> times(frames);
+    for (std::size_t f = 0; f < frames; ++f) times[f] = time_of(f);
 
     std::vector<vec3> angles(frames), positions(frames);
     std::size_t column = 0;
@@ -291,6 +307,7 @@ class BvhReader {
 
   TextCursor in_;
   float scale_;
+  bool z_up_;
   BvhFile out_;
   Token root_;
   std::vector<OpenJoint> open_;

@@ -29,6 +29,14 @@ void append_vec3(std::string& out, const vec3& v) {
 
 bool is_unit_scale(const vec3& s) { return glm::all(glm::lessThanEqual(glm::abs(s - vec3(1.0f)), vec3(1e-5f))); }
 
+// A name reads back the same only without braces and control bytes, and with single inner spaces.
+bool is_writable_name(const std::string& name) {
+  if (name.empty() || name.front() == ' ' || name.back() == ' ' || name.find("  ") != std::string::npos) return false;
+  return std::none_of(name.begin(), name.end(), [](char c) {
+    return c == '{' || c == '}' || (static_cast<unsigned char>(c) < 0x20) || c == 0x7F;
+  });
+}
+
 void check_writable(const BvhFile& bvh) {
   const Skeleton& skeleton = bvh.skeleton;
   skeleton.validate();
@@ -48,6 +56,8 @@ void check_writable(const BvhFile& bvh) {
     if (bvh.end_site[j] && (parent < 0 || bvh.channels[j].count != 0))
       throw Error("End Site '" + skeleton.names[j] + "' must be a leaf without channels and not the root");
     if (bvh.channels[j].count > 6) throw Error("joint '" + skeleton.names[j] + "' has more than 6 channels");
+    if (!bvh.end_site[j] && !is_writable_name(skeleton.names[j]))
+      throw Error("joint name '" + skeleton.names[j] + "' cannot be written to BVH (braces, control characters or odd spaces)");
     if (!is_unit_scale(skeleton.rest_scales[j]))
       throw Error("joint '" + skeleton.names[j] + "' has a rest scale; BVH cannot store scale");
   }
