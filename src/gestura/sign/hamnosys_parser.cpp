@@ -973,8 +973,16 @@ class Parser {
       fill_hand(p, e, true, pending);
     }
     if (pending) p.hands_contact = pending;
-    if (!p.handshape.dominant && !p.handshape.nondominant)
-      tolerate(segment.first_symbol, "expected a handshape at the start of the sign");
+    // Lexicons omit the handshape when it carries over (an orientation is then still written);
+    // a segment with neither is not a sign.
+    if (!p.handshape.dominant && !p.handshape.nondominant) {
+      if (!p.orientation.dominant && !p.orientation.nondominant)
+        fail(segment.first_symbol, "expected a handshape (e.g. hamflathand) at the start of the sign, found " +
+                                       (segment.first_symbol < static_cast<int>(sym_.size())
+                                            ? quoted(sym_[static_cast<std::size_t>(segment.first_symbol)])
+                                            : std::string("end of input")));
+      tolerate(segment.first_symbol, "sign without a handshape: expected one before the orientation");
+    }
     segment.actions.assign(std::make_move_iterator(elements.begin() + static_cast<std::ptrdiff_t>(i)),
                            std::make_move_iterator(elements.end()));
     for (Element& e : segment.actions) locations_to_targets(e);
