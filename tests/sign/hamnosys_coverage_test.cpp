@@ -90,7 +90,7 @@ TEST(HamnosysCoverage, AllSigmlFilesParse) {
         if (e.sign) ++signs.parsed;
         else {
           ok = false;
-          std::printf("  %s\n", e.error.c_str());
+          std::printf("  %s\n", e.error->what());
         }
       }
     } catch (const gestura::Error& e) {

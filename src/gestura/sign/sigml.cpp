@@ -323,7 +323,7 @@ SigmlEntry read_entry(const Context& ctx, const pugi::xml_node& node) {
       entry.sign = std::move(sign);
     }
   } catch (const Error& e) {
-    entry.error = e.what();
+    entry.error = e;
   }
   return entry;
 }
@@ -378,7 +378,7 @@ std::vector<SigmlEntry> read_sigml_entries(std::string_view xml, std::string_vie
 std::vector<SigmlSign> read_sigml(std::string_view xml, std::string_view file_name, const ParseOptions& options) {
   std::vector<SigmlSign> signs;
   for (SigmlEntry& e : read_sigml_entries(xml, file_name, options)) {
-    if (!e.sign) throw Error(e.error);
+    if (!e.sign) throw *e.error;
     signs.push_back(std::move(*e.sign));
   }
   return signs;

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "gestura/core/error.hpp"
 #include "gestura/sign/hamnosys_model.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
 
@@ -53,7 +54,7 @@ struct SigmlEntry {
   std::string gloss;
   int line = 0;
   std::optional<SigmlSign> sign;
-  std::string error;  // gestura::Error::what() when sign is empty
+  std::optional<Error> error;  // why not, when sign is empty (file:line, symbol index)
 };
 
 // Reads every sign of the document. Throws gestura::Error (file:line:col) when the XML itself is
