@@ -266,10 +266,10 @@ class Parser {
 
   void note(int at, std::string text) { notes_.push_back({at, std::move(text)}); }
 
-  // Lenient accepts with a note; strict rejects.
-  void tolerate(int at, const std::string& text) {
-    if (options_.strict) fail(at, text);
-    note(at, text);
+  // Lenient accepts with a note saying what it did; strict rejects.
+  void tolerate(int at, const std::string& problem, const std::string& lenient_action = {}) {
+    if (options_.strict) fail(at, problem);
+    note(at, lenient_action.empty() ? problem : problem + ": " + lenient_action);
   }
 
   std::string found() const { return at_end() ? "end of input" : quoted(peek()); }
@@ -341,7 +341,8 @@ class Parser {
             std::size_t k = pos_;
             while (k < sym_.size() && (symbol_class(sym_[k]) == C::thumb_modifier || symbol_class(sym_[k]) == C::finger_bending)) ++k;
             tolerate(index(), "expected a handshape after " + quoted(s) + ", found " +
-                                  (k < sym_.size() ? quoted(sym_[k]) : std::string("end of input")) + ": modifier ignored");
+                                  (k < sym_.size() ? quoted(sym_[k]) : std::string("end of input")),
+                     "modifier ignored");
             ++pos_;
             break;
           }
@@ -382,7 +383,7 @@ class Parser {
         case C::punctuation: ++pos_; break;
         case C::structure:
           if (s == S::between) {
-            tolerate(index(), "hambetween not between two symbols of the same class: ignored");
+            tolerate(index(), "hambetween not between two symbols of the same class", "ignored");
             ++pos_;
             break;
           }
@@ -421,7 +422,7 @@ class Parser {
       }
       const Stop stop = parse_list(branches.back());
       if (stop == Stop::end) {
-        tolerate(open_index, quoted(opener) + " is never closed: expected " + quoted(closer_of(opener)));
+        tolerate(open_index, quoted(opener) + " is never closed: expected " + quoted(closer_of(opener)), "closed at the end");
         break;
       }
       const Symbol s = peek();
@@ -445,7 +446,7 @@ class Parser {
     if (branches.size() > 1) {
       group.kind = opener == S::altbegin ? ElementKind::alternatives : ElementKind::hand_pair;
       if (opener != S::altbegin && opener != S::parbegin)
-        tolerate(open_index, "hamplus inside " + quoted(opener) + ": read as a pair of hands");
+        tolerate(open_index, "hamplus inside " + quoted(opener), "read as a pair of hands");
       if (group.kind == ElementKind::hand_pair && branches.size() > 2)
         tolerate(open_index, "hand pair with " + std::to_string(branches.size()) + " branches: expected 2");
       for (std::size_t b = 0; b < branches.size(); ++b) {
@@ -807,8 +808,8 @@ class Parser {
         return;
       }
     }
-    tolerate(at, "expected a motion before the " + std::string(symbol_class_name(peek_class())) + " " + quoted(peek()) +
-                     ": modifier ignored");
+    tolerate(at, "expected a motion before the " + std::string(symbol_class_name(peek_class())) + " " + quoted(peek()),
+             "modifier ignored");
     ++pos_;
   }
 
