@@ -181,6 +181,22 @@ TEST(HamnosysParser, FingerLocationBetweenHandshapeAndTargetedMotion) {
   EXPECT_EQ(move.target_contact, Proximity::touch);
 }
 
+// DGS-style location between two points: between the shoulders' centre and the dominant shoulder.
+TEST(HamnosysParser, LocationBetweenTwoPointsAndAlternatingMotion) {
+  const HamSign sign = parse_hamnosys_names(
+      "hamsymmpar,hamflathand,hamextfingerul,hampalmd,hamshoulders,hambetween,hamlrat,hamshoulders,hamtouch,"
+      "hammoved,hamalternatingmotion");
+  const Location& loc = *sign.main().posture.location.dominant;
+  EXPECT_EQ(loc.site, Site::shoulders);
+  EXPECT_EQ(loc.side, Side::centre);
+  ASSERT_TRUE(loc.between);
+  EXPECT_EQ(loc.between->site, Site::shoulders);
+  EXPECT_EQ(loc.between->side, Side::dominant_side);
+  EXPECT_EQ(loc.proximity, Proximity::touch);
+  EXPECT_TRUE(sign.main().actions.at(0).motion()->alternating);
+  EXPECT_TRUE(sign.notes.empty());
+}
+
 TEST(HamnosysParser, UnicodeAndNamesGiveTheSameSymbols) {
   const std::string names = "hamsymmpar,hamfist,hamextfingero,hampalmd,hamparbegin,hammoveo,hamplus,hamnomotion,hamparend";
   std::string text;

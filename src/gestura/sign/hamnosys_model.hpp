@@ -137,12 +137,20 @@ enum class Side : std::uint8_t { centre, dominant_side, beside };
 
 enum class Proximity : std::uint8_t { close, touch, interlocked, crossed, far, behind, brushing };
 
+// A point on the body named by one site (and, for fingers, which fingers and which part).
+struct SitePoint {
+  Site site = Site::neutral_space;
+  FingerSet fingers;
+  std::optional<FingerPart> finger_part;
+  Side side = Side::centre;
+};
+
 struct Location {
   Site site = Site::neutral_space;
   FingerSet fingers;                 // when site == fingers (or a finger part on a hand site)
   std::optional<FingerPart> finger_part;
-  std::optional<Site> between;       // hambetween: between site and this one
   Side side = Side::centre;
+  std::optional<SitePoint> between;  // hambetween: halfway between this point and that one
   std::optional<Proximity> proximity;  // contact symbol written with the location
   bool contact_before = false;       // the contact symbol preceded the location
   bool nondominant_hand = false;     // a site on the other hand (hand constellations)
@@ -190,6 +198,7 @@ struct Motion {
   Size size = Size::normal;
   Manner manner;
   FingerSet fingers;                         // finger play: which fingers
+  bool alternating = false;                  // hamalternatingmotion: the hands move out of phase
   std::optional<Handshape> new_handshape;    // replacement
   std::optional<Orientation> new_orientation;
   std::optional<Location> target;            // to_location or a straight motion ending at a site

@@ -533,6 +533,17 @@ class Parser {
         (next_is(C::handshape, 1) || next_is(C::finger_bending, 1) || next_is(C::thumb_modifier, 1))) {
       ++pos_;
       hs.between = read_handshape_form();
+    } else if (has(1) && peek() == S::between && next_is(C::finger, 1)) {
+      // "between thumb ceeall": the in-between shape names its selected fingers first.
+      std::size_t k = pos_ + 1;
+      while (k < sym_.size() && symbol_class(sym_[k]) == C::finger) ++k;
+      if (k < sym_.size() && symbol_class(sym_[k]) == C::handshape) {
+        FingerModifier selected;
+        for (std::size_t f = pos_ + 1; f < k; ++f) selected.fingers.add(finger(sym_[f]));
+        pos_ = k;
+        hs.between = read_handshape_form();
+        hs.between->finger_modifiers.insert(hs.between->finger_modifiers.begin(), selected);
+      }
     }
     return hs;
   }
@@ -597,41 +608,53 @@ class Parser {
 
   // ---- location -------------------------------------------------------------------------------
 
-  Location read_location() {
-    Location loc;
-    loc.symbol_index = index();
+  // Reads site, fingers, finger part and side symbols (any order) into one point.
+  SitePoint read_site_point(int start) {
+    SitePoint point;
     bool have_site = false;
     while (!at_end()) {
       const C c = peek_class();
       const Symbol s = peek();
       if (c == C::location_site) {
         if (have_site) break;  // a second site starts a new location
-        loc.site = body_site(s);
+        point.site = body_site(s);
         have_site = true;
       } else if (c == C::finger) {
         if (!have_site) {
-          loc.site = Site::fingers;
+          point.site = Site::fingers;
           have_site = true;
         }
-        loc.fingers.add(finger(s));
+        point.fingers.add(finger(s));
       } else if (c == C::finger_part) {
-        if (loc.finger_part) break;
+        if (point.finger_part) break;
         if (!have_site) {
-          loc.site = Site::fingers;
+          point.site = Site::fingers;
           have_site = true;
         }
-        loc.finger_part = finger_part(s);
+        point.finger_part = finger_part(s);
       } else if (c == C::location_side) {
-        loc.side = s == S::lrbeside ? Side::beside : Side::dominant_side;
-      } else if (s == S::between && have_site && next_is(C::location_site, 1)) {
-        loc.between = body_site(peek(1));
-        ++pos_;
+        point.side = s == S::lrbeside ? Side::beside : Side::dominant_side;
       } else {
         break;
       }
       ++pos_;
     }
-    if (!have_site) fail(loc.symbol_index, "expected a location site before " + quoted(sym_[loc.symbol_index]));
+    if (!have_site) fail(start, "expected a location site (e.g. hamchest) with " + quoted(sym_[static_cast<std::size_t>(start)]));
+    return point;
+  }
+
+  Location read_location() {
+    Location loc;
+    loc.symbol_index = index();
+    const SitePoint point = read_site_point(index());
+    loc.site = point.site;
+    loc.fingers = point.fingers;
+    loc.finger_part = point.finger_part;
+    loc.side = point.side;
+    if (has(1) && peek() == S::between && is_location_symbol(peek_class(1))) {
+      ++pos_;
+      loc.between = read_site_point(index());
+    }
     return loc;
   }
 
@@ -824,13 +847,22 @@ class Parser {
   void read_two_handed_inside(std::vector<Element>& out) {
     const Symbol s = peek();
     if (s == S::alternatingmotion) {
-      for (auto it = out.rbegin(); it != out.rend(); ++it)
+      // Applies to the repetition or motion it follows (searching into a group just closed).
+      for (auto it = out.rbegin(); it != out.rend(); ++it) {
         if (Repetition* r = std::get_if<Repetition>(&it->value)) {
           r->alternating = true;
           ++pos_;
           return;
         }
-      note(index(), "hamalternatingmotion without a repetition before it");
+        Motion* m = std::get_if<Motion>(&it->value);
+        if (!m) m = last_motion_in(*it);
+        if (m) {
+          m->alternating = true;
+          ++pos_;
+          return;
+        }
+      }
+      note(index(), "hamalternatingmotion without a motion before it");
       ++pos_;
       return;
     }
