@@ -919,7 +919,7 @@ class Parser {
     return true;
   }
 
-  // Fills one hand's fields from a posture branch; returns false if it would overwrite a field.
+  // Fills one hand's fields from a posture branch; a field already set is kept.
   void fill_hand(Posture& p, const Element& e, bool dominant, std::optional<Proximity>& pending) {
     auto set = [&](auto& per_hand, const auto& v) {
       auto& slot = dominant ? per_hand.dominant : per_hand.nondominant;
