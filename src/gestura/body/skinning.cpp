@@ -1,0 +1,187 @@
+#include "gestura/body/skinning.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "gestura/body/skinning_kernels.hpp"
+#include "gestura/core/error.hpp"
+
+namespace gestura {
+
+using namespace skinning_detail;
+
+bool cpu_has_avx2_fma() {
+#ifdef GESTURA_SKINNING_HAS_AVX2
+  static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return has;
+#else
+  return false;
+#endif
+}
+
+SkinningPath resolve_skinning_path(SkinningPath requested) {
+  if (requested == SkinningPath::Auto) return cpu_has_avx2_fma() ? SkinningPath::Avx2 : SkinningPath::Portable;
+  if (requested == SkinningPath::Avx2 && !cpu_has_avx2_fma())
+    throw Error("skinning: the AVX2+FMA path was requested but this CPU does not support it");
+  return requested;
+}
+
+void skinning_matrices(std::span<const mat4> model, std::span<const mat4> inverse_bind, std::span<mat4> out) {
+  if (model.size() != inverse_bind.size() || model.size() != out.size())
+    throw Error("skinning_matrices: " + std::to_string(model.size()) + " model matrices, " +
+                std::to_string(inverse_bind.size()) + " inverse bind matrices, " + std::to_string(out.size()) +
+                " outputs");
+  for (std::size_t j = 0; j < model.size(); ++j) out[j] = model[j] * inverse_bind[j];
+}
+
+void check_influences(std::span<const JointIndices> joints, std::span<const vec4> weights,
+                      std::size_t joint_count, float tolerance) {
+  if (joints.size() != weights.size())
+    throw Error("skin influences: " + std::to_string(joints.size()) + " joint quadruples but " +
+                std::to_string(weights.size()) + " weight quadruples");
+  for (std::size_t v = 0; v < joints.size(); ++v) {
+    float sum = 0.0f;
+    for (int k = 0; k < 4; ++k) {
+      const std::string where = "skin influences: vertex " + std::to_string(v) + " slot " + std::to_string(k);
+      if (joints[v][k] >= joint_count)
+        throw Error(where + ": joint " + std::to_string(joints[v][k]) + " out of range (" +
+                    std::to_string(joint_count) + " joints)");
+      if (!std::isfinite(weights[v][k]) || weights[v][k] < 0.0f) throw Error(where + ": bad weight");
+      sum += weights[v][k];
+    }
+    if (std::abs(sum - 1.0f) > tolerance)
+      throw Error("skin influences: vertex " + std::to_string(v) + ": weights sum to " + std::to_string(sum));
+  }
+}
+
+namespace {
+
+void check_sizes(const char* kernel, std::size_t joints, std::size_t weights, std::size_t rest,
+                 std::size_t out, std::size_t rest_normals, std::size_t out_normals, bool normals_required) {
+  const bool normals_ok = normals_required ? (rest_normals == rest && out_normals == rest)
+                                           : ((rest_normals == 0 && out_normals == 0) ||
+                                              (rest_normals == rest && out_normals == rest));
+  if (joints != rest || weights != rest || out != rest || !normals_ok)
+    throw Error(std::string(kernel) + ": per-vertex spans disagree in length (joints " + std::to_string(joints) +
+                ", weights " + std::to_string(weights) + ", rest positions " + std::to_string(rest) +
+                ", out positions " + std::to_string(out) + ", rest normals " + std::to_string(rest_normals) +
+                ", out normals " + std::to_string(out_normals) + ")");
+}
+
+void lbs(std::span<const mat4> skinning, std::span<const JointIndices> joints, std::span<const vec4> weights,
+         std::span<const vec3> rest_positions, std::span<const vec3> rest_normals, std::span<vec3> out_positions,
+         std::span<vec3> out_normals, SkinningPath path) {
+  const vec3* rn = rest_normals.empty() ? nullptr : rest_normals.data();
+  vec3* on = out_normals.empty() ? nullptr : out_normals.data();
+#ifdef GESTURA_SKINNING_HAS_AVX2
+  if (resolve_skinning_path(path) == SkinningPath::Avx2)
+    return lbs_avx2(skinning.data(), joints.data(), weights.data(), rest_positions.data(), rn,
+                    out_positions.data(), on, rest_positions.size());
+#else
+  resolve_skinning_path(path);
+#endif
+  lbs_portable(skinning.data(), joints.data(), weights.data(), rest_positions.data(), rn, out_positions.data(), on,
+               rest_positions.size());
+}
+
+}  // namespace
+
+void skin_positions(std::span<const mat4> skinning, std::span<const JointIndices> joints,
+                    std::span<const vec4> weights, std::span<const vec3> rest_positions,
+                    std::span<vec3> out_positions, SkinningPath path) {
+  check_sizes("skin_positions", joints.size(), weights.size(), rest_positions.size(), out_positions.size(), 0, 0,
+              false);
+  lbs(skinning, joints, weights, rest_positions, {}, out_positions, {}, path);
+}
+
+void skin_positions_normals(std::span<const mat4> skinning, std::span<const JointIndices> joints,
+                            std::span<const vec4> weights, std::span<const vec3> rest_positions,
+                            std::span<const vec3> rest_normals, std::span<vec3> out_positions,
+                            std::span<vec3> out_normals, SkinningPath path) {
+  check_sizes("skin_positions_normals", joints.size(), weights.size(), rest_positions.size(),
+              out_positions.size(), rest_normals.size(), out_normals.size(), true);
+  lbs(skinning, joints, weights, rest_positions, rest_normals, out_positions, out_normals, path);
+}
+
+void skinning_dual_quaternions(std::span<const mat4> skinning, std::span<DualQuat> out) {
+  if (skinning.size() != out.size())
+    throw Error("skinning_dual_quaternions: " + std::to_string(skinning.size()) + " matrices, " +
+                std::to_string(out.size()) + " outputs");
+  for (std::size_t j = 0; j < skinning.size(); ++j) {
+    const mat4& m = skinning[j];
+    // Gram–Schmidt on the columns removes scale and shear before extracting the rotation.
+    const vec3 x = glm::normalize(vec3(m[0]));
+    const vec3 y = glm::normalize(vec3(m[1]) - glm::dot(vec3(m[1]), x) * x);
+    const vec3 z = glm::cross(x, y);
+    const quat r = glm::normalize(glm::quat_cast(mat3(x, y, z)));
+    const vec3 t(m[3]);
+    out[j].real = r;
+    out[j].dual = 0.5f * (quat(0.0f, t.x, t.y, t.z) * r);
+  }
+}
+
+void skin_dual_quaternion(std::span<const DualQuat> skinning, std::span<const JointIndices> joints,
+                          std::span<const vec4> weights, std::span<const vec3> rest_positions,
+                          std::span<const vec3> rest_normals, std::span<vec3> out_positions,
+                          std::span<vec3> out_normals, SkinningPath path) {
+  check_sizes("skin_dual_quaternion", joints.size(), weights.size(), rest_positions.size(), out_positions.size(),
+              rest_normals.size(), out_normals.size(), false);
+  const vec3* rn = rest_normals.empty() ? nullptr : rest_normals.data();
+  vec3* on = out_normals.empty() ? nullptr : out_normals.data();
+#ifdef GESTURA_SKINNING_HAS_AVX2
+  if (resolve_skinning_path(path) == SkinningPath::Avx2)
+    return dqs_avx2(skinning.data(), joints.data(), weights.data(), rest_positions.data(), rn,
+                    out_positions.data(), on, rest_positions.size());
+#else
+  resolve_skinning_path(path);
+#endif
+  dqs_portable(skinning.data(), joints.data(), weights.data(), rest_positions.data(), rn, out_positions.data(), on,
+               rest_positions.size());
+}
+
+static_assert(sizeof(DualQuat) == 8 * sizeof(float), "kernels read a DualQuat as 8 packed floats");
+
+namespace skinning_detail {
+
+void lbs_portable(const mat4* skinning, const JointIndices* joints, const vec4* weights,
+                  const vec3* rest_positions, const vec3* rest_normals, vec3* out_positions,
+                  vec3* out_normals, std::size_t count) {
+  for (std::size_t v = 0; v < count; ++v) {
+    const JointIndices j = joints[v];
+    const vec4 w = weights[v];
+    const float* m0 = &skinning[j.x][0][0];
+    const float* m1 = &skinning[j.y][0][0];
+    const float* m2 = &skinning[j.z][0][0];
+    const float* m3 = &skinning[j.w][0][0];
+    float b[16];  // blended column-major matrix; 4-wide columns vectorise on SSE2
+    for (int e = 0; e < 16; ++e) b[e] = w.x * m0[e] + w.y * m1[e] + w.z * m2[e] + w.w * m3[e];
+    const vec3 p = rest_positions[v];
+    out_positions[v] = vec3(b[0] * p.x + b[4] * p.y + b[8] * p.z + b[12], b[1] * p.x + b[5] * p.y + b[9] * p.z + b[13],
+                            b[2] * p.x + b[6] * p.y + b[10] * p.z + b[14]);
+    if (out_normals) {
+      const vec3 n = rest_normals[v];
+      const float nx = b[0] * n.x + b[4] * n.y + b[8] * n.z;
+      const float ny = b[1] * n.x + b[5] * n.y + b[9] * n.z;
+      const float nz = b[2] * n.x + b[6] * n.y + b[10] * n.z;
+      const float inv = 1.0f / std::sqrt(nx * nx + ny * ny + nz * nz);
+      out_normals[v] = vec3(nx * inv, ny * inv, nz * inv);
+    }
+  }
+}
+
+void dqs_portable(const DualQuat* skinning, const JointIndices* joints, const vec4* weights,
+                  const vec3* rest_positions, const vec3* rest_normals, vec3* out_positions,
+                  vec3* out_normals, std::size_t count) {
+  if (count == 0) return;
+  const float* dq = &skinning[0].real.x;
+  if (rest_normals) {
+    for (std::size_t v = 0; v < count; ++v)
+      dqs_vertex(dq, joints[v], weights[v], rest_positions[v], &rest_normals[v], out_positions[v], &out_normals[v]);
+  } else {
+    for (std::size_t v = 0; v < count; ++v)
+      dqs_vertex(dq, joints[v], weights[v], rest_positions[v], nullptr, out_positions[v], nullptr);
+  }
+}
+
+}  // namespace skinning_detail
+}  // namespace gestura
