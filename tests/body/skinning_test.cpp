@@ -182,19 +182,27 @@ TEST(Skinning, Avx2AndPortableAgree) {
 
 TEST(Skinning, DqsHandlesAntipodalQuaternions) {
   // The same rotation stored as q and −q on two joints must blend to that rotation, not cancel.
-  const mat4 turn = glm::rotate(mat4(1.0f), 0.7f, vec3(0, 1, 0));
+  // Nine vertices: the AVX2 path does eight at a time and the rest one by one.
+  const mat4 turn = glm::translate(mat4(1.0f), vec3(0.1f, 0.0f, 0.2f)) * glm::rotate(mat4(1.0f), 0.7f, vec3(0, 1, 0));
   std::vector<DualQuat> dq(2);
   skinning_dual_quaternions(std::vector<mat4>{turn, turn}, dq);
   dq[1].real = -dq[1].real;
   dq[1].dual = -dq[1].dual;
-  const std::vector<vec3> rest{vec3(0.3f, 0.2f, 1.0f)};
-  const std::vector<JointIndices> j{JointIndices(0, 1, 0, 0)};
-  const std::vector<vec4> w{vec4(0.5f, 0.5f, 0, 0)};
+  std::vector<vec3> rest, normal;
+  for (int v = 0; v < 9; ++v) {
+    rest.push_back(vec3(0.3f, 0.2f * static_cast<float>(v), 1.0f));
+    normal.push_back(glm::normalize(vec3(1.0f, 0.1f * static_cast<float>(v), 0.0f)));
+  }
+  const std::vector<JointIndices> j(9, JointIndices(0, 1, 0, 0));
+  const std::vector<vec4> w(9, vec4(0.5f, 0.5f, 0, 0));
   for (SkinningPath path : kPaths) {
     if (!available(path)) continue;
-    std::vector<vec3> p(1);
-    skin_dual_quaternion(dq, j, w, rest, {}, p, {}, path);
-    expect_near(p[0], vec3(turn * vec4(rest[0], 1.0f)));
+    std::vector<vec3> p(9), n(9);
+    skin_dual_quaternion(dq, j, w, rest, normal, p, n, path);
+    for (int v = 0; v < 9; ++v) {
+      expect_near(p[v], vec3(turn * vec4(rest[v], 1.0f)));
+      expect_near(n[v], vec3(turn * vec4(normal[v], 0.0f)));
+    }
   }
 }
 

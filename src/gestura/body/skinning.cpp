@@ -3,6 +3,10 @@
 #include <cmath>
 #include <string>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "gestura/body/skinning_kernels.hpp"
 #include "gestura/core/error.hpp"
 
@@ -143,6 +147,43 @@ static_assert(sizeof(DualQuat) == 8 * sizeof(float), "kernels read a DualQuat as
 
 namespace skinning_detail {
 
+#if defined(__SSE2__)
+// SSE2 (every x86-64): the blended matrix as four 128-bit columns, the vertex as c0·x + c1·y + c2·z + c3.
+void lbs_portable(const mat4* skinning, const JointIndices* joints, const vec4* weights,
+                  const vec3* rest_positions, const vec3* rest_normals, vec3* out_positions,
+                  vec3* out_normals, std::size_t count) {
+  if (count == 0) return;
+  const float* base = &skinning[0][0][0];
+  for (std::size_t v = 0; v < count; ++v) {
+    const JointIndices j = joints[v];
+    const float* m[4] = {base + 16 * j.x, base + 16 * j.y, base + 16 * j.z, base + 16 * j.w};
+    const float* w = &weights[v].x;
+    __m128 c[4];
+    for (int col = 0; col < 4; ++col) {
+      __m128 sum = _mm_mul_ps(_mm_set1_ps(w[0]), _mm_loadu_ps(m[0] + 4 * col));
+      for (int k = 1; k < 4; ++k) sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w[k]), _mm_loadu_ps(m[k] + 4 * col)));
+      c[col] = sum;
+    }
+    const vec3& p = rest_positions[v];
+    const __m128 r = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c[0], _mm_set1_ps(p.x)), _mm_mul_ps(c[1], _mm_set1_ps(p.y))),
+                                _mm_add_ps(_mm_mul_ps(c[2], _mm_set1_ps(p.z)), c[3]));
+    _mm_storel_pi(reinterpret_cast<__m64*>(&out_positions[v].x), r);
+    _mm_store_ss(&out_positions[v].z, _mm_movehl_ps(r, r));
+    if (out_normals) {
+      const vec3& nr = rest_normals[v];
+      const __m128 n = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c[0], _mm_set1_ps(nr.x)), _mm_mul_ps(c[1], _mm_set1_ps(nr.y))),
+                                  _mm_mul_ps(c[2], _mm_set1_ps(nr.z)));
+      const __m128 sq = _mm_mul_ps(n, n);
+      const __m128 len2 = _mm_add_ss(_mm_add_ss(sq, _mm_shuffle_ps(sq, sq, 1)), _mm_shuffle_ps(sq, sq, 2));
+      const __m128 len = _mm_sqrt_ss(len2);
+      const __m128 unit = _mm_div_ps(n, _mm_shuffle_ps(len, len, 0));
+      _mm_storel_pi(reinterpret_cast<__m64*>(&out_normals[v].x), unit);
+      _mm_store_ss(&out_normals[v].z, _mm_movehl_ps(unit, unit));
+    }
+  }
+}
+#else
+// Plain C++ for targets without SSE2.
 void lbs_portable(const mat4* skinning, const JointIndices* joints, const vec4* weights,
                   const vec3* rest_positions, const vec3* rest_normals, vec3* out_positions,
                   vec3* out_normals, std::size_t count) {
@@ -153,7 +194,7 @@ void lbs_portable(const mat4* skinning, const JointIndices* joints, const vec4* 
     const float* m1 = &skinning[j.y][0][0];
     const float* m2 = &skinning[j.z][0][0];
     const float* m3 = &skinning[j.w][0][0];
-    float b[16];  // blended column-major matrix; 4-wide columns vectorise on SSE2
+    float b[16];  // blended column-major matrix
     for (int e = 0; e < 16; ++e) b[e] = w.x * m0[e] + w.y * m1[e] + w.z * m2[e] + w.w * m3[e];
     const vec3 p = rest_positions[v];
     out_positions[v] = vec3(b[0] * p.x + b[4] * p.y + b[8] * p.z + b[12], b[1] * p.x + b[5] * p.y + b[9] * p.z + b[13],
@@ -168,6 +209,7 @@ void lbs_portable(const mat4* skinning, const JointIndices* joints, const vec4* 
     }
   }
 }
+#endif
 
 void dqs_portable(const DualQuat* skinning, const JointIndices* joints, const vec4* weights,
                   const vec3* rest_positions, const vec3* rest_normals, vec3* out_positions,
