@@ -211,19 +211,110 @@ void lbs_portable(const mat4* skinning, const JointIndices* joints, const vec4* 
 }
 #endif
 
+#if defined(__SSE2__)
+namespace {
+
+// Four packed vec3 (12 floats) ↔ x, y, z registers; lane i is vertex i.
+void load4(const float* p, __m128& x, __m128& y, __m128& z) {
+  const __m128 a = _mm_loadu_ps(p), b = _mm_loadu_ps(p + 4), c = _mm_loadu_ps(p + 8);
+  // a = x0 y0 z0 x1, b = y1 z1 x2 y2, c = z2 x3 y3 z3
+  const __m128 xy = _mm_shuffle_ps(b, c, _MM_SHUFFLE(2, 1, 3, 2));  // x2 y2 x3 y3
+  const __m128 yz = _mm_shuffle_ps(a, b, _MM_SHUFFLE(1, 0, 2, 1));  // y0 z0 y1 z1
+  x = _mm_shuffle_ps(a, xy, _MM_SHUFFLE(2, 0, 3, 0));
+  y = _mm_shuffle_ps(yz, xy, _MM_SHUFFLE(3, 1, 2, 0));
+  z = _mm_shuffle_ps(yz, c, _MM_SHUFFLE(3, 0, 3, 1));
+}
+
+void store4(float* p, __m128 x, __m128 y, __m128 z) {
+  const __m128 xy = _mm_shuffle_ps(x, y, _MM_SHUFFLE(2, 0, 2, 0));  // x0 x2 y0 y2
+  const __m128 yz = _mm_shuffle_ps(y, z, _MM_SHUFFLE(3, 1, 3, 1));  // y1 y3 z1 z3
+  const __m128 zx = _mm_shuffle_ps(z, x, _MM_SHUFFLE(3, 1, 2, 0));  // z0 z2 x1 x3
+  _mm_storeu_ps(p, _mm_shuffle_ps(xy, zx, _MM_SHUFFLE(2, 0, 2, 0)));
+  _mm_storeu_ps(p + 4, _mm_shuffle_ps(yz, xy, _MM_SHUFFLE(3, 1, 2, 0)));
+  _mm_storeu_ps(p + 8, _mm_shuffle_ps(zx, yz, _MM_SHUFFLE(3, 1, 3, 1)));
+}
+
+// a × b + w·v style helpers for four vectors at once (SSE2 has no FMA).
+inline __m128 mul(__m128 a, __m128 b) { return _mm_mul_ps(a, b); }
+inline __m128 add(__m128 a, __m128 b) { return _mm_add_ps(a, b); }
+inline __m128 sub(__m128 a, __m128 b) { return _mm_sub_ps(a, b); }
+
+// v + 2·r × (r × v + w·v)
+void rotate4(__m128 rx, __m128 ry, __m128 rz, __m128 rw, __m128& x, __m128& y, __m128& z) {
+  const __m128 cx = add(sub(mul(ry, z), mul(rz, y)), mul(rw, x));
+  const __m128 cy = add(sub(mul(rz, x), mul(rx, z)), mul(rw, y));
+  const __m128 cz = add(sub(mul(rx, y), mul(ry, x)), mul(rw, z));
+  const __m128 two = _mm_set1_ps(2.0f);
+  x = add(x, mul(two, sub(mul(ry, cz), mul(rz, cy))));
+  y = add(y, mul(two, sub(mul(rz, cx), mul(rx, cz))));
+  z = add(z, mul(two, sub(mul(rx, cy), mul(ry, cx))));
+}
+
+}  // namespace
+
+// Four vertices per step: blend each vertex's dual quaternion (signs from scalar dot products),
+// transpose the four blends, then normalise and apply them four vertices per instruction.
 void dqs_portable(const DualQuat* skinning, const JointIndices* joints, const vec4* weights,
                   const vec3* rest_positions, const vec3* rest_normals, vec3* out_positions,
                   vec3* out_normals, std::size_t count) {
   if (count == 0) return;
   const float* dq = &skinning[0].real.x;
-  if (rest_normals) {
-    for (std::size_t v = 0; v < count; ++v)
-      dqs_vertex(dq, joints[v], weights[v], rest_positions[v], &rest_normals[v], out_positions[v], &out_normals[v]);
-  } else {
-    for (std::size_t v = 0; v < count; ++v)
-      dqs_vertex(dq, joints[v], weights[v], rest_positions[v], nullptr, out_positions[v], nullptr);
+  std::size_t v = 0;
+  for (; v + 4 <= count; v += 4) {
+    __m128 real[4], dual[4];
+    for (int i = 0; i < 4; ++i) {
+      const JointIndices& j = joints[v + static_cast<std::size_t>(i)];
+      const vec4& w = weights[v + static_cast<std::size_t>(i)];
+      const float* q[4] = {dq + 8 * j.x, dq + 8 * j.y, dq + 8 * j.z, dq + 8 * j.w};
+      float s[4] = {w.x, w.y, w.z, w.w};
+      for (int k = 1; k < 4; ++k)  // antipodality against the first influence
+        if (q[0][0] * q[k][0] + q[0][1] * q[k][1] + q[0][2] * q[k][2] + q[0][3] * q[k][3] < 0.0f) s[k] = -s[k];
+      __m128 r = mul(_mm_set1_ps(s[0]), _mm_loadu_ps(q[0])), d = mul(_mm_set1_ps(s[0]), _mm_loadu_ps(q[0] + 4));
+      for (int k = 1; k < 4; ++k) {
+        r = add(r, mul(_mm_set1_ps(s[k]), _mm_loadu_ps(q[k])));
+        d = add(d, mul(_mm_set1_ps(s[k]), _mm_loadu_ps(q[k] + 4)));
+      }
+      real[i] = r;
+      dual[i] = d;
+    }
+    _MM_TRANSPOSE4_PS(real[0], real[1], real[2], real[3]);
+    _MM_TRANSPOSE4_PS(dual[0], dual[1], dual[2], dual[3]);
+    const __m128 len2 = add(add(mul(real[0], real[0]), mul(real[1], real[1])),
+                            add(mul(real[2], real[2]), mul(real[3], real[3])));
+    const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), _mm_sqrt_ps(len2));
+    const __m128 rx = mul(real[0], inv), ry = mul(real[1], inv), rz = mul(real[2], inv), rw = mul(real[3], inv);
+    const __m128 dx = mul(dual[0], inv), dy = mul(dual[1], inv), dz = mul(dual[2], inv), dw = mul(dual[3], inv);
+    // t = 2 · (rw·d − dw·r + r × d)
+    const __m128 two = _mm_set1_ps(2.0f);
+    const __m128 tx = mul(two, add(sub(mul(rw, dx), mul(dw, rx)), sub(mul(ry, dz), mul(rz, dy))));
+    const __m128 ty = mul(two, add(sub(mul(rw, dy), mul(dw, ry)), sub(mul(rz, dx), mul(rx, dz))));
+    const __m128 tz = mul(two, add(sub(mul(rw, dz), mul(dw, rz)), sub(mul(rx, dy), mul(ry, dx))));
+    __m128 px, py, pz;
+    load4(&rest_positions[v].x, px, py, pz);
+    rotate4(rx, ry, rz, rw, px, py, pz);
+    store4(&out_positions[v].x, add(px, tx), add(py, ty), add(pz, tz));
+    if (rest_normals) {
+      __m128 nx, ny, nz;
+      load4(&rest_normals[v].x, nx, ny, nz);
+      rotate4(rx, ry, rz, rw, nx, ny, nz);
+      store4(&out_normals[v].x, nx, ny, nz);
+    }
   }
+  for (; v < count; ++v)  // the last few vertices one by one
+    dqs_vertex(dq, joints[v], weights[v], rest_positions[v], rest_normals ? &rest_normals[v] : nullptr,
+               out_positions[v], out_normals ? &out_normals[v] : nullptr);
 }
+#else
+void dqs_portable(const DualQuat* skinning, const JointIndices* joints, const vec4* weights,
+                  const vec3* rest_positions, const vec3* rest_normals, vec3* out_positions,
+                  vec3* out_normals, std::size_t count) {
+  if (count == 0) return;
+  const float* dq = &skinning[0].real.x;
+  for (std::size_t v = 0; v < count; ++v)
+    dqs_vertex(dq, joints[v], weights[v], rest_positions[v], rest_normals ? &rest_normals[v] : nullptr,
+               out_positions[v], out_normals ? &out_normals[v] : nullptr);
+}
+#endif
 
 }  // namespace skinning_detail
 }  // namespace gestura
