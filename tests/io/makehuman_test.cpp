@@ -254,3 +254,14 @@ TEST(MakeHumanErrors, MalformedFaceFiles) {
   EXPECT_EQ(error_of([&] { parse_makehuman_expression(R"({"name": "x", "unit_poses": {"Up": "high"}})", "e.mhpose"); }),
             "e.mhpose: field 'unit_poses.Up': expected a number");
 }
+
+TEST(JointNamesMakeHuman, TableFirstThenSideSuffixBecomesPrefix) {
+  EXPECT_EQ(joint_name_from_makehuman("wrist.L"), "l_wrist");
+  EXPECT_EQ(joint_name_from_makehuman("finger2-3.R"), "r_index3");
+  EXPECT_EQ(joint_name_from_makehuman("finger1-1.L"), "l_thumb1");
+  EXPECT_EQ(joint_name_from_makehuman("upperarm01.R"), "r_shoulder");
+  EXPECT_EQ(joint_name_from_makehuman("head"), "skullbase");
+  EXPECT_EQ(joint_name_from_makehuman("levator02.L"), "l_levator02");
+  EXPECT_EQ(joint_name_from_makehuman("upperarm02.R"), "r_upperarm02");
+  EXPECT_EQ(joint_name_from_makehuman("tongue00"), "tongue00");
+}
