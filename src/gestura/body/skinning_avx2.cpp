@@ -84,6 +84,17 @@ GESTURA_AVX2 [[gnu::always_inline]] inline void store8(float* p, __m256 x, __m25
   _mm_storeu_ps(p + 20, _mm256_extractf128_ps(c, 1));
 }
 
+// Four 128-bit rows (one per vertex in each lane) → four registers of their x, y, z, w.
+GESTURA_AVX2 [[gnu::always_inline]] inline void transpose4(__m256 r0, __m256 r1, __m256 r2, __m256 r3, __m256& x,
+                                                          __m256& y, __m256& z, __m256& w) {
+  const __m256 t0 = _mm256_unpacklo_ps(r0, r1), t1 = _mm256_unpackhi_ps(r0, r1);
+  const __m256 t2 = _mm256_unpacklo_ps(r2, r3), t3 = _mm256_unpackhi_ps(r2, r3);
+  x = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+  y = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+  z = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+  w = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+}
+
 }  // namespace
 
 GESTURA_AVX2 void lbs_avx2(const mat4* skinning, const JointIndices* joints, const vec4* weights,
@@ -100,26 +111,31 @@ GESTURA_AVX2 void lbs_avx2(const mat4* skinning, const JointIndices* joints, con
     }
     return;
   }
-  // Normals are written unnormalised, then normalised eight at a time in x/y/z registers: cheaper
-  // than a horizontal dot product per vertex.
+  // Normals leave the per-vertex step unnormalised into a small aligned buffer; eight at a time they
+  // are transposed to x/y/z registers, normalised and stored. Cheaper than a horizontal dot product
+  // per vertex, and the 16-byte stores forward to the 16-byte loads that read them back.
   const __m256 zero = _mm256_setzero_ps();
-  auto skin_one = [&](std::size_t v) GESTURA_AVX2 {
+  alignas(32) float normal[8][4];
+  auto skin_one = [&](std::size_t v, float* unnormalised) GESTURA_AVX2 {
     __m256 lo, hi;
     blend(base, joints[v], weights[v], lo, hi);
     store3(&out_positions[v].x, transform(lo, hi, &rest_positions[v].x, one));
-    store3(&out_normals[v].x, transform(lo, hi, &rest_normals[v].x, zero));  // w lane is 0
+    _mm_store_ps(unnormalised, transform(lo, hi, &rest_normals[v].x, zero));  // w lane is 0
   };
   std::size_t v = 0;
   for (; v + 8 <= count; v += 8) {
-    for (std::size_t i = 0; i < 8; ++i) skin_one(v + i);
-    __m256 x, y, z;
-    load8(&out_normals[v].x, x, y, z);
+    for (std::size_t i = 0; i < 8; ++i) skin_one(v + i, normal[i]);
+    __m256 row[4];  // lane i of the low half is vertex i, of the high half vertex i + 4
+    for (int i = 0; i < 4; ++i)
+      row[i] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_load_ps(normal[i])), _mm_load_ps(normal[i + 4]), 1);
+    __m256 x, y, z, w;
+    transpose4(row[0], row[1], row[2], row[3], x, y, z, w);
     const __m256 inv = inverse_sqrt(_mm256_fmadd_ps(x, x, _mm256_fmadd_ps(y, y, _mm256_mul_ps(z, z))));
     store8(&out_normals[v].x, _mm256_mul_ps(x, inv), _mm256_mul_ps(y, inv), _mm256_mul_ps(z, inv));
   }
   for (; v < count; ++v) {
-    skin_one(v);
-    const __m128 n = _mm_setr_ps(out_normals[v].x, out_normals[v].y, out_normals[v].z, 0.0f);
+    skin_one(v, normal[0]);
+    const __m128 n = _mm_load_ps(normal[0]);
     store3(&out_normals[v].x, _mm_mul_ps(n, inverse_sqrt(_mm_dp_ps(n, n, 0x7F))));
   }
 }
@@ -143,17 +159,6 @@ GESTURA_AVX2 [[gnu::always_inline]] inline __m256 blend_dual(const float* dq, co
   b = _mm256_fmadd_ps(_mm256_broadcast_ss(s + 1), q1, b);
   b = _mm256_fmadd_ps(_mm256_broadcast_ss(s + 2), q2, b);
   return _mm256_fmadd_ps(_mm256_broadcast_ss(s + 3), q3, b);
-}
-
-// Four 128-bit rows (one per vertex in each lane) → four registers of their x, y, z, w.
-GESTURA_AVX2 [[gnu::always_inline]] inline void transpose4(__m256 r0, __m256 r1, __m256 r2, __m256 r3, __m256& x,
-                                                          __m256& y, __m256& z, __m256& w) {
-  const __m256 t0 = _mm256_unpacklo_ps(r0, r1), t1 = _mm256_unpackhi_ps(r0, r1);
-  const __m256 t2 = _mm256_unpacklo_ps(r2, r3), t3 = _mm256_unpackhi_ps(r2, r3);
-  x = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
-  y = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
-  z = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
-  w = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
 }
 
 // v + 2·r × (r × v + w·v), eight vectors at once.
