@@ -291,7 +291,7 @@ namespace {
 TEST(IkLimits, WideLimitsRecogniseEitherEulerSolution) {
   const Skeleton arm = reference_arm_skeleton();
   const int shoulder = arm.find("l_shoulder");
-  const vec3 angles(deg(-119.0f), deg(-84.0f), deg(132.0f));
+  const vec3 angles(deg(58.0f), deg(-80.0f), deg(-45.0f));  // extended, twisted, adducted
   const quat q = joint_rotation(arm, shoulder, angles);
   EXPECT_TRUE(within_limits(arm, shoulder, q));
   const vec3 back = joint_angles(arm, shoulder, q);
