@@ -34,9 +34,15 @@ IkResult solve_ccd(const Skeleton& skeleton, const IkChain& chain, const mat4& b
       const float theta = std::clamp(std::atan2(k3, k2 - k1), -settings.max_angle_step, settings.max_angle_step);
       const float updated = std::clamp(ws.angles[i] + theta, ws.lower[i], ws.upper[i]);
       if (updated == ws.angles[i]) continue;
+      // Turning this angle turns everything distal rigidly about (p, a); the joints and axes closer
+      // to the root, which the rest of the sweep visits, do not move. So only the effector frame is
+      // updated here, and the chain is recomputed once per sweep.
+      const quat turn = glm::angleAxis(updated - ws.angles[i], a);
       ws.angles[i] = updated;
-      effector = chain_forward(skeleton, chain, pose, base, ws, effector_rotation);
+      effector = p + turn * pc;
+      effector_rotation = glm::normalize(turn * effector_rotation);
     }
+    effector = chain_forward(skeleton, chain, pose, base, ws, effector_rotation);
     const int done = result.iterations + 1;
     const float before = result.position_error + settings.orientation_scale * result.orientation_error;
     result = measure_residual(effector, effector_rotation, target, settings);
