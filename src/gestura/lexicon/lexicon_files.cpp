@@ -1,6 +1,8 @@
 #include "gestura/lexicon/lexicon_files.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -254,6 +256,31 @@ std::size_t export_sigml(std::span<const SignEntry> entries, std::ostream& out) 
   return written;
 }
 
+std::string read_sigml_sign(const std::string& path, std::string_view gloss) {
+  const std::string text = read_file(path);
+  pugi::xml_document doc;
+  const auto parsed = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
+  if (!parsed)
+    throw Error(at(path, line_of(text, parsed.offset)), std::string("bad XML: ") + parsed.description());
+  const pugi::xml_node root = doc.child("sigml");
+  if (!root) throw Error(SourceLocation{path}, "not a SiGML file: the root element must be <sigml>");
+  std::vector<pugi::xml_node> signs;
+  for (const pugi::xml_node sign : root.children("hns_sign")) signs.push_back(sign);
+  const auto named = std::find_if(signs.begin(), signs.end(),
+                                  [&](const pugi::xml_node& n) { return gloss == n.attribute("gloss").value(); });
+  pugi::xml_node chosen;
+  if (named != signs.end())
+    chosen = *named;
+  else if (signs.size() == 1)
+    chosen = signs.front();
+  else
+    throw Error(SourceLocation{path}, "no <hns_sign gloss=\"" + std::string(gloss) + "\"> among " +
+                                          std::to_string(signs.size()) + " signs");
+  std::ostringstream element;
+  chosen.print(element, "", pugi::format_raw);
+  return element.str();
+}
+
 std::size_t import_file(Lexicon& lexicon, const std::string& path, const ImportOptions& options) {
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext == ".sigml" || ext == ".xml") return import_sigml(lexicon, path, options);
@@ -261,11 +288,38 @@ std::size_t import_file(Lexicon& lexicon, const std::string& path, const ImportO
 }
 
 Lexicon load_builtin_lexicon(const std::string& jsonl_path) {
+  return load_builtin_lexicon(std::span<const std::string>(&jsonl_path, 1));
+}
+
+Lexicon load_builtin_lexicon(std::span<const std::string> jsonl_paths) {
   Lexicon builtin = Lexicon::in_memory();
   ImportOptions options;
   options.source = "builtin";
-  import_jsonl(builtin, jsonl_path, options);
+  for (const std::string& path : jsonl_paths) import_jsonl(builtin, path, options);
   return builtin;
+}
+
+std::vector<std::string> builtin_lexicon_files() {
+  const char* from_env = std::getenv("GESTURA_BUILTIN_LEXICON");
+  const std::filesystem::path where =
+      from_env && *from_env ? std::filesystem::path(from_env)
+                            : std::filesystem::path(GESTURA_SOURCE_DIR) / "data" / "lexicon";
+  std::vector<std::string> files;
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(where, ec)) return {where.string()};
+  for (const auto& item : std::filesystem::directory_iterator(where, ec))
+    if (item.path().extension() == ".jsonl") files.push_back(item.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string default_user_lexicon_path() {
+  if (const char* path = std::getenv("GESTURA_LEXICON"); path && *path) return path;
+  if (const char* data = std::getenv("XDG_DATA_HOME"); data && *data)
+    return (std::filesystem::path(data) / "gestura" / "lexicon.sqlite").string();
+  const char* home = std::getenv("HOME");
+  if (!home || !*home) throw Error("cannot find the user lexicon: neither GESTURA_LEXICON nor HOME is set");
+  return (std::filesystem::path(home) / ".local" / "share" / "gestura" / "lexicon.sqlite").string();
 }
 
 }  // namespace gestura

@@ -46,11 +46,22 @@ std::size_t import_sigml(Lexicon& lexicon, const std::string& path, const Import
 // and clip entries are skipped: converting them is not a lexicon concern).
 std::size_t export_sigml(std::span<const SignEntry> entries, std::ostream& out);
 
+// The <hns_sign> element of `gloss` in a SiGML file as text (the only element when the file has one).
+std::string read_sigml_sign(const std::string& path, std::string_view gloss);
+
 // Imports by extension: .sigml / .xml as SiGML, anything else as JSON lines.
 std::size_t import_file(Lexicon& lexicon, const std::string& path, const ImportOptions& options);
 
-// The built-in lexicon: an in-memory database filled from a JSON-lines file shipped in data/
-// (e.g. data/lexicon/ase.jsonl), so it is never written to and costs no disk state.
+// The built-in lexicon: an in-memory database filled from JSON-lines files shipped in data/lexicon/
+// (one per sign language, e.g. ase.jsonl), so it is never written to and costs no disk state.
 Lexicon load_builtin_lexicon(const std::string& jsonl_path);
+Lexicon load_builtin_lexicon(std::span<const std::string> jsonl_paths);
+// The .jsonl files of data/lexicon/ in the source tree, or of $GESTURA_BUILTIN_LEXICON (a file or a
+// directory) when set; empty when there are none.
+std::vector<std::string> builtin_lexicon_files();
+
+// Where the user's own lexicon lives: $GESTURA_LEXICON when set, else
+// $XDG_DATA_HOME/gestura/lexicon.sqlite, else ~/.local/share/gestura/lexicon.sqlite.
+std::string default_user_lexicon_path();
 
 }  // namespace gestura
