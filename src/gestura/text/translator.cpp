@@ -545,6 +545,11 @@ std::size_t reorder_clause(std::vector<Item>& clause, bool wh_question) {
       negation.push_back(std::move(item));
     } else rest.push_back(std::move(item));
   }
+  // In "why don't you like…" the subject follows the negation; the headshake covers the verb phrase.
+  const auto is_subject = [](const Item& item) {
+    return item.token.gloss.rfind("IX-", 0) == 0 || item.token.gloss == "WE";
+  };
+  if (negation_seen && negation_start + 1 < rest.size() && is_subject(rest[negation_start])) ++negation_start;
   clause.clear();
   for (auto* part : {&time, &rest, &negation, &wh})
     for (Item& item : *part) clause.push_back(std::move(item));
