@@ -115,7 +115,27 @@ vec3 joint_angles(const Skeleton& skeleton, int joint, const quat& local_rotatio
   // Of the two Euler solutions (and 2π shifts) take the one nearest the middle of the limits, so a
   // pose inside the limits is always recognised as such.
   const JointDofs& d = skeleton.dofs[joint];
-  return quat_to_euler_near(rel, d.order, 0.5f * (d.min_angle + d.max_angle));
+  const vec3 middle = 0.5f * (d.min_angle + d.max_angle);
+  const vec3 nearest = quat_to_euler_near(rel, d.order, middle);
+  // Limits wider than 180° on an outer or inner axis (shoulder flexion spans 249°) can hold the other
+  // Euler solution (a + π, π − b, c + π) of the same rotation while the nearest one lies outside:
+  // prefer whichever solution is inside the limits.
+  auto inside = [&](const vec3& a) {
+    for (int axis = 0; axis < 3; ++axis) {
+      const float lo = d.free(axis) ? d.min_angle[axis] : 0.0f, hi = d.free(axis) ? d.max_angle[axis] : 0.0f;
+      if (a[axis] < lo - 1e-4f || a[axis] > hi + 1e-4f) return false;
+    }
+    return true;
+  };
+  if (inside(nearest)) return nearest;
+  const auto ax = axes_of(d.order);
+  vec3 twin = nearest;
+  twin[ax[0]] += kPi;
+  twin[ax[1]] = kPi - nearest[ax[1]];
+  twin[ax[2]] += kPi;
+  for (int axis = 0; axis < 3; ++axis)
+    twin[axis] += 2.0f * kPi * std::round((middle[axis] - twin[axis]) / (2.0f * kPi));
+  return inside(twin) ? twin : nearest;
 }
 
 quat joint_rotation(const Skeleton& skeleton, int joint, const vec3& angles) {

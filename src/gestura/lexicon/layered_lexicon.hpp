@@ -1,0 +1,37 @@
+#pragma once
+// A read view over several lexicons stacked on each other: the first layer is the bottom (normally the
+// built-in lexicon), later layers are user lexicons. A layer that has a gloss in a sign language
+// hides every variant of that gloss+language below it, so a user can both add signs and replace
+// built-in ones without editing the built-in data. The view does not own the layers.
+#include <string_view>
+#include <vector>
+
+#include "gestura/lexicon/lexicon.hpp"
+
+namespace gestura {
+
+class LayeredLexicon {
+ public:
+  // Adds `layer` on top of the layers added before.
+  void push_layer(Lexicon& layer);
+  std::size_t layer_count() const { return layers_.size(); }
+
+  std::optional<SignEntry> find(std::string_view gloss, std::string_view language, int variant = 1);
+  std::vector<SignEntry> find_all(std::string_view gloss, std::string_view language = {});
+  std::vector<SignEntry> by_keyword(std::string_view word, std::string_view language = {},
+                                    std::string_view spoken = "eng");
+  std::vector<SignEntry> search(std::string_view text, SearchMode mode = SearchMode::substring,
+                                std::string_view language = {}, std::size_t limit = 100);
+  std::vector<SignEntry> list(std::string_view language = {});
+
+ private:
+  // True when a layer above `layer` has `gloss` in `language`.
+  bool hidden_above(std::size_t layer, const SignEntry& entry);
+  // Merges per-layer results top-down, dropping entries hidden by a higher layer.
+  template <class Query>
+  std::vector<SignEntry> merged(Query&& per_layer);
+
+  std::vector<Lexicon*> layers_;
+};
+
+}  // namespace gestura

@@ -1,0 +1,199 @@
+#include "gestura/lexicon/lexicon.hpp"
+
+#include <algorithm>
+
+#include "gestura/core/error.hpp"
+#include "gestura/lexicon/schema.hpp"
+#include "gestura/lexicon/sign_language_codes.hpp"
+
+namespace gestura {
+
+namespace {
+
+constexpr std::string_view kSignColumns =
+    "SELECT id, gloss, lang, variant, notation_kind, notation, clip, source, licence, created, updated FROM signs ";
+
+std::string ascii_lower(std::string_view text) {
+  std::string out(text);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(c >= 'A' && c <= 'Z' ? c + 32 : c); });
+  return out;
+}
+
+// LIKE pattern that matches `text` literally.
+std::string like_escaped(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '%' || c == '_' || c == '\\') out.push_back('\\');
+    out.push_back(c);
+  }
+  return out;
+}
+
+void validate(const SignEntry& e) {
+  if (e.gloss.empty()) throw Error("sign entry has an empty gloss");
+  if (e.gloss.find_first_of("\n\r\t") != std::string::npos)
+    throw Error("gloss '" + e.gloss + "' contains a control character");
+  require_known_sign_language(e.language);
+  if (e.variant < 0) throw Error("gloss '" + e.gloss + "': variant must be 1 or more");
+  if (e.notation_kind == NotationKind::clip ? e.clip.empty() : e.notation.empty())
+    throw Error("gloss '" + e.gloss + "' has no " + std::string(to_string(e.notation_kind)) + " notation");
+  for (const Keyword& k : e.keywords) {
+    if (k.word.empty()) throw Error("gloss '" + e.gloss + "' has an empty keyword");
+    if (!is_spoken_language_code(k.language))
+      throw Error("gloss '" + e.gloss + "': keyword '" + k.word + "' has a bad language code '" + k.language +
+                  "' (expected ISO 639-1/3 like eng or en)");
+  }
+}
+
+}  // namespace
+
+Lexicon::Lexicon(sqlite::Database db) : db_(std::move(db)) {
+  db_.exec("PRAGMA foreign_keys = ON");
+  lexicon_schema::migrate(db_);
+}
+
+Lexicon Lexicon::open(const std::string& path, int busy_timeout_ms) {
+  sqlite::Database db(path, true, busy_timeout_ms);
+  // WAL lets readers in other processes keep a consistent snapshot while one writer commits.
+  {
+    auto mode = db.prepare("PRAGMA journal_mode = WAL");
+    mode.step();
+  }  // finalized before the schema migration runs DDL
+  return Lexicon(std::move(db));
+}
+
+Lexicon Lexicon::in_memory() { return Lexicon(sqlite::Database(":memory:", true)); }
+
+std::int64_t Lexicon::add(SignEntry e, OnConflict on_conflict) {
+  validate(e);
+  sqlite::Transaction tx(db_);
+  if (e.variant == 0) {
+    auto next = db_.prepare("SELECT COALESCE(MAX(variant), 0) + 1 FROM signs WHERE gloss = ?1 AND lang = ?2");
+    next.bind(1, e.gloss).bind(2, e.language);
+    next.step();
+    e.variant = static_cast<int>(next.integer(0));
+  }
+  std::optional<std::int64_t> created;
+  {
+    auto existing = db_.prepare("SELECT id, created FROM signs WHERE gloss = ?1 AND lang = ?2 AND variant = ?3");
+    existing.bind(1, e.gloss).bind(2, e.language).bind(3, std::int64_t{e.variant});
+    if (existing.step()) {
+      if (on_conflict == OnConflict::fail)
+        throw Error("sign '" + e.gloss + "' (" + e.language + ", variant " + std::to_string(e.variant) +
+                    ") already exists in " + db_.path());
+      created = existing.integer(1);
+      auto drop = db_.prepare("DELETE FROM signs WHERE id = ?1");
+      drop.bind(1, existing.integer(0)).run();
+    }
+  }
+  auto insert = db_.prepare(
+      "INSERT INTO signs (gloss, lang, variant, notation_kind, notation, clip, source, licence, created, updated) "
+      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, COALESCE(?9, unixepoch()), unixepoch())");
+  insert.bind(1, e.gloss).bind(2, e.language).bind(3, std::int64_t{e.variant});
+  insert.bind(4, to_string(e.notation_kind)).bind(5, e.notation);
+  if (e.clip.empty()) insert.bind_null(6); else insert.bind(6, e.clip);
+  insert.bind(7, e.source).bind(8, e.licence);
+  if (created) insert.bind(9, *created); else insert.bind_null(9);
+  insert.run();
+  const std::int64_t id = db_.last_insert_rowid();
+  auto keyword = db_.prepare("INSERT INTO keywords (sign_id, word, lang, meaning) VALUES (?1, ?2, ?3, ?4)");
+  for (const Keyword& k : e.keywords) {
+    keyword.reset();
+    keyword.bind(1, id).bind(2, ascii_lower(k.word)).bind(3, k.language).bind(4, k.meaning).run();
+  }
+  tx.commit();
+  return id;
+}
+
+std::size_t Lexicon::remove(std::string_view gloss, std::string_view language, std::optional<int> variant) {
+  sqlite::Transaction tx(db_);
+  auto drop = db_.prepare(variant ? "DELETE FROM signs WHERE gloss = ?1 AND lang = ?2 AND variant = ?3"
+                                  : "DELETE FROM signs WHERE gloss = ?1 AND lang = ?2");
+  drop.bind(1, gloss).bind(2, language);
+  if (variant) drop.bind(3, std::int64_t{*variant});
+  drop.run();
+  const auto removed = static_cast<std::size_t>(db_.changes());
+  tx.commit();
+  return removed;
+}
+
+std::vector<SignEntry> Lexicon::query(std::string_view where_and_order, const std::vector<std::string>& params) {
+  auto stmt = db_.prepare(std::string(kSignColumns) + std::string(where_and_order));
+  for (std::size_t i = 0; i < params.size(); ++i) stmt.bind(static_cast<int>(i + 1), params[i]);
+  std::vector<SignEntry> out;
+  while (stmt.step()) {
+    SignEntry e;
+    e.id = stmt.integer(0);
+    e.gloss = stmt.text(1);
+    e.language = stmt.text(2);
+    e.variant = static_cast<int>(stmt.integer(3));
+    e.notation_kind = notation_kind_from_string(stmt.text(4));
+    e.notation = stmt.text(5);
+    e.clip = stmt.blob(6);
+    e.source = stmt.text(7);
+    e.licence = stmt.text(8);
+    e.created = stmt.integer(9);
+    e.updated = stmt.integer(10);
+    out.push_back(std::move(e));
+  }
+  for (SignEntry& e : out) load_keywords(e);
+  return out;
+}
+
+void Lexicon::load_keywords(SignEntry& entry) {
+  auto stmt = db_.prepare("SELECT word, lang, meaning FROM keywords WHERE sign_id = ?1 ORDER BY rowid");
+  stmt.bind(1, entry.id);
+  while (stmt.step()) entry.keywords.push_back(Keyword{stmt.text(0), stmt.text(1), stmt.text(2)});
+}
+
+std::optional<SignEntry> Lexicon::find(std::string_view gloss, std::string_view language, int variant) {
+  auto found = query("WHERE gloss = ?1 AND lang = ?2 AND variant = ?3",
+                     {std::string(gloss), std::string(language), std::to_string(variant)});
+  if (found.empty()) return std::nullopt;
+  return std::move(found.front());
+}
+
+std::vector<SignEntry> Lexicon::find_all(std::string_view gloss, std::string_view language) {
+  return query("WHERE gloss = ?1 AND (?2 = '' OR lang = ?2) ORDER BY lang, variant",
+               {std::string(gloss), std::string(language)});
+}
+
+std::vector<SignEntry> Lexicon::by_keyword(std::string_view word, std::string_view language,
+                                           std::string_view spoken) {
+  return query(
+      "WHERE id IN (SELECT sign_id FROM keywords WHERE word = ?1 AND lang = ?3) AND (?2 = '' OR lang = ?2) "
+      "ORDER BY lang, gloss, variant",
+      {ascii_lower(word), std::string(language), std::string(spoken)});
+}
+
+std::vector<SignEntry> Lexicon::search(std::string_view text, SearchMode mode, std::string_view language,
+                                       std::size_t limit) {
+  std::string pattern;
+  if (mode == SearchMode::substring) pattern.push_back('%');
+  pattern.append(like_escaped(ascii_lower(text)));
+  pattern.push_back('%');
+  return query(
+      "WHERE (gloss LIKE ?1 ESCAPE '\\' OR id IN (SELECT sign_id FROM keywords WHERE word LIKE ?1 ESCAPE '\\')) "
+      "AND (?2 = '' OR lang = ?2) ORDER BY gloss <> ?3, gloss, lang, variant LIMIT " +
+          std::to_string(limit),
+      {pattern, std::string(language), std::string(text)});
+}
+
+std::vector<SignEntry> Lexicon::list(std::string_view language) {
+  return query("WHERE ?1 = '' OR lang = ?1 ORDER BY gloss, lang, variant", {std::string(language)});
+}
+
+std::size_t Lexicon::size() {
+  auto stmt = db_.prepare("SELECT COUNT(*) FROM signs");
+  stmt.step();
+  return static_cast<std::size_t>(stmt.integer(0));
+}
+
+void Lexicon::atomically(const std::function<void()>& body) {
+  sqlite::Transaction tx(db_);
+  body();
+  tx.commit();
+}
+
+}  // namespace gestura

@@ -1,0 +1,66 @@
+#pragma once
+// A lexicon of signs stored in SQLite. One Lexicon owns one connection; it is not shared between
+// threads. Files are opened in WAL mode so readers in other processes see the last committed state
+// while a writer works; every write is one transaction.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gestura/lexicon/sign_entry.hpp"
+#include "gestura/lexicon/sqlite.hpp"
+
+namespace gestura {
+
+enum class OnConflict { fail, replace };
+enum class SearchMode { prefix, substring };
+
+class Lexicon {
+ public:
+  // Opens or creates the database file, upgrading its schema. Waits `busy_timeout_ms` for a lock
+  // held by another connection, then fails with an Error naming the file.
+  static Lexicon open(const std::string& path, int busy_timeout_ms = 2000);
+  // A private database in memory (the built-in layer, tests).
+  static Lexicon in_memory();
+
+  const std::string& path() const { return db_.path(); }
+
+  // Stores `entry`; returns its id. Validates gloss, sign-language code and notation. A variant of 0
+  // takes the next free variant number of that gloss. With OnConflict::fail an existing
+  // gloss+language+variant is an error; with replace the old entry (and its keywords) is replaced,
+  // keeping its creation time.
+  std::int64_t add(SignEntry entry, OnConflict on_conflict = OnConflict::fail);
+  // Removes the entries of `gloss` in `language` (one variant, or all when nullopt); returns how many.
+  std::size_t remove(std::string_view gloss, std::string_view language, std::optional<int> variant = std::nullopt);
+
+  std::optional<SignEntry> find(std::string_view gloss, std::string_view language, int variant = 1);
+  // Every variant of `gloss`, in every sign language when `language` is empty.
+  std::vector<SignEntry> find_all(std::string_view gloss, std::string_view language = {});
+  // Signs whose keywords contain `word` (case-insensitive) in spoken language `spoken`; restricted to
+  // one sign language unless `language` is empty.
+  std::vector<SignEntry> by_keyword(std::string_view word, std::string_view language = {},
+                                    std::string_view spoken = "eng");
+  // Entries whose gloss or a keyword starts with / contains `text` (ASCII case-insensitive), exact
+  // gloss matches first, at most `limit`.
+  std::vector<SignEntry> search(std::string_view text, SearchMode mode = SearchMode::substring,
+                                std::string_view language = {}, std::size_t limit = 100);
+  std::vector<SignEntry> list(std::string_view language = {});
+  std::size_t size();
+
+  // Runs `body` in one transaction: if it throws, nothing it wrote is kept.
+  void atomically(const std::function<void()>& body);
+
+  sqlite::Database& database() { return db_; }
+
+ private:
+  explicit Lexicon(sqlite::Database db);
+  std::vector<SignEntry> query(std::string_view where_and_order, const std::vector<std::string>& params);
+  void load_keywords(SignEntry& entry);
+
+  sqlite::Database db_;
+};
+
+}  // namespace gestura

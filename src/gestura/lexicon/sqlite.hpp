@@ -1,0 +1,94 @@
+#pragma once
+// Thin RAII ownership of the SQLite C API: a connection, a prepared statement and a transaction guard.
+// Every failure becomes a gestura::Error whose location names the database file, so a caller never
+// sees a bare SQLite result code.
+#include <sqlite3.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gestura::sqlite {
+
+class Statement;
+
+class Database {
+ public:
+  // Opens (and creates when `create` is true) the file at `path`; ":memory:" gives a private in-memory
+  // database. Waits up to `busy_timeout_ms` for another connection's lock before failing.
+  Database(const std::string& path, bool create, int busy_timeout_ms = 2000);
+  ~Database();
+  Database(const Database&) = delete;
+  Database& operator=(const Database&) = delete;
+  Database(Database&& other) noexcept;
+  Database& operator=(Database&& other) noexcept;
+
+  // Runs one or more statements without results.
+  void exec(std::string_view sql);
+  Statement prepare(std::string_view sql);
+  std::int64_t last_insert_rowid() const;
+  int changes() const;
+
+  const std::string& path() const { return path_; }
+  sqlite3* handle() const { return db_; }
+
+  // Throws gestura::Error naming the file; `what` says which operation failed.
+  [[noreturn]] void fail(const std::string& what) const;
+
+ private:
+  sqlite3* db_ = nullptr;
+  std::string path_;
+};
+
+class Statement {
+ public:
+  Statement(Database& db, std::string_view sql);
+  ~Statement();
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+  Statement(Statement&& other) noexcept;
+  Statement& operator=(Statement&&) = delete;
+
+  // Bind parameters are 1-based like sqlite3_bind_*.
+  Statement& bind(int index, std::string_view text);
+  Statement& bind(int index, std::int64_t value);
+  Statement& bind(int index, const std::vector<std::uint8_t>& blob);
+  Statement& bind_null(int index);
+
+  // Advances to the next row; false when done. Throws on error.
+  bool step();
+  // Runs a statement that returns no rows.
+  void run();
+  void reset();
+
+  std::string text(int column) const;
+  std::int64_t integer(int column) const;
+  std::vector<std::uint8_t> blob(int column) const;
+  bool is_null(int column) const;
+
+ private:
+  Database* db_;
+  sqlite3_stmt* stmt_ = nullptr;
+};
+
+// Begins a transaction (IMMEDIATE, so a writer takes its lock up front and waits on the busy timeout
+// rather than failing half-way); rolls back on destruction unless commit() was called. Inside an open
+// transaction it becomes a savepoint, so an operation that is atomic on its own (adding one entry) is
+// also a part of a larger atomic one (an import).
+class Transaction {
+ public:
+  explicit Transaction(Database& db);
+  ~Transaction();
+  Transaction(const Transaction&) = delete;
+  Transaction& operator=(const Transaction&) = delete;
+  void commit();
+
+ private:
+  Database& db_;
+  bool nested_;
+  bool open_ = true;
+};
+
+}  // namespace gestura::sqlite

@@ -1,0 +1,39 @@
+#pragma once
+// Batch check of sign files (.jsonl lexicons with a `hamnosys` field, .sigml documents): parse
+// every sign and, once synthesis is connected, synthesize it. Backs `gestura check`.
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gestura/sign/hamnosys_model.hpp"
+#include "gestura/sign/hamnosys_parser.hpp"
+
+namespace gestura::sign {
+
+// The synthesis step. Returns nullopt when the sign was synthesized, else the reason it was not.
+// Nothing is connected yet: while synthesis_hook() is empty, check reports 0 synthesized signs.
+// The synthesis module connects itself with set_synthesis_hook().
+using SynthesisHook = std::function<std::optional<std::string>(const HamSign&)>;
+void set_synthesis_hook(SynthesisHook hook);
+const SynthesisHook& synthesis_hook();
+
+struct CheckReport {
+  int signs = 0;
+  int parsed = 0;
+  int synthesized = 0;
+  int failed = 0;                     // not parsed, or parsed but synthesis failed
+  std::vector<std::string> failures;  // one line per failing sign: "file:line: gloss: reason"
+  bool synthesis_connected = false;
+};
+
+// One object per line with a `hamnosys` string (Unicode) or, failing that, a `names` string.
+// Bad lines (not JSON, no notation) count as failed signs; the rest go on.
+CheckReport check_jsonl(std::string_view text, std::string_view file_name, const ParseOptions& options = {});
+// Malformed XML throws gestura::Error (file:line:col); a bad sign inside counts as failed.
+CheckReport check_sigml(std::string_view text, std::string_view file_name, const ParseOptions& options = {});
+// Picks the reader by extension (.jsonl / .sigml); throws gestura::Error for others.
+CheckReport check_file(const std::string& path, const ParseOptions& options = {});
+
+}  // namespace gestura::sign

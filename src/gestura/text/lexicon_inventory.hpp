@@ -1,0 +1,24 @@
+#pragma once
+// The lexicon as the translator's sign inventory: a word has a sign when some entry of the chosen
+// sign language lists it as an English keyword (or, failing that, has it as its gloss). Answers are
+// cached, as one sentence asks for the same few words repeatedly.
+#include <string>
+#include <unordered_map>
+
+#include "gestura/lexicon/layered_lexicon.hpp"
+#include "gestura/text/sign_inventory.hpp"
+
+namespace gestura {
+
+class LexiconInventory final : public SignInventory {
+ public:
+  LexiconInventory(LayeredLexicon& lexicon, std::string sign_language) : lexicon_(lexicon), language_(std::move(sign_language)) {}
+  std::optional<std::string> gloss_for(std::string_view word) override;
+
+ private:
+  LayeredLexicon& lexicon_;
+  std::string language_;
+  std::unordered_map<std::string, std::optional<std::string>> cache_;
+};
+
+}  // namespace gestura

@@ -1,0 +1,15 @@
+#include "gestura/text/sign_inventory.hpp"
+
+#include "gestura/text/utf8.hpp"
+
+namespace gestura {
+
+std::optional<std::string> OpenVocabulary::gloss_for(std::string_view word) { return utf8::upper(word); }
+
+std::optional<std::string> WordListInventory::gloss_for(std::string_view word) {
+  const auto it = words_.find(std::string(word));
+  if (it == words_.end()) return std::nullopt;
+  return it->second;
+}
+
+}  // namespace gestura

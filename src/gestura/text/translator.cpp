@@ -1,0 +1,636 @@
+#include "gestura/text/translator.hpp"
+
+#include <algorithm>
+#include <optional>
+
+#include "gestura/text/english_words.hpp"
+#include "gestura/text/lemmatizer.hpp"
+#include "gestura/text/tokenizer.hpp"
+#include "gestura/text/utf8.hpp"
+
+namespace gestura {
+
+namespace {
+
+// One source word after contraction expansion ("don't" gives two words sharing one span).
+struct Word {
+  TokenKind kind;
+  std::string text;   // as written (apostrophes folded)
+  std::string lower;
+  std::size_t begin, end;
+  bool capitalized;
+};
+
+enum class Role { plain, time, wh, negation_moved, negation_in_place, pause };
+
+struct Item {
+  GlossToken token;
+  Role role;
+};
+
+bool is_capitalized(std::string_view text) {
+  std::size_t pos = 0;
+  const char32_t first = utf8::next(text, pos);
+  return utf8::to_lower(first) != first;
+}
+
+std::string quoted(std::string_view word) {
+  std::string out;
+  out.reserve(word.size() + 2);
+  out.push_back('\'');
+  out.append(word);
+  out.push_back('\'');
+  return out;
+}
+
+GlossToken make(std::string gloss, GlossKind kind, const Word& from, std::string reason) {
+  return GlossToken{std::move(gloss), kind, from.begin, from.end, {}, std::move(reason)};
+}
+
+std::string digits_only(std::string_view number) {
+  std::string out;
+  for (char c : number)
+    if (c != ',') out.push_back(c);
+  return out;
+}
+
+std::optional<int> to_int(std::string_view text) {
+  if (text.empty() || text.size() > 9) return std::nullopt;
+  int v = 0;
+  for (char c : text) {
+    if (c < '0' || c > '9') return std::nullopt;
+    v = v * 10 + (c - '0');
+  }
+  return v;
+}
+
+std::vector<std::string_view> split(std::string_view text, char by) {
+  std::vector<std::string_view> parts;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= text.size(); ++i)
+    if (i == text.size() || text[i] == by) {
+      parts.push_back(text.substr(start, i - start));
+      start = i + 1;
+    }
+  return parts;
+}
+
+class SentenceTranslator {
+ public:
+  SentenceTranslator(std::vector<Word> words, bool question, SignInventory& inventory, std::vector<WordNote>& notes)
+      : w_(std::move(words)), question_(question), inventory_(inventory), notes_(notes) {
+    all_caps_ = std::none_of(w_.begin(), w_.end(), [](const Word& w) {
+      return w.kind == TokenKind::word && w.text != utf8::upper(w.text) && w.lower != w.text;
+    });
+    // A sentence in capitals and a mixed one both start with a capital; only mixed case tells names apart.
+    all_caps_ = all_caps_ && std::any_of(w_.begin(), w_.end(), [](const Word& w) { return w.kind == TokenKind::word && w.text.size() > 1; });
+  }
+
+  std::vector<Item> run() {
+    for (i_ = 0; i_ < w_.size();) step();
+    return std::move(items_);
+  }
+
+  bool has_wh() const { return has_wh_; }
+
+ private:
+  const Word* at(std::size_t k) const { return k < w_.size() ? &w_[k] : nullptr; }
+  bool word_is(std::size_t k, std::string_view lower) const {
+    return k < w_.size() && w_[k].kind == TokenKind::word && w_[k].lower == lower;
+  }
+
+  void note(const Word& w, std::string reason) { notes_.push_back(WordNote{w.text, w.begin, w.end, std::move(reason)}); }
+  void emit(GlossToken token, Role role) { items_.push_back(Item{std::move(token), role}); }
+  void drop(const Word& w, std::string_view why) { note(w, quoted(w.text) + " dropped: " + std::string(why)); }
+
+  void step() {
+    const Word& w = w_[i_];
+    switch (w.kind) {
+      case TokenKind::pause:
+        if (!items_.empty() && items_.back().role != Role::pause)
+          emit(make("PAUSE", GlossKind::pause, w, quoted(w.text) + " → pause"), Role::pause);
+        ++i_;
+        return;
+      case TokenKind::symbol:
+        if (money()) return;
+        note(w, quoted(w.text) + " dropped: symbol without a number");
+        ++i_;
+        return;
+      case TokenKind::number:
+        number();
+        return;
+      case TokenKind::word:
+      case TokenKind::sentence_end:
+        break;
+    }
+    if (phrase() || number_words() || month_date()) return;
+    word();
+  }
+
+  // Fixed phrases, longest match first.
+  bool phrase() {
+    for (const english::Phrase* p : english::phrases_starting_with(w_[i_].lower)) {
+      bool match = true;
+      for (std::size_t k = 0; k < p->words.size() && match; ++k) match = word_is(i_ + k, p->words[k]);
+      if (!match) continue;
+      const Word& first = w_[i_];
+      const Word& last = w_[i_ + p->words.size() - 1];
+      std::string phrase_text;
+      for (std::size_t k = 0; k < p->words.size(); ++k) phrase_text += (k ? " " : "") + w_[i_ + k].lower;
+      std::string glosses;
+      for (auto g : p->glosses) {
+        if (!glosses.empty()) glosses.push_back(' ');
+        glosses.append(g);
+      }
+      const std::string reason = quoted(phrase_text) + " → " + glosses + ": fixed phrase";
+      const Role role = p->role == english::PhraseRole::time  ? Role::time
+                        : p->role == english::PhraseRole::wh  ? Role::wh
+                        : p->role == english::PhraseRole::negation ? Role::negation_in_place
+                                                                   : Role::plain;
+      if (role == Role::wh) has_wh_ = true;
+      for (auto g : p->glosses) {
+        GlossToken t{std::string(g), GlossKind::sign, first.begin, last.end, {}, reason};
+        emit(std::move(t), role);
+      }
+      for (std::size_t k = 0; k < p->words.size(); ++k) note(w_[i_ + k], reason);
+      i_ += p->words.size();
+      return true;
+    }
+    return false;
+  }
+
+  // "$5" → 5 DOLLAR, "$5.50" → 5 DOLLAR 50 CENT.
+  bool money() {
+    const Word& sym = w_[i_];
+    std::string_view unit = sym.text == "$" ? "DOLLAR" : sym.text == "€" ? "EURO" : sym.text == "£" ? "POUND" : "";
+    const Word* amount = at(i_ + 1);
+    if (unit.empty() || !amount || amount->kind != TokenKind::number) return false;
+    const std::string digits = digits_only(amount->text);
+    const auto parts = split(digits, '.');
+    const std::string reason = quoted(sym.text + amount->text) + " → money: amount then " + std::string(unit);
+    Word span = *amount;
+    span.begin = sym.begin;
+    emit(make(std::string(parts[0]), GlossKind::number, span, reason), Role::plain);
+    emit(make(std::string(unit), GlossKind::sign, span, reason), Role::plain);
+    if (parts.size() == 2 && to_int(parts[1]).value_or(0) > 0) {
+      emit(make(std::to_string(*to_int(parts[1])), GlossKind::number, span, reason), Role::plain);
+      emit(make("CENT", GlossKind::sign, span, reason), Role::plain);
+    }
+    note(sym, reason);
+    note(*amount, reason);
+    i_ += 2;
+    return true;
+  }
+
+  // The time of day a following "am"/"pm" adds, if any; consumes it.
+  void day_part(int hour) {
+    const Word* next = at(i_);
+    if (!next || next->kind != TokenKind::word) return;
+    const std::string& l = next->lower;
+    const bool am = l == "am" || l == "a.m." || l == "a.m";
+    const bool pm = l == "pm" || l == "p.m." || l == "p.m";
+    if (!am && !pm) return;
+    const char* part = am ? "MORNING" : hour >= 6 && hour != 12 ? "NIGHT" : "AFTERNOON";
+    const std::string reason = quoted(next->text) + " → " + part + ": time of day";
+    emit(make(part, GlossKind::sign, *next, reason), Role::time);
+    note(*next, reason);
+    ++i_;
+  }
+
+  void emit_date(int month_number, int day, std::optional<int> year, const Word& span, const std::string& reason) {
+    const auto m = english::month(month_number);
+    GlossToken fs = make("FS-" + std::string(m->letters), GlossKind::fingerspell, span, reason);
+    for (char c : m->letters) fs.letters.emplace_back(1, c);
+    emit(std::move(fs), Role::time);
+    emit(make(std::to_string(day), GlossKind::number, span, reason), Role::time);
+    if (year) emit(make(std::to_string(*year), GlossKind::number, span, reason), Role::time);
+  }
+
+  void number() {
+    const Word& w = w_[i_];
+    ++i_;
+    const std::string& t = w.text;
+    // 3:30 → TIME 3 30
+    if (const auto colon = split(t, ':'); colon.size() == 2 && to_int(colon[0]) && to_int(colon[1])) {
+      const std::string reason = quoted(t) + " → TIME hour minutes: clock time";
+      emit(make("TIME", GlossKind::sign, w, reason), Role::time);
+      emit(make(std::to_string(*to_int(colon[0])), GlossKind::number, w, reason), Role::time);
+      if (*to_int(colon[1]) != 0) emit(make(std::string(colon[1]), GlossKind::number, w, reason), Role::time);
+      note(w, reason);
+      day_part(*to_int(colon[0]));
+      return;
+    }
+    // 3/14/2024 (month/day/year, US order) and 2024-03-14 (ISO) → month fingerspelled, day, year
+    const auto slash = split(t, '/');
+    const auto dash = split(t, '-');
+    std::optional<int> m, d, y;
+    if (slash.size() >= 2 && slash.size() <= 3) {
+      m = to_int(slash[0]);
+      d = to_int(slash[1]);
+      if (slash.size() == 3) y = to_int(slash[2]);
+    } else if (dash.size() == 3 && dash[0].size() == 4) {
+      y = to_int(dash[0]);
+      m = to_int(dash[1]);
+      d = to_int(dash[2]);
+    }
+    if (m && d && *m >= 1 && *m <= 12 && *d >= 1 && *d <= 31) {
+      const std::string reason = quoted(t) + " → month (fingerspelled) day" + (y ? " year" : "") + ": date";
+      emit_date(*m, *d, y, w, reason);
+      note(w, reason);
+      return;
+    }
+    // 50% → 50 PERCENT
+    if (const Word* next = at(i_); next && next->kind == TokenKind::symbol && next->text == "%") {
+      const std::string reason = quoted(t + "%") + " → number PERCENT";
+      emit(make(digits_only(t), GlossKind::number, w, reason), Role::plain);
+      emit(make("PERCENT", GlossKind::sign, *next, reason), Role::plain);
+      note(w, reason);
+      note(*next, reason);
+      ++i_;
+      return;
+    }
+    const std::string plain = digits_only(t);
+    const bool ordinal = !plain.empty() && !utf8::is_digit(static_cast<unsigned char>(plain.back()));
+    // A bare hour before am/pm ("3pm", "3 p.m.") is a clock time too.
+    if (const Word* next = at(i_); !ordinal && next && next->kind == TokenKind::word &&
+                                   (next->lower == "am" || next->lower == "pm" || next->lower == "a.m." ||
+                                    next->lower == "p.m." || next->lower == "o'clock") &&
+                                   to_int(plain) && *to_int(plain) <= 12) {
+      const std::string reason = quoted(t) + " → TIME hour: clock time";
+      emit(make("TIME", GlossKind::sign, w, reason), Role::time);
+      emit(make(plain, GlossKind::number, w, reason), Role::time);
+      note(w, reason);
+      if (next->lower == "o'clock") {
+        drop(*next, "the clock time is already signed");
+        ++i_;
+      } else {
+        day_part(*to_int(plain));
+      }
+      return;
+    }
+    // A year after "in"/"since" ("in 2020") is a time expression and opens the sentence.
+    const bool year = to_int(plain) && *to_int(plain) >= 1000 && *to_int(plain) <= 2199 && i_ >= 2 &&
+                      (word_is(i_ - 2, "in") || word_is(i_ - 2, "since"));
+    std::string gloss = plain;
+    std::transform(gloss.begin(), gloss.end(), gloss.begin(),
+                   [](unsigned char c) { return static_cast<char>(c >= 'a' && c <= 'z' ? c - 32 : c); });
+    const std::string reason = quoted(t) + " → " + gloss + (ordinal ? ": ordinal number" : year ? ": year" : ": number");
+    emit(make(gloss, GlossKind::number, w, reason), year ? Role::time : Role::plain);
+    note(w, reason);
+  }
+
+  // "twenty five" → 25, "two hundred" → 200, "twenty-one" → 21.
+  bool number_words() {
+    long long total = 0, current = 0;
+    std::size_t k = i_;
+    bool any = false;
+    while (k < w_.size() && w_[k].kind == TokenKind::word) {
+      bool part_ok = true;
+      for (auto part : split(w_[k].lower, '-')) {
+        const auto v = english::number_word(part);
+        if (!v) {
+          part_ok = false;
+          break;
+        }
+        if (*v == 100) current = (current ? current : 1) * 100;
+        else if (*v >= 1000) {
+          total += (current ? current : 1) * *v;
+          current = 0;
+        } else current += *v;
+      }
+      if (!part_ok) break;
+      any = true;
+      ++k;
+      if (word_is(k, "and") && k + 1 < w_.size() && english::number_word(w_[k + 1].lower)) ++k;
+    }
+    if (!any) return false;
+    // "one" alone before a non-number is often a pronoun ("the red one"); still a number sign in ASL.
+    Word span = w_[i_];
+    span.end = w_[k - 1].end;
+    const long long value = total + current;
+    std::string phrase_text;
+    for (std::size_t j = i_; j < k; ++j) phrase_text += (j > i_ ? " " : "") + w_[j].text;
+    const std::string reason = quoted(phrase_text) + " → " + std::to_string(value) + ": number word";
+    emit(make(std::to_string(value), GlossKind::number, span, reason), Role::plain);
+    for (std::size_t j = i_; j < k; ++j) note(w_[j], reason);
+    i_ = k;
+    return true;
+  }
+
+  // "March 14", "March 14, 2024", "14 March" → month fingerspelled, day (, year).
+  bool month_date() {
+    const Word& w = w_[i_];
+    const auto m = english::month(w.lower);
+    if (!m) return false;
+    const Word* day = at(i_ + 1);
+    const auto day_value = day && day->kind == TokenKind::number ? to_int(digits_only(day->text).substr(
+                                                                       0, std::min<std::size_t>(2, day->text.size())))
+                                                                 : std::nullopt;
+    const bool adjacent_number = day_value && *day_value >= 1 && *day_value <= 31;
+    if (!adjacent_number && (w.lower == "may" || w.lower == "march" || !w.capitalized)) return false;
+    if (!adjacent_number) {
+      const std::string reason = quoted(w.text) + " → FS-" + std::string(m->letters) + ": month, fingerspelled";
+      GlossToken fs = make("FS-" + std::string(m->letters), GlossKind::fingerspell, w, reason);
+      for (char c : m->letters) fs.letters.emplace_back(1, c);
+      emit(std::move(fs), Role::time);
+      note(w, reason);
+      ++i_;
+      return true;
+    }
+    std::optional<int> year;
+    std::size_t k = i_ + 2;
+    if (k < w_.size() && w_[k].kind == TokenKind::pause && w_[k].text == ",") ++k;
+    if (k < w_.size() && w_[k].kind == TokenKind::number && w_[k].text.size() == 4 && to_int(w_[k].text))
+      year = to_int(w_[k].text);
+    else
+      k = i_ + 2;
+    if (year) ++k;
+    Word span = w;
+    span.end = w_[k - 1].end;
+    const std::string reason =
+        quoted(w.text + " " + day->text + (year ? " " + std::to_string(*year) : "")) + " → month (fingerspelled) day" +
+        (year ? " year" : "") + ": date";
+    emit_date(m->number, *day_value, year, span, reason);
+    for (std::size_t j = i_; j < k; ++j) note(w_[j], reason);
+    i_ = k;
+    return true;
+  }
+
+  bool sentence_initial() const {
+    for (std::size_t k = 0; k < i_; ++k)
+      if (w_[k].kind == TokenKind::word || w_[k].kind == TokenKind::number) return false;
+    return true;
+  }
+
+  // Do-support: "do not", and an auxiliary "do" opening a question or following its wh-word.
+  bool is_do_support() const {
+    if (!english::is_auxiliary_do(w_[i_].lower)) return false;
+    if (word_is(i_ + 1, "not")) return true;
+    if (!question_) return false;
+    if (sentence_initial()) return true;
+    // "where do you live", "how many dogs do you have": do between the wh-phrase and the subject.
+    const Word* next = at(i_ + 1);
+    return (next && next->kind == TokenKind::word && english::pronoun_gloss(next->lower)) ||
+           (i_ > 0 && w_[i_ - 1].kind == TokenKind::word && english::is_wh_word(w_[i_ - 1].lower));
+  }
+
+  bool next_is_content_word() const {
+    const Word* next = at(i_ + 1);
+    if (!next || next->kind != TokenKind::word) return false;
+    return english::dropped(next->lower) == english::DropReason::none && !english::pronoun_gloss(next->lower) &&
+           !english::time_gloss(next->lower) && !english::is_auxiliary(next->lower) && next->lower != "not";
+  }
+
+  void fingerspell(const Word& w, std::string why) {
+    GlossToken t = make("", GlossKind::fingerspell, w, "");
+    std::string name;
+    bool outside_alphabet = false;
+    for (std::size_t pos = 0; pos < w.text.size();) {
+      const char32_t cp = utf8::next(w.text, pos);
+      if (!utf8::is_letter(cp)) {
+        if (cp == '-') name.push_back('-');
+        continue;
+      }
+      const char32_t letter = utf8::to_upper(utf8::strip_accent(cp));
+      std::string spelled;
+      utf8::append(spelled, letter);
+      outside_alphabet |= letter < 'A' || letter > 'Z';
+      name += spelled;
+      t.letters.push_back(std::move(spelled));
+    }
+    t.gloss = "FS-" + name;
+    t.reason = quoted(w.text) + " fingerspelled: " + why;
+    if (outside_alphabet) t.reason += " (has letters outside the ASL manual alphabet)";
+    note(w, t.reason);
+    emit(std::move(t), Role::plain);
+  }
+
+  void word() {
+    const Word& w = w_[i_];
+    const std::string& l = w.lower;
+    if (is_do_support()) {
+      drop(w, "do-support (ASL has no auxiliary 'do')");
+      ++i_;
+      return;
+    }
+    if (l == "not") {
+      const std::string reason = "'not' → NOT: negation, moved after the verb phrase";
+      note(w, reason);
+      emit(make("NOT", GlossKind::sign, w, reason), Role::negation_moved);
+      ++i_;
+      return;
+    }
+    if (l == "can't") {
+      const std::string reason = quoted(w.text) + " → CAN'T: negative modal, moved after the verb phrase";
+      note(w, reason);
+      emit(make("CAN'T", GlossKind::sign, w, reason), Role::negation_moved);
+      ++i_;
+      return;
+    }
+    if (l == "never") {
+      const std::string reason = "'never' → NEVER: negation, in place";
+      note(w, reason);
+      emit(make("NEVER", GlossKind::sign, w, reason), Role::negation_in_place);
+      ++i_;
+      return;
+    }
+    if (const auto why = english::dropped(l); why != english::DropReason::none) {
+      drop(w, english::describe(why));
+      ++i_;
+      return;
+    }
+    if (english::is_wh_word(l) && (question_ || sentence_initial())) {
+      has_wh_ = true;
+      const std::string gloss = utf8::upper(l);
+      const std::string reason = quoted(w.text) + " → " + gloss + ": wh-word, moved to the end";
+      note(w, reason);
+      emit(make(gloss, GlossKind::sign, w, reason), Role::wh);
+      ++i_;
+      return;
+    }
+    if (l == "her") {
+      const bool possessive = next_is_content_word();
+      const std::string gloss = possessive ? "POSS-3" : "IX-3";
+      const std::string reason = "'her' → " + gloss + (possessive ? ": possessive pronoun" : ": pronoun (pointing)");
+      note(w, reason);
+      emit(make(gloss, GlossKind::sign, w, reason), Role::plain);
+      ++i_;
+      return;
+    }
+    if (const auto pronoun = english::pronoun_gloss(l)) {
+      const std::string reason = quoted(w.text) + " → " + std::string(*pronoun) + ": pronoun (pointing)";
+      note(w, reason);
+      emit(make(std::string(*pronoun), GlossKind::sign, w, reason), Role::plain);
+      ++i_;
+      return;
+    }
+    if (const auto time = english::time_gloss(l)) {
+      const std::string reason = quoted(w.text) + " → " + std::string(*time) + ": time expression, moved to the front";
+      note(w, reason);
+      emit(make(std::string(*time), GlossKind::sign, w, reason), Role::time);
+      ++i_;
+      return;
+    }
+    ++i_;
+    const bool looks_like_name = w.capitalized && !all_caps_ && l != "i" && !sentence_initial_word(w);
+    if (looks_like_name) {
+      if (!inventory_.open_vocabulary())
+        if (const auto gloss = inventory_.gloss_for(l)) return sign(w, *gloss, quoted(w.text) + " → " + *gloss);
+      return fingerspell(w, "name (capitalized)");
+    }
+    const auto candidates = lemma_candidates(l);
+    for (const LemmaCandidate& c : candidates)
+      if (const auto gloss = inventory_.gloss_for(c.lemma))
+        return sign(w, *gloss, quoted(w.text) + " → " + *gloss + (c.rule.empty() ? "" : ": " + std::string(c.rule)));
+    for (const LemmaCandidate& c : candidates)
+      if (const auto other = english::synonym(c.lemma))
+        if (const auto gloss = inventory_.gloss_for(*other))
+          return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": synonym " + quoted(*other));
+    fingerspell(w, "no sign in the lexicon");
+  }
+
+  bool sentence_initial_word(const Word& w) const { return &w == first_word(); }
+  const Word* first_word() const {
+    for (const Word& w : w_)
+      if (w.kind == TokenKind::word || w.kind == TokenKind::number) return &w;
+    return nullptr;
+  }
+
+  void sign(const Word& w, const std::string& gloss, std::string reason) {
+    note(w, reason);
+    emit(make(gloss, GlossKind::sign, w, std::move(reason)), Role::plain);
+  }
+
+  std::vector<Word> w_;
+  bool question_;
+  SignInventory& inventory_;
+  std::vector<WordNote>& notes_;
+  std::vector<Item> items_;
+  std::size_t i_ = 0;
+  bool all_caps_ = false;
+  bool has_wh_ = false;
+};
+
+// Words of one sentence, contractions expanded.
+std::vector<Word> words_of(const std::vector<Token>& tokens, std::size_t from, std::size_t to) {
+  std::vector<Word> out;
+  for (std::size_t k = from; k < to; ++k) {
+    const Token& t = tokens[k];
+    const bool word = t.kind == TokenKind::word;
+    const std::string lower = word ? utf8::lower(t.text) : t.text;
+    const bool capital = word && is_capitalized(t.text);
+    if (word)
+      if (const auto parts = english::expand_contraction(lower)) {
+        for (std::size_t p = 0; p < parts->size(); ++p)
+          out.push_back(Word{t.kind, p == 0 ? t.text : (*parts)[p], (*parts)[p], t.begin, t.end, capital && p == 0});
+        continue;
+      }
+    out.push_back(Word{t.kind, t.text, lower, t.begin, t.end, capital});
+  }
+  return out;
+}
+
+// Reorders one clause: time expressions, the rest, moved negation, wh-words. Returns where the
+// negated verb phrase starts in the reordered clause (or npos).
+std::size_t reorder_clause(std::vector<Item>& clause, bool wh_question) {
+  std::size_t negation_start = std::string::npos;
+  std::vector<Item> time, rest, negation, wh;
+  bool negation_seen = false;
+  for (Item& item : clause) {
+    if (item.role == Role::time) time.push_back(std::move(item));
+    else if (item.role == Role::wh && wh_question) wh.push_back(std::move(item));
+    else if (item.role == Role::negation_moved) {
+      if (!negation_seen) negation_start = rest.size();
+      negation_seen = true;
+      negation.push_back(std::move(item));
+    } else rest.push_back(std::move(item));
+  }
+  // In "why don't you like…" the subject follows the negation; the headshake covers the verb phrase.
+  const auto is_subject = [](const Item& item) {
+    return item.token.gloss.rfind("IX-", 0) == 0 || item.token.gloss == "WE";
+  };
+  if (negation_seen && negation_start + 1 < rest.size() && is_subject(rest[negation_start])) ++negation_start;
+  clause.clear();
+  for (auto* part : {&time, &rest, &negation, &wh})
+    for (Item& item : *part) clause.push_back(std::move(item));
+  return negation_seen ? time.size() + negation_start : std::string::npos;
+}
+
+}  // namespace
+
+Translation translate_to_gloss(std::string_view english, SignInventory& inventory) {
+  Translation out;
+  const std::vector<Token> tokens = tokenize(english);
+  std::size_t start = 0;
+  while (start < tokens.size()) {
+    std::size_t end = start;
+    while (end < tokens.size() && tokens[end].kind != TokenKind::sentence_end) ++end;
+    const std::string_view terminator = end < tokens.size() ? std::string_view(tokens[end].text) : "";
+    std::vector<Word> words = words_of(tokens, start, end);
+    const bool question_mark = terminator.find('?') != std::string_view::npos;
+    const bool aux_question = words.size() > 1 && words[0].kind == TokenKind::word &&
+                              (english::is_auxiliary(words[0].lower) || english::is_wh_word(words[0].lower)) &&
+                              words[1].kind == TokenKind::word &&
+                              (english::pronoun_gloss(words[1].lower) || english::is_auxiliary(words[1].lower));
+    const bool question = question_mark || aux_question;
+    SentenceTranslator translator(std::move(words), question, inventory, out.notes);
+    std::vector<Item> items = translator.run();
+    while (!items.empty() && items.back().role == Role::pause) items.pop_back();
+
+    Sentence sentence;
+    sentence.type = question ? (translator.has_wh() ? SentenceType::wh_question : SentenceType::yes_no_question)
+                    : terminator.find('!') != std::string_view::npos ? SentenceType::exclamation
+                                                                    : SentenceType::statement;
+    sentence.begin = start < tokens.size() ? tokens[start].begin : english.size();
+    sentence.end = end < tokens.size() ? tokens[end].end : tokens[end - 1].end;
+
+    if (!items.empty()) {
+      if (!out.glosses.empty()) {
+        const std::size_t at = tokens[start - 1].begin;
+        out.glosses.push_back(GlossToken{"PAUSE", GlossKind::pause, at, tokens[start - 1].end, {}, "sentence boundary"});
+      }
+      sentence.first = out.glosses.size();
+      std::size_t clause_start = 0;
+      for (std::size_t k = 0; k <= items.size(); ++k) {
+        if (k < items.size() && items[k].role != Role::pause) continue;
+        std::vector<Item> clause(std::make_move_iterator(items.begin() + static_cast<std::ptrdiff_t>(clause_start)),
+                                 std::make_move_iterator(items.begin() + static_cast<std::ptrdiff_t>(k)));
+        const std::size_t base = out.glosses.size();
+        const std::size_t negated_from = reorder_clause(clause, sentence.type == SentenceType::wh_question);
+        std::size_t negation_end = base;
+        std::optional<std::size_t> in_place;
+        for (std::size_t c = 0; c < clause.size(); ++c) {
+          if (clause[c].role == Role::negation_moved) negation_end = base + c + 1;
+          if (clause[c].role == Role::negation_in_place && !in_place) in_place = base + c;
+          out.glosses.push_back(std::move(clause[c].token));
+        }
+        if (negated_from != std::string::npos) {
+          out.markers.push_back(Marker{MarkerKind::negation, base + negated_from, negation_end});
+          sentence.negated = true;
+        } else if (in_place) {
+          // NEVER / DON'T-KNOW: the headshake runs from the negative sign to the end of the clause,
+          // stopping before a final wh-word.
+          std::size_t last = out.glosses.size();
+          while (last > *in_place + 1 && clause[last - 1 - base].role == Role::wh) --last;
+          out.markers.push_back(Marker{MarkerKind::negation, *in_place, last});
+          sentence.negated = true;
+        }
+        if (k < items.size()) out.glosses.push_back(std::move(items[k].token));
+        clause_start = k + 1;
+      }
+      sentence.last = out.glosses.size();
+      const auto kind = sentence.type == SentenceType::yes_no_question ? std::optional(MarkerKind::yes_no_question)
+                        : sentence.type == SentenceType::wh_question   ? std::optional(MarkerKind::wh_question)
+                        : sentence.type == SentenceType::exclamation   ? std::optional(MarkerKind::exclamation)
+                                                                       : std::nullopt;
+      if (kind) out.markers.push_back(Marker{*kind, sentence.first, sentence.last});
+      out.sentences.push_back(sentence);
+    }
+    start = end + 1;
+  }
+  std::stable_sort(out.notes.begin(), out.notes.end(),
+                   [](const WordNote& a, const WordNote& b) { return a.begin < b.begin; });
+  return out;
+}
+
+}  // namespace gestura

@@ -1,0 +1,104 @@
+// `gestura check` and the library behind it: counts, one line per failing sign, robustness to bad
+// lines, and the synthesis hook (S is counted only when something is connected).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "gestura/sign/sign_check.hpp"
+#include "shared_data.hpp"
+
+namespace {
+
+using namespace gestura::sign;
+
+struct CliResult {
+  std::string out;
+  int status = -1;
+};
+
+CliResult run_cli(const std::string& args) {
+  const std::string command = std::string(GESTURA_CLI) + " " + args + " 2>&1";
+  CliResult r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string temp_file(const std::string& name, const std::string& content) {
+  const auto path = std::filesystem::temp_directory_path() / ("gestura_check_" + name);
+  std::ofstream(path, std::ios::binary) << content;
+  return path.string();
+}
+
+TEST(SignCheck, WholeLexiconFromTheCli) {
+  const CliResult r = run_cli("check " + gestura::test::shared_data() + "/hamnosys/signs.jsonl");
+  EXPECT_NE(r.out.find("4070 signs: 4070 parsed, 0 synthesized, 0 failed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("synthesis is not connected"), std::string::npos);
+  EXPECT_EQ(r.status, 0);
+}
+
+TEST(SignCheck, BadLinesAreReportedAndTheRestChecked) {
+  const std::string path = temp_file("bad.jsonl",
+                                     "{\"gloss\":\"A\",\"hamnosys\":\"\xee\x80\x81\xee\x80\xa0\"}\n"
+                                     "not json at all\n"
+                                     "{\"gloss\":\"B\"}\n"
+                                     "\n"
+                                     "{\"gloss\":\"C\",\"names\":\"hamflathand,hamparend\"}\n"
+                                     "\x01\x02\xff\n");
+  const CliResult r = run_cli("check " + path);
+  EXPECT_NE(r.out.find("bad.jsonl:2: not a JSON object"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bad.jsonl:3: B: no `hamnosys`"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bad.jsonl:5: C: symbol 1: hamparend without a matching opening bracket"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("5 signs: 1 parsed, 0 synthesized, 4 failed"), std::string::npos) << r.out;
+  EXPECT_EQ(r.status, 1);
+}
+
+TEST(SignCheck, MalformedSigmlAndBadArgumentsFailCleanly) {
+  const std::string path = temp_file("broken.sigml", "<sigml>\n<hns_sign gloss=\"x\">\n<hamnosys_manual>\n");
+  CliResult r = run_cli("check " + path);
+  EXPECT_NE(r.out.find("broken.sigml:3:"), std::string::npos) << r.out;
+  EXPECT_EQ(r.status, 1);
+  r = run_cli("check");
+  EXPECT_NE(r.out.find("needs a FILE"), std::string::npos);
+  EXPECT_EQ(r.status, 1);
+  r = run_cli("check --bogus x.sigml");
+  EXPECT_NE(r.out.find("unknown flag --bogus"), std::string::npos);
+  r = run_cli("check " + temp_file("x.txt", "hello"));
+  EXPECT_NE(r.out.find("expected .jsonl or .sigml"), std::string::npos);
+}
+
+TEST(SignCheck, SynthesisHookCountsWhenConnected) {
+  const std::string text =
+      "{\"gloss\":\"one\",\"names\":\"hamflathand,hamextfingeru,hampalml\"}\n"
+      "{\"gloss\":\"two\",\"names\":\"hamsymmlr,hamfist,hamextfingero,hampalmd\"}\n";
+  CheckReport r = check_jsonl(text, "t.jsonl");
+  EXPECT_FALSE(r.synthesis_connected);
+  EXPECT_EQ(r.synthesized, 0);
+  // A stand-in synthesizer that handles only one-handed signs.
+  set_synthesis_hook([](const HamSign& s) -> std::optional<std::string> {
+    if (s.main().symmetry.kind != SymmetryKind::none) return "two-handed signs not supported";
+    return std::nullopt;
+  });
+  r = check_jsonl(text, "t.jsonl");
+  set_synthesis_hook({});
+  EXPECT_TRUE(r.synthesis_connected);
+  EXPECT_EQ(r.signs, 2);
+  EXPECT_EQ(r.parsed, 2);
+  EXPECT_EQ(r.synthesized, 1);
+  EXPECT_EQ(r.failed, 1);
+  ASSERT_EQ(r.failures.size(), 1u);
+  EXPECT_EQ(r.failures[0], "t.jsonl:2: two: synthesis failed: two-handed signs not supported");
+}
+
+}  // namespace

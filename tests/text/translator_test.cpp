@@ -1,0 +1,223 @@
+// Expected glosses are worked out by hand from ASL grammar and the conventions in
+// docs/text-to-gloss.md (IX-1/IX-2/IX-3 pointing, time first, NOT and CAN'T after the verb phrase,
+// wh-word last, numbers as digits, names and unknown words fingerspelled as FS-WORD).
+#include "gestura/text/translator.hpp"
+
+#include <gtest/gtest.h>
+
+#include "gestura/core/error.hpp"
+
+using namespace gestura;
+
+namespace {
+
+// A small ASL vocabulary: English keyword → gloss, as a lexicon would answer.
+WordListInventory vocabulary() {
+  WordListInventory v;
+  for (const char* word :
+       {"go", "store", "live", "like", "coffee", "name", "have", "book", "eat", "meat", "swim", "come", "child",
+        "play", "nice", "dollar", "cent", "help", "want", "drink", "water", "mother", "father", "work", "school",
+        "deaf", "understand", "sign", "language", "happy", "cat", "dog", "car", "buy", "new", "see", "movie",
+        "study", "stop", "watch", "box", "baby", "will", "can", "with", "and", "old", "year", "for", "win", "class",
+        "start", "birthday", "born", "home", "cold", "meet", "wake", "up", "teacher", "percent"})
+    v.add(word, [&] {
+      std::string g(word);
+      for (char& c : g) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      return g;
+    }());
+  return v;
+}
+
+Translation gloss(std::string_view text) {
+  WordListInventory v = vocabulary();
+  return translate_to_gloss(text, v);
+}
+
+struct Example {
+  const char* english;
+  const char* asl;
+};
+
+class TranslatorExamples : public ::testing::TestWithParam<Example> {};
+
+}  // namespace
+
+TEST_P(TranslatorExamples, GivesTheHandGlossedSequence) {
+  EXPECT_EQ(gloss(GetParam().english).text(), GetParam().asl) << GetParam().english;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Sentences, TranslatorExamples,
+    ::testing::Values(
+        // time first, article and preposition dropped, irregular past
+        Example{"I went to the store yesterday.", "YESTERDAY IX-1 GO STORE"},
+        // wh-word last, do-support dropped
+        Example{"Where do you live?", "IX-2 LIVE WHERE"},
+        Example{"What is your name?", "POSS-2 NAME WHAT"},
+        Example{"Why didn't you come yesterday?", "YESTERDAY IX-2 COME NOT WHY"},
+        Example{"How many dogs do you have?", "DOG IX-2 HAVE HOW-MANY"},
+        Example{"How are you?", "HOW IX-2"},
+        // negation after the verb phrase
+        Example{"I don't like coffee.", "IX-1 LIKE COFFEE NOT"},
+        Example{"She can't swim.", "IX-3 SWIM CAN'T"},
+        Example{"He doesn't understand sign language.", "IX-3 UNDERSTAND SIGN LANGUAGE NOT"},
+        Example{"I never eat meat.", "IX-1 NEVER EAT MEAT"},
+        Example{"I don't know.", "IX-1 DON'T-KNOW"},
+        // yes/no questions keep their order
+        Example{"Do you like coffee?", "IX-2 LIKE COFFEE"},
+        Example{"Can you help me?", "CAN IX-2 HELP IX-1"},
+        Example{"I am deaf. Are you deaf?", "IX-1 DEAF / IX-2 DEAF"},
+        // names and unknown words
+        Example{"My name is John.", "POSS-1 NAME FS-JOHN"},
+        Example{"I like zxqv.", "IX-1 LIKE FS-ZXQV"},
+        Example{"Mary and I watched a movie last night.", "LAST-NIGHT FS-MARY AND IX-1 WATCH MOVIE"},
+        // numbers, money, dates, times
+        Example{"I have $5.50.", "IX-1 HAVE 5 DOLLAR 50 CENT"},
+        Example{"I have three cats.", "IX-1 HAVE 3 CAT"},
+        Example{"We won 25 dollars.", "WE WIN 25 DOLLAR"},
+        Example{"She is twenty-five years old.", "IX-3 25 YEAR OLD"},
+        Example{"Class starts at 3:30.", "TIME 3 30 CLASS START"},
+        Example{"I wake up at 7am.", "TIME 7 MORNING IX-1 WAKE UP"},
+        Example{"My birthday is March 14.", "FS-MARCH 14 POSS-1 BIRTHDAY"},
+        Example{"I was born on 3/14/1990.", "FS-MARCH 14 1990 IX-1 BORN"},
+        Example{"I bought a new car for $20,000.", "IX-1 BUY NEW CAR FOR 20000 DOLLAR"},
+        // contractions, lemmas, synonyms, pronouns
+        Example{"I'm happy!", "IX-1 HAPPY"},
+        Example{"The children are playing.", "CHILD PLAY"},
+        Example{"The babies studied.", "BABY STUDY"},
+        Example{"My mom stopped working.", "POSS-1 MOTHER STOP WORK"},
+        Example{"I saw her yesterday.", "YESTERDAY IX-1 SEE IX-3"},
+        Example{"Her dog is old.", "POSS-3 DOG OLD"},
+        Example{"I will see you tomorrow.", "TOMORROW IX-1 WILL SEE IX-2"},
+        Example{"Thank you!", "THANK-YOU"},
+        Example{"Nice to meet you!", "NICE MEET IX-2"},
+        Example{"Yesterday, I went home.", "YESTERDAY / IX-1 GO HOME"},
+        // typography: curly apostrophes and quotes, em dash, accented names
+        Example{"I don\u2019t like coffee \u2014 it\u2019s cold.", "IX-1 LIKE COFFEE NOT / IX-3 COLD"},
+        Example{"\u201cI met Jos\u00e9 in Z\u00fcrich.\u201d", "IX-1 MEET FS-JOSE FS-ZURICH"}));
+
+TEST(Translator, ReasonsExplainEachWord) {
+  const Translation t = gloss("I went to the store yesterday.");
+  ASSERT_EQ(t.glosses.size(), 4u);
+  EXPECT_EQ(t.glosses[2].reason, "'went' → GO: irregular past");
+  EXPECT_EQ(t.glosses[0].reason, "'yesterday' → YESTERDAY: time expression, moved to the front");
+  ASSERT_EQ(t.notes.size(), 6u);  // every source word, in text order
+  EXPECT_EQ(t.notes[2].word, "to");
+  EXPECT_EQ(t.notes[3].reason, "'the' dropped: article");
+  // Spans point back into the text.
+  const std::string text = "I went to the store yesterday.";
+  EXPECT_EQ(text.substr(t.glosses[3].begin, t.glosses[3].end - t.glosses[3].begin), "store");
+  EXPECT_EQ(t.glosses[3].kind, GlossKind::sign);
+}
+
+TEST(Translator, FingerspellingCarriesLetters) {
+  const Translation t = gloss("My name is Zoë.");
+  ASSERT_EQ(t.glosses.size(), 3u);
+  EXPECT_EQ(t.glosses[2].gloss, "FS-ZOE");
+  EXPECT_EQ(t.glosses[2].kind, GlossKind::fingerspell);
+  EXPECT_EQ(t.glosses[2].letters, (std::vector<std::string>{"Z", "O", "E"}));
+  EXPECT_NE(t.glosses[2].reason.find("name"), std::string::npos);
+
+  const Translation cyrillic = gloss("I met \u0418\u0432\u0430\u043d.");  // Иван
+  ASSERT_EQ(cyrillic.glosses.size(), 3u);
+  EXPECT_EQ(cyrillic.glosses[2].kind, GlossKind::fingerspell);
+  EXPECT_EQ(cyrillic.glosses[2].letters.size(), 4u);
+  EXPECT_NE(cyrillic.glosses[2].reason.find("outside the ASL manual alphabet"), std::string::npos);
+}
+
+TEST(Translator, NumbersAreNumberKind) {
+  const Translation t = gloss("I have $5.50.");
+  ASSERT_EQ(t.glosses.size(), 6u);
+  EXPECT_EQ(t.glosses[2].kind, GlossKind::number);
+  EXPECT_EQ(t.glosses[3].kind, GlossKind::sign);  // DOLLAR
+  EXPECT_EQ(t.glosses[4].kind, GlossKind::number);
+}
+
+TEST(Translator, SentenceTypesAndMarkerSpans) {
+  const Translation t = gloss("I am deaf. Are you deaf? Where do you live? I don't like coffee. Wow!");
+  // IX-1 DEAF / IX-2 DEAF / IX-2 LIVE WHERE / IX-1 LIKE COFFEE NOT / WOW
+  ASSERT_EQ(t.sentences.size(), 5u);
+  EXPECT_EQ(t.sentences[0].type, SentenceType::statement);
+  EXPECT_EQ(t.sentences[1].type, SentenceType::yes_no_question);
+  EXPECT_EQ(t.sentences[2].type, SentenceType::wh_question);
+  EXPECT_EQ(t.sentences[3].type, SentenceType::statement);
+  EXPECT_TRUE(t.sentences[3].negated);
+  EXPECT_EQ(t.sentences[4].type, SentenceType::exclamation);
+  EXPECT_EQ(t.text(), "IX-1 DEAF / IX-2 DEAF / IX-2 LIVE WHERE / IX-1 LIKE COFFEE NOT / FS-WOW");
+
+  auto marker = [&](MarkerKind kind) {
+    for (const Marker& m : t.markers)
+      if (m.kind == kind) return std::pair{m.first, m.last};
+    return std::pair<std::size_t, std::size_t>{0, 0};
+  };
+  EXPECT_EQ(marker(MarkerKind::yes_no_question), (std::pair<std::size_t, std::size_t>{3, 5}));
+  EXPECT_EQ(marker(MarkerKind::wh_question), (std::pair<std::size_t, std::size_t>{6, 9}));
+  EXPECT_EQ(marker(MarkerKind::negation), (std::pair<std::size_t, std::size_t>{11, 14}));  // LIKE COFFEE NOT
+  EXPECT_EQ(marker(MarkerKind::exclamation), (std::pair<std::size_t, std::size_t>{15, 16}));
+}
+
+TEST(Translator, NegatedWhQuestionMarksBoth) {
+  const Translation t = gloss("Why don't you like coffee?");
+  EXPECT_EQ(t.text(), "IX-2 LIKE COFFEE NOT WHY");
+  ASSERT_EQ(t.markers.size(), 2u);
+  EXPECT_EQ(t.markers[0].kind, MarkerKind::negation);
+  EXPECT_EQ(t.markers[0].first, 1u);
+  EXPECT_EQ(t.markers[0].last, 4u);
+  EXPECT_EQ(t.markers[1].kind, MarkerKind::wh_question);
+  EXPECT_EQ(t.markers[1].last, 5u);
+}
+
+TEST(Translator, OpenVocabularyUsesLemmasAndCapitalsForNames) {
+  OpenVocabulary open;
+  EXPECT_EQ(translate_to_gloss("Yesterday Sarah bought three books.", open).text(), "YESTERDAY FS-SARAH BUY 3 BOOK");
+  EXPECT_EQ(translate_to_gloss("The kids liked running.", open).text(), "KID LIKE RUN");
+}
+
+TEST(TranslatorInput, EmptyAndPunctuationOnly) {
+  EXPECT_TRUE(gloss("").glosses.empty());
+  EXPECT_TRUE(gloss("").sentences.empty());
+  const Translation t = gloss("  ?! ... ,, \u2014 \u201c\u201d ");
+  EXPECT_TRUE(t.glosses.empty());
+  EXPECT_TRUE(t.markers.empty());
+}
+
+TEST(TranslatorInput, InvalidUtf8IsAClearError) {
+  auto message = [](std::string_view text) -> std::string {
+    try {
+      gloss(text);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  EXPECT_EQ(message("caf\xC3"), "invalid UTF-8 at byte 3 (the text must be UTF-8)");  // truncated
+  EXPECT_EQ(message("ab \xC0\xAF"), "invalid UTF-8 at byte 3 (the text must be UTF-8)");  // overlong '/'
+  EXPECT_EQ(message("\xED\xA0\x80"), "invalid UTF-8 at byte 0 (the text must be UTF-8)");  // surrogate
+  EXPECT_EQ(message("ok \xFF"), "invalid UTF-8 at byte 3 (the text must be UTF-8)");
+}
+
+TEST(TranslatorInput, BinaryJunkNeverCrashes) {
+  std::string junk;
+  for (int i = 0; i < 4096; ++i) junk.push_back(static_cast<char>((i * 7919 + 13) % 256));
+  EXPECT_THROW(gloss(junk), Error);  // not UTF-8
+  // Valid UTF-8 that is no language: controls, NULs, emoji, symbols.
+  const std::string valid_junk("\x01\x02\0\x7f \xF0\x9F\x98\x80 \xC2\xA7\xC2\xB6 ### @@ 12abc", 27);
+  const Translation t = gloss(valid_junk);
+  for (const GlossToken& g : t.glosses) EXPECT_FALSE(g.gloss.empty());
+}
+
+TEST(TranslatorInput, OneMegabyteOfText) {
+  std::string text;
+  const std::string sentence = "I went to the store yesterday. ";
+  while (text.size() < (1u << 20)) text += sentence;
+  const std::size_t sentences = text.size() / sentence.size();
+  const Translation t = gloss(text);
+  // 4 glosses per sentence plus a pause between sentences.
+  EXPECT_EQ(t.glosses.size(), sentences * 5 - 1);
+  EXPECT_EQ(t.sentences.size(), sentences);
+  // One megabyte without any sentence end is one long sentence; still handled.
+  std::string run_on(1u << 20, 'a');
+  for (std::size_t i = 5; i < run_on.size(); i += 6) run_on[i] = ' ';
+  const Translation long_one = gloss(run_on);
+  EXPECT_EQ(long_one.glosses.size(), (1u << 20) / 6 + 1);
+}
