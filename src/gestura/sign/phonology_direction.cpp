@@ -134,8 +134,10 @@ PalmOrientation mirror_left_right(PalmOrientation palm) {
 vec3 palm_normal(vec3 finger, PalmOrientation palm) {
   const vec3 f = glm::normalize(finger);
   const vec3 reference = palm_reference_vector(palm);
-  // Already orthogonal: the notation means exactly this direction.
-  if (std::abs(glm::dot(reference, f)) < 1e-6f) return reference;
+  const vec3 projected = reference - glm::dot(reference, f) * f;
+  // Over the 26 × 8 notated combinations the projection is either exactly zero or at least 0.5
+  // long, so 0.2 separates "along the finger axis" cleanly.
+  if (glm::length(projected) >= 0.2f) return glm::normalize(projected);
   const vec3 carried = carry_from_out(f) * reference;
   // The carried vector is orthogonal up to rounding; re-project so the frame is exact.
   return glm::normalize(carried - glm::dot(carried, f) * f);

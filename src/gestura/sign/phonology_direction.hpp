@@ -36,13 +36,14 @@ std::optional<Direction> combine(Direction a, Direction b);
 // mirror-symmetric signs and for left-handed signers.
 Direction mirror_left_right(Direction direction);
 
-// The 8 HamNoSys palm orientations. They are RELATIVE to the extended-finger direction: each
-// names a direction in the frontal plane as the signer sees it (u = up, l = signer's left, ...)
-// for a hand whose fingers point away from the signer ("o"); for any other finger direction the
-// same palm direction is carried along by the shortest rotation from "o" to that direction.
-// So with fingers up, palm "d" faces away from the signer and palm "u" faces the signer; with
-// fingers pointing left, palm "l" faces the signer. Where the notated palm direction is already
-// orthogonal to the finger direction it is used unchanged.
+// The 8 HamNoSys palm orientations: directions in the frontal plane as the signer sees them
+// (u = up, l = the signer's left, ...). The palm normal for a finger direction f is the notated
+// direction projected orthogonally to f. When the notated direction lies along the finger axis
+// (fingers u with palm u or d, fingers l with palm l or r, ...) the projection vanishes and the
+// symbol is read RELATIVE to the finger direction: as it would be for fingers pointing away from
+// the signer ("o"), carried by the shortest rotation from "o" to f. So fingers up + palm "d" →
+// palm away from the signer, fingers up + palm "u" → palm toward the signer, fingers pointing
+// left + palm "l" → palm toward the signer.
 enum class PalmOrientation : std::uint8_t { U, UR, R, DR, D, DL, L, UL };
 inline constexpr std::size_t kPalmOrientationCount = 8;
 
@@ -68,8 +69,7 @@ struct HandFrame {
   quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
 };
 
-// From the notation: the finger axis equals direction_vector(finger) exactly; the palm is the
-// palm orientation carried with the finger direction as described above.
+// From the notation: the finger axis equals direction_vector(finger); the palm is palm_normal().
 HandFrame hand_frame(Direction finger, PalmOrientation palm, Hand hand);
 // From absolute vectors (e.g. fingerspelling data): finger is normalised; palm is made orthogonal
 // to it (Gram–Schmidt). Throws gestura::Error if either is not finite, zero, or they are parallel.
