@@ -116,6 +116,13 @@ TEST(PhonologyDirection, CombineAndMirror) {
   EXPECT_EQ(mirror_left_right(Direction::DI), Direction::DI);
   EXPECT_EQ(mirror_left_right(PalmOrientation::UL), PalmOrientation::UR);
   EXPECT_EQ(mirror_left_right(PalmOrientation::D), PalmOrientation::D);
+  EXPECT_EQ(palm_orientation_of(Direction::DL), PalmOrientation::DL);
+  EXPECT_EQ(palm_orientation_of(Direction::R), PalmOrientation::R);
+  EXPECT_EQ(palm_orientation_of(Direction::O), std::nullopt);
+  EXPECT_EQ(palm_orientation_of(Direction::UOL), std::nullopt);
+  int frontal = 0;
+  for (Direction d : all_directions()) frontal += palm_orientation_of(d).has_value();
+  EXPECT_EQ(frontal, 8);
   for (Direction d : all_directions()) {
     const vec3 v = direction_vector(d), m = direction_vector(mirror_left_right(d));
     expect_vec(m, {-v.x, v.y, v.z}, 1e-6f, std::string(to_string(d)));

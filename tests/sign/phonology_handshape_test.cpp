@@ -57,8 +57,8 @@ std::vector<std::string> codepoint_names() {
 
 TEST(PhonologyHandshape, EveryTableEntryAndModifierCombinationIsWithinAnatomicalLimits) {
   const ThumbModifier thumbs[] = {ThumbModifier::Default, ThumbModifier::Out, ThumbModifier::Across, ThumbModifier::Opposed};
-  const FingerBending bendings[] = {FingerBending::Straight, FingerBending::Bent,       FingerBending::Round,
-                                    FingerBending::Hooked,   FingerBending::DoubleBent, FingerBending::DoubleHooked};
+  const FingerBending bendings[] = {FingerBending::Bent,       FingerBending::Round,        FingerBending::Hooked,
+                                    FingerBending::DoubleBent, FingerBending::DoubleHooked, FingerBending::HalfBent};
   for (BasicHandshape shape : all_basic()) {
     for (ThumbModifier t : thumbs) {
       EXPECT_EQ(anatomical_violation(make_handshape(shape, t)), "") << to_string(shape) << " " << to_string(t);
@@ -201,6 +201,13 @@ TEST(PhonologyHandshape, NamesRoundTripAndHamNoSysSymbolNamesParse) {
   EXPECT_EQ(parse_basic_handshape("hamceeopen"), BasicHandshape::Cee12Open);
   EXPECT_EQ(parse_thumb_modifier("hamthumbopenmod"), ThumbModifier::Opposed);
   EXPECT_EQ(parse_finger_bending("hamfingerhookmod"), FingerBending::Hooked);
+  EXPECT_EQ(parse_finger_bending("hamfingerstraightmod"), FingerBending::Bent);  // the glyph is a base-bent finger
+  EXPECT_EQ(parse_finger_bending("hamfingerbendmod"), FingerBending::Round);
+  EXPECT_EQ(parse_finger_bending("dblhooked"), FingerBending::DoubleHooked);
+  for (std::size_t k = 0; k < kFingerBendingCount; ++k) {
+    const auto b = static_cast<FingerBending>(k);
+    EXPECT_EQ(parse_finger_bending(to_string(b)), b);
+  }
   EXPECT_EQ(parse_basic_handshape("hamfist2"), std::nullopt);
   EXPECT_EQ(parse_basic_handshape(""), std::nullopt);
   EXPECT_EQ(parse_thumb_modifier(""), std::nullopt);

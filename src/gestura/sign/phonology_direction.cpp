@@ -131,6 +131,10 @@ PalmOrientation mirror_left_right(PalmOrientation palm) {
   return kMirror[static_cast<std::size_t>(palm)];
 }
 
+std::optional<PalmOrientation> palm_orientation_of(Direction direction) {
+  return parse_palm_orientation(to_string(direction));
+}
+
 vec3 palm_normal(vec3 finger, PalmOrientation palm) {
   const vec3 f = glm::normalize(finger);
   const vec3 reference = palm_reference_vector(palm);

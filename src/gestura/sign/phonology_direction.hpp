@@ -12,7 +12,7 @@
 
 namespace gestura {
 
-// The 26 directions: 6 axes, 12 two-axis diagonals, 8 three-axis diagonals. The letter order in
+// The 26 directions (same order as the HamNoSys model's Direction): 6 axes, 12 two-axis diagonals, 8 three-axis diagonals. The letter order in
 // the names is HamNoSys's: vertical (u/d) first, then depth (o/i), then side (l/r).
 enum class Direction : std::uint8_t {
   U, D, L, R, O, I,
@@ -51,6 +51,9 @@ vec3 palm_reference_vector(PalmOrientation palm);  // the frontal-plane vector f
 std::string_view to_string(PalmOrientation palm);
 std::optional<PalmOrientation> parse_palm_orientation(std::string_view name);  // "ul", "hampalmul"
 PalmOrientation mirror_left_right(PalmOrientation palm);
+// The palm orientation a frontal-plane direction names (u, ur, r, dr, d, dl, l, ul); empty for
+// directions with a depth component, which HamNoSys palm symbols cannot express.
+std::optional<PalmOrientation> palm_orientation_of(Direction direction);
 
 enum class Hand : std::uint8_t { Right, Left };
 

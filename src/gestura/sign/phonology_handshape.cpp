@@ -78,9 +78,9 @@ constexpr Named kBasicNames[kBasicHandshapeCount] = {
 };
 constexpr Named kThumbNames[4] = {
     {"default", ""}, {"out", "hamthumboutmod"}, {"across", "hamthumbacrossmod"}, {"opposed", "hamthumbopenmod"}};
-constexpr Named kBendingNames[6] = {
-    {"straight", "hamfingerstraightmod"}, {"bent", "hamfingerbendmod"},   {"round", ""},
-    {"hooked", "hamfingerhookmod"},       {"doublebent", "hamdoublebent"}, {"doublehooked", "hamdoublehooked"}};
+constexpr Named kBendingNames[kFingerBendingCount] = {
+    {"bent", "hamfingerstraightmod"}, {"round", "hamfingerbendmod"},  {"hooked", "hamfingerhookmod"},
+    {"dblbent", "hamdoublebent"},     {"dblhooked", "hamdoublehooked"}, {"halfbent", ""}};
 constexpr std::string_view kAslNames[kAslHandshapeCount] = {
     "A", "B", "C", "D", "E", "F", "G", "I", "K", "L", "M", "N", "O", "R",
     "S", "T", "U", "V", "W", "X", "Y", "1", "3", "4", "5", "6", "7", "8"};
@@ -194,8 +194,6 @@ FingerSet selected_fingers(BasicHandshape shape) {
 
 FingerFlexion bending_flexion(FingerBending bending) {
   switch (bending) {
-    case FingerBending::Straight:
-      return kStraight;
     case FingerBending::Bent:
       return flex(80, 5, 0);
     case FingerBending::Round:
@@ -207,6 +205,8 @@ FingerFlexion bending_flexion(FingerBending bending) {
       return flex(60, 90, 15);
     case FingerBending::DoubleHooked:
       return flex(15, 105, 75);
+    case FingerBending::HalfBent:
+      return flex(45, 0, 0);
   }
   return kStraight;
 }

@@ -81,6 +81,7 @@ HandPosture mix(const HandPosture& a, const HandPosture& b, float s);
 // docs/sign-phonology.md): the fingers not taking part stay extended (pinch12 is the "F"/"OK"
 // form); the openings grow pinch12 (tips touch) < pinch12open (tips ~1.5 cm apart) < cee12 (C)
 // < cee12open (wide C).
+// Same order as the HamNoSys model's BasicHandshape.
 enum class BasicHandshape : std::uint8_t {
   Fist,
   Flat,
@@ -97,6 +98,7 @@ enum class BasicHandshape : std::uint8_t {
 };
 inline constexpr std::size_t kBasicHandshapeCount = 12;
 
+// Same order as the HamNoSys model's ThumbPosition (unspecified, out, across, open).
 enum class ThumbModifier : std::uint8_t {
   Default,  // the form's own thumb: alongside the index for fist/flat, across the fingers otherwise
   Out,      // hamthumboutmod: abducted in the palm plane, straight ("L", thumbs-up)
@@ -104,14 +106,18 @@ enum class ThumbModifier : std::uint8_t {
   Opposed,  // hamthumbopenmod: opposed to the finger pads without touching
 };
 
+// Same order as the HamNoSys model's FingerBending, so a static_cast maps one onto the other.
+// HamNoSys symbol names follow the glyphs: hamfingerstraightmod draws a finger bent at the base
+// joint only, hamfingerbendmod a finger curved at all joints. "Straight" is no bending at all.
 enum class FingerBending : std::uint8_t {
-  Straight,      // hamfingerstraightmod
-  Bent,          // hamfingerbendmod: flexed at the knuckle (MCP) only, fingers straight
-  Round,         // all three joints moderately flexed: a smooth arc
-  Hooked,        // hamfingerhookmod: MCP straight, PIP and DIP flexed (claw)
-  DoubleBent,    // hamdoublebent: MCP and PIP flexed, DIP nearly straight
-  DoubleHooked,  // hamdoublehooked: tight claw, PIP and DIP near their limits
+  Bent,          // hamfingerstraightmod, SiGML "bent": flexed at the knuckle (MCP) only
+  Round,         // hamfingerbendmod, "round": all three joints moderately flexed, a smooth arc
+  Hooked,        // hamfingerhookmod, "hooked": MCP straight, PIP and DIP flexed (claw)
+  DoubleBent,    // hamdoublebent, "dblbent": MCP and PIP flexed, DIP nearly straight
+  DoubleHooked,  // hamdoublehooked, "dblhooked": tight claw, PIP and DIP near their limits
+  HalfBent,      // SiGML "halfbent": MCP half flexed, fingers straight
 };
+inline constexpr std::size_t kFingerBendingCount = 6;
 
 HandPosture basic_handshape(BasicHandshape shape);
 FingerFlexion bending_flexion(FingerBending bending);
@@ -125,8 +131,9 @@ HandPosture make_handshape(BasicHandshape shape, ThumbModifier thumb = ThumbModi
 // The extended ("selected") fingers of a basic form, the ones a bending modifier acts on.
 FingerSet selected_fingers(BasicHandshape shape);
 
-// Names: ours ("finger23spread") and the HamNoSys symbol names ("hamfinger23spread",
-// "hamflathand", "hamceeopen", "hamthumboutmod", "hamfingerhookmod", ...) are both accepted.
+// Names: ours ("finger23spread", also the gestural SiGML values such as "dblhooked") and the
+// HamNoSys symbol names ("hamfinger23spread", "hamflathand", "hamceeopen", "hamthumboutmod",
+// "hamfingerhookmod", ...) are all accepted.
 std::string_view to_string(BasicHandshape shape);
 std::optional<BasicHandshape> parse_basic_handshape(std::string_view name);
 std::string_view to_string(ThumbModifier modifier);
