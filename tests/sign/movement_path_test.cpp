@@ -38,6 +38,17 @@ TEST(MovementPath, StraightPathsGoTheirSizeInTheirDirection) {
   expect_vec(path_end(large_out_left), {c, 0, c}, 1e-6f);
   EXPECT_NEAR(path_length(large_out_left), 0.25f, 1e-5f);
   expect_vec(sample_path(up, 0.5f).position, {0, 0.075f, 0}, 1e-6f);
+  for (std::size_t k = 0; k < kDirectionCount; ++k) {
+    const auto d = static_cast<Direction>(k);
+    for (MovementSize size : {MovementSize::Small, MovementSize::Normal, MovementSize::Large}) {
+      const MovementPath p = straight_path(d, size);
+      expect_vec(path_end(p), straight_length(size) * direction_vector(d), 1e-6f, std::string(to_string(d)));
+      EXPECT_NEAR(path_length(p), straight_length(size), 1e-5f);
+    }
+  }
+  EXPECT_THROW(straight_path(vec3{0, 0, 0}, 0.1f), Error);
+  EXPECT_THROW(straight_path(vec3{0, 1, 0}, -0.1f), Error);
+  EXPECT_THROW(straight_path(vec3{0, NAN, 0}, 0.1f), Error);
 }
 
 TEST(MovementPath, ArcsBulgeTowardTheirSideAndEndOnTheChord) {

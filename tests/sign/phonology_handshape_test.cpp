@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -184,6 +185,11 @@ TEST(PhonologyHandshape, AslShapesHaveTheirDefiningFeatures) {
   EXPECT_GT(y.finger(Finger::Index).mcp, deg(60));
   // O closes further than C.
   EXPECT_GT(asl_handshape(AslHandshape::O).finger(Finger::Index).pip, asl_handshape(AslHandshape::C).finger(Finger::Index).pip);
+}
+
+TEST(PhonologyHandshape, TheThumbIsNotAFingerFlexion) {
+  HandPosture h;
+  EXPECT_THROW(h.finger(Finger::Thumb), std::out_of_range);
 }
 
 TEST(PhonologyHandshape, MixInterpolatesComponentwise) {

@@ -51,8 +51,9 @@ struct HandPosture {
   FingerSet thumb_tip_contacts = 0;
   bool middle_crosses_index = false;  // ASL R: the middle finger lies over the index
 
-  FingerFlexion& finger(Finger f) { return fingers[static_cast<std::size_t>(f) - 1]; }
-  const FingerFlexion& finger(Finger f) const { return fingers[static_cast<std::size_t>(f) - 1]; }
+  // Index..pinky; the thumb has its own ThumbPose (Finger::Thumb throws std::out_of_range).
+  FingerFlexion& finger(Finger f) { return fingers.at(static_cast<std::size_t>(f) - 1); }
+  const FingerFlexion& finger(Finger f) const { return fingers.at(static_cast<std::size_t>(f) - 1); }
 };
 
 struct JointRange {
