@@ -164,4 +164,23 @@ HandFrame hand_frame_from_vectors(vec3 finger, vec3 palm, Hand hand) {
   return frame_from_orthonormal(f, p / palm_length, hand);
 }
 
+HandFrame hand_frame_from_joints(vec3 wrist, vec3 index_knuckle, vec3 middle_knuckle, vec3 pinky_knuckle, Hand hand) {
+  if (!is_finite(wrist) || !is_finite(index_knuckle) || !is_finite(middle_knuckle) || !is_finite(pinky_knuckle))
+    throw Error("hand frame from joints: a joint position is not finite");
+  const vec3 finger = middle_knuckle - wrist;
+  const vec3 radial = index_knuckle - pinky_knuckle;
+  if (glm::length(finger) < 1e-6f || glm::length(radial) < 1e-6f)
+    throw Error("hand frame from joints: the wrist and knuckles coincide");
+  // Local +X is the radial side for the right hand, the ulnar side for the left; +Z = X × Y.
+  const vec3 local_x = hand == Hand::Right ? radial : -radial;
+  const vec3 palm = glm::cross(local_x, finger);
+  if (glm::length(palm) < 1e-3f * glm::length(finger) * glm::length(radial))  // sin(angle) < 1e-3
+    throw Error("hand frame from joints: the knuckle line is parallel to the finger direction");
+  return hand_frame_from_vectors(finger, palm, hand);
+}
+
+quat wrist_rotation_for(const HandFrame& target, const quat& reference_frame, const quat& reference_wrist) {
+  return glm::normalize(target.rotation * glm::inverse(reference_frame) * reference_wrist);
+}
+
 }  // namespace gestura

@@ -80,4 +80,17 @@ HandFrame hand_frame_from_vectors(vec3 finger, vec3 palm, Hand hand);
 // Palm direction for a finger direction and a notated palm orientation (unit, ⟂ finger).
 vec3 palm_normal(vec3 finger, PalmOrientation palm);
 
+// ---- wiring to a skeleton ---------------------------------------------------------------------
+
+// The hand frame a skeleton's hand has, from model-space joint positions (e.g. in the rest pose):
+// the wrist and the index, middle and little-finger knuckles (H-Anim l_wrist, l_index1,
+// l_middle1, l_pinky1). finger = wrist → middle knuckle; the radial side runs from the little
+// finger's knuckle to the index's; the palm normal follows from the hand. Throws gestura::Error if
+// the points are not finite or degenerate (coincident, collinear).
+HandFrame hand_frame_from_joints(vec3 wrist, vec3 index_knuckle, vec3 middle_knuckle, vec3 pinky_knuckle, Hand hand);
+// The model-space rotation the wrist joint needs so its hand takes the `target` frame, given the
+// wrist's model-space rotation and the hand frame (hand_frame_from_joints) in one reference pose:
+// target.rotation · reference_frame⁻¹ · reference_wrist.
+quat wrist_rotation_for(const HandFrame& target, const quat& reference_frame, const quat& reference_wrist);
+
 }  // namespace gestura
