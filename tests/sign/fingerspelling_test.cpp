@@ -176,3 +176,38 @@ TEST(FingerspellingPlan, BadInputIsRejectedWithItsPosition) {
   bad_fraction.transition_fraction = 1.5f;
   EXPECT_THROW(plan_spelling("abc", ManualAlphabet::Asl, SpellingStyle::Fluent, bad_fraction), Error);
 }
+
+TEST(FingerspellingPlan, SamplingBlendsLettersWithMinimumJerkTransitions) {
+  const SpellingPlan plan = plan_spelling("all", ManualAlphabet::Asl);
+  const LetterTarget& a = plan.letters[0];
+  const LetterTarget& l1 = plan.letters[1];
+  const LetterTarget& l2 = plan.letters[2];
+  SpellingSample s = sample_spelling(plan, -1.0f);
+  EXPECT_EQ(s.from, -1);
+  EXPECT_EQ(s.to, 0);
+  EXPECT_EQ(s.blend, 0.0f);
+  s = sample_spelling(plan, a.reached);
+  EXPECT_NEAR(s.blend, 1.0f, 1e-6f);
+  s = sample_spelling(plan, 0.5f * (l1.start + l1.reached));
+  EXPECT_EQ(s.from, 0);
+  EXPECT_EQ(s.to, 1);
+  EXPECT_NEAR(s.blend, 0.5f, 1e-5f);
+  // The doubled L slides: halfway through its transition the hand is halfway to the offset.
+  s = sample_spelling(plan, 0.5f * (l2.start + l2.reached));
+  EXPECT_EQ(l2.doubled, DoubleMark::Slide);
+  EXPECT_NEAR(s.offset.x, 0.5f * l2.offset.x, 1e-5f);
+  s = sample_spelling(plan, plan.duration + 5.0f);
+  EXPECT_EQ(s.to, 2);
+  EXPECT_NEAR(s.offset.x, l2.offset.x, 1e-6f);
+
+  // A bounce dips 1.5 cm at the middle of the transition and is back at the letter.
+  const SpellingPlan jazz = plan_spelling("jazz", ManualAlphabet::Asl);
+  const LetterTarget& z2 = jazz.letters[3];
+  EXPECT_NEAR(sample_spelling(jazz, 0.5f * (z2.start + z2.reached)).offset.y, -0.015f, 1e-5f);
+  EXPECT_NEAR(sample_spelling(jazz, z2.reached).offset.y, 0.0f, 1e-6f);
+  // Z's own movement runs from reaching the letter to the end of its slot (not the final hold).
+  EXPECT_NEAR(sample_spelling(jazz, 0.5f * (z2.reached + z2.movement_end)).movement_progress, 0.5f, 1e-5f);
+  EXPECT_NEAR(z2.movement_end, z2.start + 2.0f / 6.0f, 1e-5f);
+  EXPECT_EQ(sample_spelling(jazz, jazz.letters[1].reached).movement_progress, 0.0f);  // A does not move
+  EXPECT_THROW(sample_spelling(SpellingPlan{}, 0.0f), Error);
+}

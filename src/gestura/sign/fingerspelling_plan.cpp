@@ -1,5 +1,6 @@
 #include "gestura/sign/fingerspelling_plan.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cmath>
@@ -8,13 +9,15 @@
 #include "gestura/core/error.hpp"
 #include "gestura/sign/fingerspelling_asl.hpp"
 #include "gestura/sign/fingerspelling_bsl.hpp"
+#include "gestura/sign/movement_timing.hpp"
 
 namespace gestura {
 
 namespace {
 
 constexpr std::size_t kMaxInput = 256;
-constexpr float kSlide = 0.04f;  // m, toward the dominant side (−X for a right-handed signer)
+constexpr float kSlide = 0.04f;   // m, toward the dominant side (−X for a right-handed signer)
+constexpr float kBounce = 0.015f;  // m, depth of the dip before a repeated letter
 
 struct LetterInfo {
   bool known = false;
@@ -109,6 +112,7 @@ SpellingPlan plan_spelling(std::string_view text, ManualAlphabet alphabet, Spell
     target.start = clock;
     target.reached = clock + options.transition_fraction * length;
     target.end = clock + length;
+    target.movement_end = target.end;
     clock = target.end;
     plan.letters.push_back(target);
     in_word = true;
@@ -117,6 +121,30 @@ SpellingPlan plan_spelling(std::string_view text, ManualAlphabet alphabet, Spell
   if (in_word) plan.letters.back().end += options.final_hold;
   plan.duration = plan.letters.back().end;
   return plan;
+}
+
+SpellingSample sample_spelling(const SpellingPlan& plan, float time) {
+  if (plan.letters.empty()) throw Error("cannot sample an empty fingerspelling plan");
+  if (!std::isfinite(time)) time = 0.0f;
+  const std::vector<LetterTarget>& letters = plan.letters;
+  // The letter whose slot contains the time (the last one whose transition has started).
+  std::size_t k = 0;
+  while (k + 1 < letters.size() && time >= letters[k + 1].start) ++k;
+  const LetterTarget& to = letters[k];
+  SpellingSample out;
+  out.to = static_cast<int>(k);
+  // Between words the hand holds the last letter until the next word's first transition.
+  const bool first_of_word = k == 0 || letters[k - 1].word != to.word;
+  out.from = k == 0 ? -1 : static_cast<int>(k - 1);
+  const float transition = to.reached - to.start;
+  const float u = transition > 0.0f ? std::clamp((time - to.start) / transition, 0.0f, 1.0f) : 1.0f;
+  out.blend = minimum_jerk(u);
+  const vec3 previous_offset = k == 0 || first_of_word ? vec3{0.0f} : letters[k - 1].offset;
+  out.offset = previous_offset + (to.offset - previous_offset) * out.blend;
+  if (to.doubled == DoubleMark::Bounce) out.offset.y -= kBounce * std::sin(kPi * u);
+  if (to.has_movement && to.movement_end > to.reached)
+    out.movement_progress = std::clamp((time - to.reached) / (to.movement_end - to.reached), 0.0f, 1.0f);
+  return out;
 }
 
 }  // namespace gestura

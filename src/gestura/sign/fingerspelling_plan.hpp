@@ -44,6 +44,7 @@ struct LetterTarget {
   DoubleMark doubled = DoubleMark::None;
   vec3 offset{0.0f};       // displacement of the hand from the spelling location (slides accumulate)
   bool has_movement = false;
+  float movement_end = 0.0f;  // letters with movement: it runs over [reached, movement_end]
 };
 
 struct SpellingPlan {
@@ -60,5 +61,20 @@ float default_spelling_rate(ManualAlphabet alphabet, SpellingStyle style);
 // Spaces separate words.
 SpellingPlan plan_spelling(std::string_view text, ManualAlphabet alphabet,
                            SpellingStyle style = SpellingStyle::Fluent, const SpellingOptions& options = {});
+
+// The state of the spelling hand at a time: which letter it is leaving and which it is forming,
+// the minimum-jerk blend between their configurations, the progress of the current letter's own
+// movement, and the hand's displacement (slides blend with the configuration; a bounce dips
+// 1.5 cm, sin-shaped, during the transition into the repeated letter).
+struct SpellingSample {
+  int from = -1;  // index into plan.letters of the letter being left; −1 before the first letter
+  int to = 0;     // index of the letter being formed or held
+  float blend = 0.0f;  // 0 = `from`'s configuration (or the rest before the first), 1 = `to`'s
+  float movement_progress = 0.0f;  // 0..1 for letters with movement, else 0
+  vec3 offset{0.0f};
+};
+// Times before the plan hold the first transition's start, after it the last letter's end.
+// Throws gestura::Error for an empty plan.
+SpellingSample sample_spelling(const SpellingPlan& plan, float time);
 
 }  // namespace gestura
