@@ -76,3 +76,25 @@ TEST(PhonologyJointRotation, WristRotationBringsASkeletonHandOntoTheNotatedFrame
   EXPECT_THROW(hand_frame_from_joints(wrist, wrist, wrist, wrist, Hand::Left), Error);
   EXPECT_THROW(hand_frame_from_joints(wrist, wrist + vec3{0, -0.2f, 0}, wrist + vec3{0, -0.1f, 0}, wrist, Hand::Left), Error);
 }
+
+TEST(PhonologyJointRotation, FistFingertipsLandOnThePalmAndFlatOnesReachOut) {
+  // Typical adult phalanx lengths (proximal, middle, distal), metres, index..pinky.
+  const float lengths[4][3] = {{0.043f, 0.025f, 0.019f}, {0.047f, 0.029f, 0.020f}, {0.044f, 0.028f, 0.020f},
+                               {0.035f, 0.020f, 0.018f}};
+  auto tip = [&](const HandPosture& h, std::size_t f) {
+    const FingerJointRotations r = finger_joint_rotations(h, static_cast<Finger>(f + 1), Hand::Right);
+    const vec3 y{0, 1, 0};
+    return r.mcp * (lengths[f][0] * y + r.pip * (lengths[f][1] * y + r.dip * (lengths[f][2] * y)));
+  };
+  const HandPosture fist = basic_handshape(BasicHandshape::Fist), flat = basic_handshape(BasicHandshape::Flat);
+  for (std::size_t f = 0; f < 4; ++f) {
+    const vec3 p = tip(fist, f);
+    // Relative to the knuckle: pulled back toward the wrist (the palm is ~9 cm long) and within
+    // the 1–3.5 cm in front of the knuckle axis where the palm's skin is.
+    EXPECT_LT(p.y, 0.0f) << f;
+    EXPECT_GT(p.y, -0.06f) << f;
+    EXPECT_GT(p.z, 0.01f) << f;
+    EXPECT_LT(p.z, 0.035f) << f;
+    EXPECT_NEAR(tip(flat, f).y, lengths[f][0] + lengths[f][1] + lengths[f][2], 1e-6f);
+  }
+}
