@@ -29,8 +29,9 @@ std::vector<vec3> surface_normals(const ImplicitBody& body, const Mesh& mesh) {
     const vec3 g = body.gradient(mesh.positions[v]);
     const float len = glm::length(g);
     const vec3 fallback = glm::length(face_sum[v]) > 0.0f ? glm::normalize(face_sum[v]) : vec3(0, 1, 0);
-    // The gradient is trusted where it agrees with the tessellation (thin creases can fool it).
-    normals[v] = len > 1e-3f && glm::dot(g / len, fallback) > 0.3f ? g / len : fallback;
+    // The gradient is trusted where it agrees with the tessellation (creases between fingers and
+    // lips are saddles where it can point along the surface).
+    normals[v] = len > 1e-3f && glm::dot(g / len, fallback) > 0.8f ? g / len : fallback;
   }
   return normals;
 }
@@ -66,6 +67,19 @@ std::vector<std::uint8_t> surface_materials(const Skeleton& skeleton, const Impl
   return out;
 }
 
+// Polygonises with all detail boxes; a body so heavy that a box cannot be isolated (the shoulders
+// reach the neck cut, the hips the hand box) loses that box's extra detail rather than failing.
+Polygonization polygonize_with_detail(const ImplicitBody& body, PolygonizeOptions options) {
+  while (true) {
+    try {
+      return polygonize(body, options);
+    } catch (const Error&) {
+      if (options.detail.empty()) throw;
+      options.detail.pop_back();  // the head box first, then the hands
+    }
+  }
+}
+
 }  // namespace
 
 Avatar build_avatar(const AvatarParams& params, const AvatarOptions& options) {
@@ -80,7 +94,7 @@ Avatar build_avatar(const AvatarParams& params, const AvatarOptions& options) {
   PolygonizeOptions poly;
   poly.cell = options.cell * k;
   poly.detail = avatar_detail_boxes(avatar.skeleton, params);
-  Polygonization surface = polygonize(body, poly);
+  Polygonization surface = polygonize_with_detail(body, poly);
   collapse_short_edges(surface.positions, surface.indices, 0.45f);
   Mesh& mesh = avatar.mesh;
   mesh.positions = std::move(surface.positions);

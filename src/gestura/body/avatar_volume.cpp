@@ -1,7 +1,9 @@
 #include "gestura/body/avatar_volume.hpp"
 
+#include <algorithm>
 #include <string>
 
+#include "gestura/body/avatar_proportions.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/body/mesh.hpp"
 #include "gestura/core/error.hpp"
@@ -61,27 +63,27 @@ struct VolumeBuilder {
   }
 };
 
-float by_sex(Sex sex, float female, float neutral, float male) {
-  return sex == Sex::Female ? female : sex == Sex::Male ? male : neutral;
-}
+using proportions::by_sex;
 
 void add_trunk(VolumeBuilder& b, const AvatarParams& p, float k) {
   const float g = p.build;
-  const float hips = by_sex(p.sex, 1.08f, 1.0f, 0.95f);
+  const float hips = proportions::hip_factor(p.sex);
   const float chest = by_sex(p.sex, 0.93f, 1.0f, 1.06f);
   const MaterialId cloth = MaterialId::Cloth;
-  b.ellipsoid("sacroiliac", vec3(0, 0.930f, -0.005f) * k, vec3(0.150f * hips, 0.105f, 0.105f) * k * g, cloth, 0.04f * k);
+  b.ellipsoid("sacroiliac", vec3(0, 0.930f, -0.005f) * k, vec3(proportions::kPelvisHalfWidth * hips * g, 0.105f, 0.105f * g) * k, cloth, 0.04f * k);
   for (float s : {1.0f, -1.0f})
-    b.ellipsoid("sacroiliac", vec3(s * 0.066f, 0.885f, -0.050f) * k, vec3(0.080f * hips, 0.085f, 0.075f) * k * g, cloth,
+    b.ellipsoid("sacroiliac", vec3(s * 0.066f, 0.885f, -0.050f) * k, vec3(0.080f * hips * g, 0.085f, 0.075f * g) * k, cloth,
                 0.03f * k);
-  b.ellipsoid("vl3", vec3(0, 1.060f, 0.003f) * k, vec3(0.135f * (0.5f + 0.5f * hips), 0.120f, 0.092f) * k * g, cloth,
+  b.ellipsoid("vl3", vec3(0, 1.060f, 0.003f) * k, vec3(0.135f * (0.5f + 0.5f * hips) * g, 0.120f, 0.092f * g) * k, cloth,
               0.06f * k);
-  b.ellipsoid("vt6", vec3(0, 1.250f, -0.008f) * k, vec3(0.150f * chest, 0.150f, 0.103f) * k * g, cloth, 0.06f * k);
+  b.ellipsoid("vt6", vec3(0, 1.250f, -0.008f) * k, vec3(0.150f * chest * g, 0.150f, 0.103f * g) * k, cloth, 0.06f * k);
   if (p.sex == Sex::Female)
     for (float s : {1.0f, -1.0f})
-      b.ellipsoid("vt6", vec3(s * 0.078f, 1.245f, 0.070f) * k, vec3(0.058f, 0.052f, 0.048f) * k * g, cloth, 0.03f * k);
+      b.ellipsoid("vt6", vec3(s * 0.078f, 1.245f, 0.070f) * k, vec3(0.058f * g, 0.052f, 0.048f * g) * k, cloth, 0.03f * k);
   const vec3 ls = b.at("l_shoulder"), rs = b.at("r_shoulder");
-  b.capsule("vt1", vec3(rs.x + 0.06f * k, 1.352f * k, -0.035f * k), vec3(ls.x - 0.06f * k, 1.352f * k, -0.035f * k),
+  // The shoulder line keeps its top at the same height for any build (the neck stays free).
+  const float shoulder_y = (1.414f - 0.062f * g) * k;
+  b.capsule("vt1", vec3(rs.x + 0.06f * k, shoulder_y, -0.035f * k), vec3(ls.x - 0.06f * k, shoulder_y, -0.035f * k),
             0.062f * k * g, 0.062f * k * g, cloth, 0.05f * k);
   for (const char* side : {"l_", "r_"}) {
     const std::string s = side;
@@ -89,7 +91,7 @@ void add_trunk(VolumeBuilder& b, const AvatarParams& p, float k) {
     const float dir = sh.x > 0 ? 1.0f : -1.0f;
     b.capsule(s + "sternoclavicular", b.at(s + "sternoclavicular") + vec3(0, -0.005f, -0.01f) * k,
               sh + vec3(-dir * 0.02f, 0.012f, 0.0f) * k, 0.028f * k, 0.032f * k, cloth, 0.03f * k);
-    b.capsule("vt1", vec3(dir * 0.050f, 1.415f, -0.050f) * k, sh + vec3(-dir * 0.035f, 0.012f, -0.015f) * k,
+    b.capsule("vt1", vec3(dir * 0.050f, 1.448f - 0.033f * g, -0.050f) * k, sh + vec3(-dir * 0.035f, 0.012f, -0.015f) * k,
               0.033f * k * g, 0.032f * k * g, cloth, 0.035f * k);
     b.ellipsoid(s + "shoulder", sh + vec3(dir * 0.010f, -0.025f, 0.0f) * k, vec3(0.050f, 0.068f, 0.052f) * k * g, cloth,
                 0.03f * k);
@@ -102,7 +104,7 @@ void add_trunk(VolumeBuilder& b, const AvatarParams& p, float k) {
 void add_head(VolumeBuilder& b, float k) {
   const MaterialId skin = MaterialId::Skin;
   auto v = [k](float x, float y, float z) { return vec3(x, y, z) * k; };
-  b.ellipsoid("skullbase", v(0, 1.615f, -0.008f), v(0.075f, 0.092f, 0.096f), skin, 0.02f * k);
+  b.ellipsoid("skullbase", v(0, 1.610f, -0.008f), v(0.075f, 0.088f, 0.096f), skin, 0.02f * k);
   b.ellipsoid("skullbase", v(0, 1.578f, 0.028f), v(0.064f, 0.072f, 0.072f), skin, 0.02f * k);
   b.ellipsoid("temporomandibular", v(0, 1.527f, 0.032f), v(0.056f, 0.036f, 0.066f), skin, 0.02f * k);
   b.ellipsoid("temporomandibular", v(0, 1.499f, 0.080f), v(0.022f, 0.017f, 0.017f), skin, 0.014f * k);
@@ -120,20 +122,20 @@ void add_head(VolumeBuilder& b, float k) {
   b.ellipsoid("skullbase", v(0, 1.566f, 0.112f), v(0.011f, 0.010f, 0.011f), skin, 0.006f * k);
   for (float s : {1.0f, -1.0f}) b.ellipsoid("skullbase", v(s * 0.012f, 1.563f, 0.104f), v(0.008f, 0.007f, 0.008f), skin, 0.006f * k);
   // Hair cap over the top and back of the cranium.
-  b.ellipsoid("skullbase", v(0, 1.640f, -0.022f), v(0.081f, 0.086f, 0.099f), MaterialId::Hair, 0.012f * k);
+  b.ellipsoid("skullbase", v(0, 1.628f, -0.012f), v(0.081f, 0.073f, 0.094f), MaterialId::Hair, 0.012f * k);
   // Eyes: carve a socket, set the eyeball in it, cover its top and bottom with lids.
   for (const char* side : {"l_", "r_"}) {
     const vec3 eye = b.at(std::string(side) + "eyeball_joint");
-    b.ellipsoid("skullbase", eye + v(0, 0.0f, 0.016f), v(0.020f, 0.013f, 0.015f), skin, 0.005f * k, BlendOp::Subtract);
-    b.ellipsoid(std::string(side) + "eyeball_joint", eye, v(0.0125f, 0.0125f, 0.0125f), MaterialId::EyeWhite, 0.002f * k);
-    b.ellipsoid("skullbase", eye + v(0, 0.0085f, 0.0020f), v(0.0155f, 0.0078f, 0.0128f), skin, 0.003f * k);
-    b.ellipsoid("skullbase", eye + v(0, -0.0100f, 0.0015f), v(0.0145f, 0.0055f, 0.0122f), skin, 0.003f * k);
+    b.ellipsoid("skullbase", eye + v(0, 0.0f, 0.012f), v(0.020f, 0.013f, 0.013f), skin, 0.005f * k, BlendOp::Subtract);
+    b.ellipsoid(std::string(side) + "eyeball_joint", eye, v(0.0135f, 0.0135f, 0.0135f), MaterialId::EyeWhite, 0.002f * k);
+    b.ellipsoid("skullbase", eye + v(0, 0.0108f, 0.0010f), v(0.0160f, 0.0068f, 0.0135f), skin, 0.003f * k);
+    b.ellipsoid("skullbase", eye + v(0, -0.0118f, 0.0008f), v(0.0150f, 0.0050f, 0.0130f), skin, 0.003f * k);
   }
   // Mouth: lips around a shallow opening showing teeth and the tongue.
   for (float s : {1.0f, -1.0f}) {
-    b.capsule("skullbase", v(s * 0.025f, 1.5275f, 0.091f), v(0, 1.5330f, 0.1005f), 0.0045f * k, 0.0068f * k,
+    b.capsule("skullbase", v(s * 0.024f, 1.5275f, 0.089f), v(0, 1.5325f, 0.0975f), 0.0040f * k, 0.0056f * k,
               MaterialId::Lips, 0.004f * k);
-    b.capsule("temporomandibular", v(s * 0.024f, 1.5245f, 0.090f), v(0, 1.5180f, 0.0990f), 0.0045f * k, 0.0075f * k,
+    b.capsule("temporomandibular", v(s * 0.023f, 1.5245f, 0.088f), v(0, 1.5185f, 0.0960f), 0.0040f * k, 0.0062f * k,
               MaterialId::Lips, 0.004f * k);
   }
   b.ellipsoid("skullbase", v(0, 1.5255f, 0.097f), v(0.020f, 0.0035f, 0.012f), skin, 0.002f * k, BlendOp::Subtract);
@@ -146,7 +148,8 @@ void add_arm(VolumeBuilder& b, const AvatarParams& p, const std::string& s, floa
   const vec3 sh = b.at(s + "shoulder"), el = b.at(s + "elbow"), wr = b.at(s + "wrist");
   const vec3 down = glm::normalize(wr - el);
   b.capsule(s + "shoulder", sh, el, 0.046f * k * g, 0.036f * k * g, MaterialId::Cloth, 0.03f * k);
-  b.capsule(s + "elbow", el, wr - down * (0.012f * k), 0.037f * k * g, 0.029f * k * g, MaterialId::Cloth, 0.025f * k);
+  b.capsule(s + "elbow", el, wr - down * (0.012f * k), 0.037f * k * g, proportions::kWristSleeveRadius * k * g, MaterialId::Cloth,
+            proportions::kForearmBlend * k);
 
   // Hand frame as in the skeleton: down the hand, forward (thumb side), dorsal (back of the hand).
   const vec3 fwd(0, 0, 1);
@@ -190,11 +193,11 @@ void add_arm(VolumeBuilder& b, const AvatarParams& p, const std::string& s, floa
 }
 
 void add_leg(VolumeBuilder& b, const AvatarParams& p, const std::string& s, float k) {
-  const float g = p.build * by_sex(p.sex, 1.04f, 1.0f, 0.98f);
+  const float g = p.build * proportions::thigh_factor(p.sex);
   const vec3 hip = b.at(s + "hip"), knee = b.at(s + "knee"), ankle = b.at(s + "ankle");
   const float x = hip.x;
   const MaterialId cloth = MaterialId::Cloth;
-  b.capsule(s + "hip", hip + vec3(0, 0.02f, 0) * k, knee, 0.080f * k * g, 0.050f * k * g, cloth, 0.05f * k);
+  b.capsule(s + "hip", hip + vec3(0, 0.02f, 0) * k, knee, proportions::kThighRadius * k * g, 0.050f * k * g, cloth, 0.05f * k);
   b.capsule(s + "knee", knee, ankle, 0.049f * k * g, 0.031f * k * g, cloth, 0.03f * k);
   b.ellipsoid(s + "knee", knee + vec3(0, -0.13f, -0.022f) * k, vec3(0.043f, 0.10f, 0.042f) * k * g, cloth, 0.04f * k);
   b.ellipsoid(s + "ankle", ankle, vec3(0.033f, 0.035f, 0.035f) * k, cloth, 0.02f * k);
@@ -241,10 +244,21 @@ std::vector<DetailBox> avatar_detail_boxes(const Skeleton& skeleton, const Avata
       box.lo = glm::min(box.lo, joints[j]);
       box.hi = glm::max(box.hi, joints[j]);
     }
-    const float margin = 0.035f * k * params.hand_size * std::max(1.0f, params.build);
-    box.lo -= vec3(margin, 0.02f * k, margin);
-    box.hi += vec3(margin, 0.0f, margin);
+    const float flesh = proportions::hand_flesh_margin(params) * k;
+    box.lo -= vec3(flesh, 0.02f * k, flesh);
+    box.hi += vec3(flesh, 0.0f, flesh);
     box.hi.y = joints[static_cast<std::size_t>(wrist)].y + 0.035f * k;
+    // The sleeve crosses the top face (and the coarse lattice's cut a cell above it).
+    const vec3 elbow = joints[static_cast<std::size_t>(skeleton.parents[static_cast<std::size_t>(wrist)])];
+    const vec3 wrist_pos = joints[static_cast<std::size_t>(wrist)];
+    const vec3 up = glm::normalize(elbow - wrist_pos);
+    // A horizontal cut through a tilted sleeve is an ellipse, longer by 1 / cos(tilt).
+    const float sleeve = proportions::sleeve_margin(params) * k / std::max(0.5f, up.y);
+    for (float y_above : {0.035f * k, 0.07f * k}) {
+      const vec3 axis = wrist_pos + up * (y_above / up.y);
+      box.lo = glm::min(box.lo, vec3(axis.x - sleeve, box.lo.y, axis.z - sleeve));
+      box.hi = glm::max(box.hi, vec3(axis.x + sleeve, box.hi.y, axis.z + sleeve));
+    }
     box.refine = 5;
     box.open_axis = 1;
     box.open_side = 1;

@@ -369,7 +369,8 @@ Polygonization polygonize(const ImplicitBody& body, const PolygonizeOptions& opt
     }
     if (!fine || !coarse || count != 2)
       throw Error("polygonize: detail box " + std::to_string(b) +
-                  " must be entered by the surface through its open face only, once");
+                  " must be entered by the surface through its open face only, once (found " + std::to_string(count) +
+                  " loops, fine " + (fine ? "yes" : "no") + ", coarse " + (coarse ? "yes" : "no") + ")");
     zip_loops(*fine, *coarse, out);
   }
   if (boundary_loops(out).size() != 0)

@@ -122,7 +122,7 @@ void influence_spheres(const Skeleton& skeleton, const ImplicitBody& body, const
   std::vector<float> rho(nj, 0.0f);
   for (const Primitive& s : body.primitives)
     if (s.skinned) rho[static_cast<std::size_t>(s.joint)] = std::max(rho[static_cast<std::size_t>(s.joint)], primitive_size(s));
-  for (float& r : rho) r *= 1.3f;
+  for (float& r : rho) r *= 1.8f;  // the sphere must reach the skin around the joint
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
     const int label = near.label[v];
     Influences in;
