@@ -51,6 +51,9 @@ std::vector<std::uint8_t> surface_materials(const Skeleton& skeleton, const Impl
       if (d[i] < d[best]) best = i;
     const Primitive& prim = body.primitives[best];
     auto m = static_cast<MaterialId>(prim.material);
+    // Lips only where the surface lies on the lip primitives themselves, not on the skin they
+    // blend into (the vermilion border).
+    if (m == MaterialId::Lips && d[best] > 0.0012f * k) m = MaterialId::Skin;
     if (m == MaterialId::EyeWhite && (prim.joint == l_eye || prim.joint == r_eye)) {
       const vec3 dir = glm::normalize(p - prim.a);
       if (dir.z > std::cos(deg(13.0f)))

@@ -106,10 +106,10 @@ void add_head(VolumeBuilder& b, float k) {
   auto v = [k](float x, float y, float z) { return vec3(x, y, z) * k; };
   b.ellipsoid("skullbase", v(0, 1.610f, -0.008f), v(0.075f, 0.088f, 0.096f), skin, 0.02f * k);
   b.ellipsoid("skullbase", v(0, 1.578f, 0.028f), v(0.064f, 0.072f, 0.072f), skin, 0.02f * k);
-  b.ellipsoid("temporomandibular", v(0, 1.527f, 0.032f), v(0.056f, 0.036f, 0.066f), skin, 0.02f * k);
+  b.ellipsoid("temporomandibular", v(0, 1.527f, 0.030f), v(0.051f, 0.036f, 0.064f), skin, 0.02f * k);
   b.ellipsoid("temporomandibular", v(0, 1.499f, 0.080f), v(0.022f, 0.017f, 0.017f), skin, 0.014f * k);
   for (float s : {1.0f, -1.0f}) {
-    b.ellipsoid("skullbase", v(s * 0.041f, 1.570f, 0.074f), v(0.025f, 0.020f, 0.020f), skin, 0.014f * k);
+    b.ellipsoid("skullbase", v(s * 0.040f, 1.574f, 0.070f), v(0.021f, 0.017f, 0.018f), skin, 0.014f * k);
     // Ears, tilted slightly back.
     const mat3 tilt = glm::mat3_cast(glm::angleAxis(deg(-12.0f), vec3(1, 0, 0)));
     b.ellipsoid("skullbase", v(s * 0.076f, 1.592f, -0.006f), v(0.011f, 0.029f, 0.018f), skin, 0.006f * k,
@@ -161,8 +161,14 @@ void add_arm(VolumeBuilder& b, const AvatarParams& p, const std::string& s, floa
   b.capsule(s + "wrist", wr - down * (0.030f * k), wr + down * (0.012f * hand), 0.025f * k * (0.8f + 0.2f * g),
             0.026f * hand, MaterialId::Skin, 0.012f * hand);
   const mat3 palm_axes(palm_dorsal, down, fwd);
-  b.round_box(s + "wrist", hp(0.058f, -0.002f, -0.001f), vec3(0.0065f, 0.036f, 0.029f) * hand, 0.0085f * hand, palm_axes,
+  // Palm: a rounded slab under the knuckles, tapering through an ellipsoid into the wrist; the
+  // knuckle ridge follows the metacarpal heads (the little finger's sits lower).
+  b.round_box(s + "wrist", hp(0.068f, -0.002f, -0.001f), vec3(0.0055f, 0.024f, 0.026f) * hand, 0.0105f * hand, palm_axes,
               MaterialId::Skin, 0.008f * hand);
+  b.ellipsoid(s + "wrist", hp(0.036f, -0.002f, -0.002f), vec3(0.016f, 0.028f, 0.031f) * hand, MaterialId::Skin,
+              0.010f * hand, BlendOp::Union, palm_axes);
+  b.capsule(s + "wrist", hp(0.091f, 0.022f, 0.001f), hp(0.083f, -0.026f, 0.001f), 0.0105f * hand, 0.0095f * hand,
+            MaterialId::Skin, 0.008f * hand);
   b.ellipsoid(s + "wrist", hp(0.052f, -0.024f, -0.006f), vec3(0.010f, 0.030f, 0.012f) * hand, MaterialId::Skin,
               0.008f * hand, BlendOp::Union, palm_axes);
 
