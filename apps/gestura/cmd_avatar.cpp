@@ -66,10 +66,10 @@ Request parse(const std::vector<std::string>& args, std::size_t first) {
   return r;
 }
 
-void print_info(const gestura::Avatar& a) {
+void print_info(const gestura::Avatar& a, gestura::SkinWeightMethod weights) {
   const gestura::Skeleton& s = a.skeleton;
   std::printf("height %.3f m, sex %s, skin weights %s\n", a.params.height, std::string(gestura::to_string(a.params.sex)).c_str(),
-              "computed");
+              std::string(gestura::to_string(weights)).c_str());
   std::printf("joints %zu, degrees of freedom %d\n", s.size(), s.total_dofs());
   for (std::size_t j = 0; j < s.size(); ++j) {
     const gestura::JointDofs& d = s.dofs[j];
@@ -102,7 +102,7 @@ int run(const std::vector<std::string>& args) {
   if (args[0] == "info") {
     const Request r = parse(args, 1);
     if (!r.output.empty()) throw Error("avatar info: -o is only for export");
-    print_info(gestura::build_avatar(r.params, r.options));
+    print_info(gestura::build_avatar(r.params, r.options), r.options.weights);
     return 0;
   }
   throw Error("avatar: unknown subcommand '" + args[0] + "' (export or info)");

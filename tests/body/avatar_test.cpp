@@ -206,6 +206,18 @@ TEST(AvatarMorphs, NamesArePresentAndZeroWeightsGiveTheRestMesh) {
   EXPECT_THROW(apply_morphs(m, {1.0f}), Error);
 }
 
+TEST(AvatarMorphs, NormalDeltasTurnTheNormalsOfMovedVertices) {
+  const Mesh& m = default_avatar().mesh;
+  const MorphTarget& aa = m.morphs[static_cast<std::size_t>(m.find_morph("aa"))];
+  ASSERT_EQ(aa.normal_deltas.size(), aa.vertices.size());
+  float largest = 0.0f;
+  for (const vec3& d : aa.normal_deltas) {
+    ASSERT_LE(glm::length(d), 2.0f + 1e-4f);  // a difference of two unit vectors
+    largest = std::max(largest, glm::length(d));
+  }
+  EXPECT_GT(largest, 0.05f);  // the chin turns as the jaw opens
+}
+
 TEST(AvatarMorphs, VisemesAndExpressionsMoveTheRightParts) {
   const Avatar& a = default_avatar();
   const Mesh& m = a.mesh;

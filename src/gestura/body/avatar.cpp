@@ -106,6 +106,7 @@ Avatar build_avatar(const AvatarParams& params, const AvatarOptions& options) {
   mesh.materials = surface_materials(avatar.skeleton, body, mesh, k);
   compute_skin_weights(avatar.skeleton, body, options.weights, mesh);
   mesh.morphs = build_face_morphs(avatar.skeleton, mesh, k);
+  compute_morph_normal_deltas(mesh);
   return avatar;
 }
 

@@ -253,6 +253,30 @@ std::vector<MorphTarget> build_face_morphs(const Skeleton& skeleton, const Mesh&
   return out;
 }
 
+void compute_morph_normal_deltas(Mesh& mesh) {
+  const std::size_t n = mesh.vertex_count();
+  // Triangles around each vertex, to renormalise only what a morph touches.
+  std::vector<std::vector<std::uint32_t>> around(n);
+  for (std::size_t f = 0; f + 2 < mesh.indices.size(); f += 3)
+    for (int k = 0; k < 3; ++k) around[mesh.indices[f + k]].push_back(static_cast<std::uint32_t>(f / 3));
+  auto vertex_normal = [&](std::uint32_t v, const std::vector<vec3>& pos) {
+    vec3 sum(0.0f);
+    for (std::uint32_t t : around[v]) {
+      const std::uint32_t* i = &mesh.indices[3 * t];
+      sum += glm::cross(pos[i[1]] - pos[i[0]], pos[i[2]] - pos[i[0]]);
+    }
+    return glm::length(sum) > 0.0f ? glm::normalize(sum) : vec3(0.0f);
+  };
+  std::vector<vec3> moved = mesh.positions;
+  for (MorphTarget& m : mesh.morphs) {
+    for (std::size_t i = 0; i < m.vertices.size(); ++i) moved[m.vertices[i]] += m.position_deltas[i];
+    m.normal_deltas.resize(m.vertices.size());
+    for (std::size_t i = 0; i < m.vertices.size(); ++i)
+      m.normal_deltas[i] = vertex_normal(m.vertices[i], moved) - vertex_normal(m.vertices[i], mesh.positions);
+    for (std::uint32_t v : m.vertices) moved[v] = mesh.positions[v];
+  }
+}
+
 Expression parse_expression(std::string_view name) {
   for (std::size_t i = 0; i < kExpressionNames.size(); ++i)
     if (kExpressionNames[i] == name) return static_cast<Expression>(i);

@@ -31,6 +31,10 @@ inline constexpr std::array<std::string_view, 21> kExpressionMorphNames{
 // All morphs above, visemes first. `scale` = avatar height / 1.70 m. Only vertices of the head move.
 std::vector<MorphTarget> build_face_morphs(const Skeleton& skeleton, const Mesh& mesh, float scale);
 
+// Fills every morph's normal_deltas: the change of the area-weighted vertex normal when the morph
+// is applied at full weight (computed on the tessellation, so rest and morphed normals compare).
+void compute_morph_normal_deltas(Mesh& mesh);
+
 // The six universal expressions of MPEG-4 facial animation plus neutral.
 enum class Expression { Neutral, Joy, Sadness, Anger, Fear, Disgust, Surprise };
 inline constexpr std::array<std::string_view, 7> kExpressionNames{"neutral", "joy",     "sadness", "anger",
