@@ -423,19 +423,27 @@ void Renderer::render(std::span<const View> views, std::span<const mat4> skinnin
   check_gl("drawing");
 }
 
-void Renderer::read_pixels(Image& out) {
-  if (out.width != width_ || out.height != height_) out = Image(width_, height_);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, gl_->resolve_fbo);
+void Renderer::read_pixels(Image& out) { read_framebuffer(gl_->resolve_fbo, width_, height_, out); }
+
+void Renderer::read_window_pixels(Image& out, int framebuffer_width, int framebuffer_height) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  read_framebuffer(0, framebuffer_width, framebuffer_height, out);
+}
+
+void Renderer::read_framebuffer(unsigned framebuffer, int width, int height, Image& out) {
+  if (out.width != width || out.height != height) out = Image(width, height);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out.rgba.data());
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, out.rgba.data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   check_gl("reading pixels back");
   // GL rows run bottom to top; images top to bottom.
-  const std::size_t row = static_cast<std::size_t>(width_) * 4;
+  const std::size_t row = static_cast<std::size_t>(width) * 4;
   std::vector<std::uint8_t> tmp(row);
-  for (int y = 0; y < height_ / 2; ++y) {
+  for (int y = 0; y < height / 2; ++y) {
     std::uint8_t* a = out.pixel(0, y);
-    std::uint8_t* b = out.pixel(0, height_ - 1 - y);
+    std::uint8_t* b = out.pixel(0, height - 1 - y);
     std::memcpy(tmp.data(), a, row);
     std::memcpy(a, b, row);
     std::memcpy(b, tmp.data(), row);

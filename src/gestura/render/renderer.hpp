@@ -53,6 +53,8 @@ class Renderer {
               SkinningPath path = SkinningPath::Gpu);
   // Waits for the GPU and copies the resolved frame into `out` (resized), rows top to bottom.
   void read_pixels(Image& out);
+  // Reads what present() put into the window's back buffer (a screenshot of the window itself).
+  void read_window_pixels(Image& out, int framebuffer_width, int framebuffer_height);
   // Blits the resolved frame into the default framebuffer (the window), scaled to fit.
   void present(int framebuffer_width, int framebuffer_height);
   // Blocks until the GL has finished drawing (for measuring draw time alone).
@@ -60,6 +62,7 @@ class Renderer {
 
  private:
   struct Gl;
+  void read_framebuffer(unsigned framebuffer, int width, int height, Image& out);
   std::unique_ptr<Gl> gl_;
   Look look_;
   Mesh mesh_;
