@@ -13,9 +13,11 @@ namespace gestura {
 namespace {
 
 // Texture units of the three texture buffers the vertex shader reads.
-constexpr GLint kJointUnit = 0, kMorphDeltaUnit = 1, kMorphWeightUnit = 2;
+constexpr GLint kMorphDeltaUnit = 1, kMorphWeightUnit = 2;
+constexpr GLuint kJointBlockBinding = 0;
 
-constexpr const char* kVertexShader = R"(#version 330 core
+// Compiled with "#define MAX_JOINTS n" prepended (n from the GL's uniform block size).
+constexpr const char* kVertexShader = R"(
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in uint a_material;
@@ -23,7 +25,7 @@ layout(location = 3) in uvec4 a_joints;
 layout(location = 4) in vec4 a_weights;
 layout(location = 5) in uvec2 a_morph_range;   // first entry, entry count
 
-uniform samplerBuffer u_joints;        // 4 texels (columns) per skinning matrix
+layout(std140) uniform Joints { mat4 u_joints[MAX_JOINTS]; };  // skinning matrices
 uniform samplerBuffer u_morph_deltas;  // 2 texels per entry: (position delta, morph index), (normal delta, 0)
 uniform samplerBuffer u_morph_weights; // one weight per morph target
 uniform bool u_skin_on_gpu;
@@ -34,11 +36,7 @@ out vec3 v_world;
 out vec3 v_normal;
 flat out uint v_material;
 
-mat4 joint_matrix(uint j) {
-  int base = int(j) * 4;
-  return mat4(texelFetch(u_joints, base), texelFetch(u_joints, base + 1), texelFetch(u_joints, base + 2),
-              texelFetch(u_joints, base + 3));
-}
+mat4 joint_matrix(uint j) { return u_joints[j]; }
 
 void main() {
   vec3 p = a_position;
@@ -76,20 +74,23 @@ flat in uint v_material;
 uniform vec3 u_eye;
 uniform vec3 u_view_direction;
 uniform bool u_orthographic;
-uniform vec3 u_albedo[10];
+uniform vec3 u_albedo[10];    // linear
 uniform vec4 u_surface[10];   // wrap, scatter, specular, shininess
 
 out vec4 o_color;
 
 const vec3 kScatterTint = vec3(0.85, 0.22, 0.12);
 
-vec3 light(vec3 n, vec3 v, vec3 l, vec3 color, vec3 albedo, vec4 s) {
+vec3 diffuse(vec3 n, vec3 l, vec3 color, vec3 albedo, vec4 s) {
   float ndl = dot(n, l);
-  float diffuse = max((ndl + s.x) / (1.0 + s.x), 0.0);
+  float wrapped = max((ndl + s.x) / (1.0 + s.x), 0.0);
   float scatter = s.y * smoothstep(-s.x - 0.1, 0.0, ndl) * (1.0 - smoothstep(0.0, 0.6, ndl));
-  vec3 h = normalize(l + v);
-  float specular = ndl > 0.0 ? s.z * pow(max(dot(n, h), 0.0), s.w) : 0.0;
-  return color * (albedo * diffuse + albedo * kScatterTint * scatter + vec3(specular));
+  return color * albedo * (wrapped + kScatterTint * scatter);
+}
+
+// Blinn-Phong; only the key and rim lights get highlights (the fill is soft by design).
+float specular(vec3 n, vec3 v, vec3 l, vec4 s) {
+  return dot(n, l) > 0.0 ? s.z * pow(max(dot(n, normalize(l + v)), 0.0), s.w) : 0.0;
 }
 
 void main() {
@@ -97,23 +98,25 @@ void main() {
   vec3 n = normalize(v_normal);
   vec3 v = u_orthographic ? -u_view_direction : normalize(u_eye - v_world);
   if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n;
-  vec3 albedo = pow(u_albedo[m], vec3(2.2));
+  vec3 albedo = u_albedo[m];
   vec4 s = u_surface[m];
 
+  const vec3 key = vec3(-0.4511, 0.5514, 0.7018), fill = vec3(0.7814, 0.1116, 0.6140), rim = vec3(0.2516, 0.4528, -0.8554);
+  const vec3 key_color = vec3(1.25, 1.18, 1.08), fill_color = vec3(0.32, 0.36, 0.44), rim_color = vec3(0.70, 0.70, 0.75);
   vec3 c = albedo * mix(vec3(0.10, 0.09, 0.09), vec3(0.20, 0.22, 0.26), n.y * 0.5 + 0.5);
-  c += light(n, v, normalize(vec3(-0.45, 0.55, 0.70)), vec3(1.25, 1.18, 1.08), albedo, s);
-  c += light(n, v, normalize(vec3(0.70, 0.10, 0.55)), vec3(0.32, 0.36, 0.44), albedo, s);
-  c += light(n, v, normalize(vec3(0.25, 0.45, -0.85)), vec3(0.70, 0.70, 0.75), albedo, s);
-  float edge = pow(1.0 - max(dot(n, v), 0.0), 3.0);
-  c += edge * 0.25 * mix(albedo, vec3(1.0), 0.3);
+  c += diffuse(n, key, key_color, albedo, s) + diffuse(n, fill, fill_color, albedo, s) + diffuse(n, rim, rim_color, albedo, s);
+  if (s.z > 0.0) c += key_color * specular(n, v, key, s) + rim_color * specular(n, v, rim, s);
+  float facing = 1.0 - max(dot(n, v), 0.0);
+  c += facing * facing * facing * 0.25 * mix(albedo, vec3(1.0), 0.3);
   c = c / (1.0 + 0.12 * c);   // soft shoulder instead of hard clipping
   o_color = vec4(pow(clamp(c, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0);
 }
 )";
 
-GLuint compile(GLenum type, const char* source) {
+GLuint compile(GLenum type, const std::string& source) {
   const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
   glCompileShader(shader);
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -141,7 +144,7 @@ struct Renderer::Gl {
   GLuint gpu_vao = 0, cpu_vao = 0;
   GLuint positions = 0, normals = 0, materials = 0, joints = 0, weights = 0, morph_ranges = 0, indices = 0;
   GLuint skinned_positions = 0, skinned_normals = 0;
-  GLuint joint_buffer = 0, joint_texture = 0, delta_buffer = 0, delta_texture = 0, weight_buffer = 0,
+  GLuint joint_buffer = 0, delta_buffer = 0, delta_texture = 0, weight_buffer = 0,
          weight_texture = 0;
   GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0, resolve_fbo = 0, resolve_color = 0;
   GLsizei index_count = 0;
@@ -152,7 +155,12 @@ Renderer::Renderer(const Look& look, int msaa_samples) : gl_(std::make_unique<Gl
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   samples_ = std::clamp(msaa_samples, 1, std::max(1, static_cast<int>(max_samples)));
 
-  const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader), fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
+  GLint block_bytes = 0;
+  glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &block_bytes);
+  max_gpu_joints_ = std::min<std::size_t>(1024, static_cast<std::size_t>(block_bytes) / sizeof(mat4));
+  const GLuint vs = compile(GL_VERTEX_SHADER, "#version 330 core\n#define MAX_JOINTS " + std::to_string(max_gpu_joints_) +
+                                                  kVertexShader);
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
   Gl& g = *gl_;
   g.program = glCreateProgram();
   glAttachShader(g.program, vs);
@@ -177,7 +185,7 @@ Renderer::Renderer(const Look& look, int msaa_samples) : gl_(std::make_unique<Gl
   g.u_albedo = loc("u_albedo");
   g.u_surface = loc("u_surface");
   glUseProgram(g.program);
-  glUniform1i(loc("u_joints"), kJointUnit);
+  glUniformBlockBinding(g.program, glGetUniformBlockIndex(g.program, "Joints"), kJointBlockBinding);
   glUniform1i(loc("u_morph_deltas"), kMorphDeltaUnit);
   glUniform1i(loc("u_morph_weights"), kMorphWeightUnit);
 
@@ -189,9 +197,11 @@ Renderer::Renderer(const Look& look, int msaa_samples) : gl_(std::make_unique<Gl
   glGenBuffers(1, &g.weight_buffer);
   glGenVertexArrays(1, &g.gpu_vao);
   glGenVertexArrays(1, &g.cpu_vao);
-  GLuint textures[3];
-  glGenTextures(3, textures);
-  g.joint_texture = textures[0], g.delta_texture = textures[1], g.weight_texture = textures[2];
+  GLuint textures[2];
+  glGenTextures(2, textures);
+  g.delta_texture = textures[0], g.weight_texture = textures[1];
+  glBindBuffer(GL_UNIFORM_BUFFER, g.joint_buffer);
+  glBufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(max_gpu_joints_ * sizeof(mat4)), nullptr, GL_STREAM_DRAW);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
   check_gl("setting up the renderer");
@@ -203,7 +213,7 @@ Renderer::~Renderer() {
                             g.indices, g.skinned_positions, g.skinned_normals, g.joint_buffer, g.delta_buffer,
                             g.weight_buffer};
   glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
-  const GLuint textures[] = {g.joint_texture, g.delta_texture, g.weight_texture, g.resolve_color};
+  const GLuint textures[] = {g.delta_texture, g.weight_texture, g.resolve_color};
   glDeleteTextures(static_cast<GLsizei>(std::size(textures)), textures);
   const GLuint renderbuffers[] = {g.msaa_color, g.msaa_depth};
   glDeleteRenderbuffers(2, renderbuffers);
@@ -358,11 +368,13 @@ void Renderer::render(std::span<const View> views, std::span<const mat4> skinnin
   glUseProgram(g.program);
   const bool morphs_active = std::any_of(morph_weights.begin(), morph_weights.end(), [](float w) { return w != 0.0f; });
   if (path == SkinningPath::Gpu) {
-    glBindBuffer(GL_TEXTURE_BUFFER, g.joint_buffer);
-    glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(skinning.size_bytes()), skinning.data(), GL_STREAM_DRAW);
-    glActiveTexture(GL_TEXTURE0 + kJointUnit);
-    glBindTexture(GL_TEXTURE_BUFFER, g.joint_texture);
-    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, g.joint_buffer);
+    if (joint_limit_ > max_gpu_joints_)
+      throw Error("renderer: the mesh uses " + std::to_string(joint_limit_) + " joints; GPU skinning here holds " +
+                  std::to_string(max_gpu_joints_) + " (use the CPU skinning path)");
+    const std::size_t used = std::min(skinning.size(), max_gpu_joints_);
+    glBindBuffer(GL_UNIFORM_BUFFER, g.joint_buffer);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, static_cast<GLsizeiptr>(used * sizeof(mat4)), skinning.data());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kJointBlockBinding, g.joint_buffer);
     std::vector<float> weights(std::max<std::size_t>(1, mesh_.morphs.size()), 0.0f);
     std::copy(morph_weights.begin(), morph_weights.end(), weights.begin());
     glBindBuffer(GL_TEXTURE_BUFFER, g.weight_buffer);
@@ -387,7 +399,9 @@ void Renderer::render(std::span<const View> views, std::span<const mat4> skinnin
     glUniform1i(g.u_morphs_active, 0);
     glBindVertexArray(g.cpu_vao);
   }
-  glUniform3fv(g.u_albedo, kMaterialCount, &look_.colors[0].x);
+  vec3 albedo[kMaterialCount];  // sRGB colours to linear once per frame, not per fragment
+  for (int m = 0; m < kMaterialCount; ++m) albedo[m] = glm::pow(look_.colors[static_cast<std::size_t>(m)], vec3(2.2f));
+  glUniform3fv(g.u_albedo, kMaterialCount, &albedo[0].x);
   vec4 surfaces[kMaterialCount];
   for (int m = 0; m < kMaterialCount; ++m) {
     const SurfaceResponse& s = look_.surfaces[static_cast<std::size_t>(m)];

@@ -6,7 +6,7 @@
 // joint matrix × inverse bind matrix, one per joint) and morph weights (one per mesh morph target,
 // missing = 0). Two skinning paths:
 //   Gpu — bind-pose vertices stay on the GPU; the vertex shader blends four joint matrices
-//         (fetched from a texture buffer) after adding the sparse morph deltas (a texture buffer
+//         (from a uniform block, up to max_gpu_joints()) after adding the sparse morph deltas (a texture buffer
 //         of (delta, morph index) entries per vertex, weights in another texture buffer).
 //   Cpu — the vertices are skinned on the CPU and streamed to the GPU every frame (comparison).
 // Frames go to a 4× MSAA offscreen target, resolved to a texture; read_pixels() reads it back,
@@ -57,6 +57,7 @@ class Renderer {
   void read_window_pixels(Image& out, int framebuffer_width, int framebuffer_height);
   // Blits the resolved frame into the default framebuffer (the window), scaled to fit.
   void present(int framebuffer_width, int framebuffer_height);
+  std::size_t max_gpu_joints() const { return max_gpu_joints_; }
   // Blocks until the GL has finished drawing (for measuring draw time alone).
   void finish();
 
@@ -68,7 +69,8 @@ class Renderer {
   Mesh mesh_;
   int samples_;
   int width_ = 0, height_ = 0;
-  std::size_t joint_limit_ = 0;  // 1 + the largest joint index any vertex uses
+  std::size_t joint_limit_ = 0;
+  std::size_t max_gpu_joints_ = 0;  // 1 + the largest joint index any vertex uses
   std::vector<vec3> scratch_positions_, scratch_normals_, skinned_positions_, skinned_normals_;
 };
 

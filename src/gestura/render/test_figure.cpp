@@ -32,7 +32,7 @@ vec3 mirror(vec3 p, float sign) { return {p.x * sign, p.y, p.z}; }
 
 class Builder {
  public:
-  Builder(RenderSubject& s, int detail) : s_(s), segments_(10 * detail), rings_(8 * detail) {}
+  Builder(RenderSubject& s, int detail) : s_(s), segments_(10 * detail), rings_(5 * detail) {}
 
   int joint(const std::string& name, const std::string& parent, vec3 model_position) {
     const int p = parent.empty() ? -1 : s_.skeleton.find(parent);

@@ -121,7 +121,7 @@ VideoWriter::VideoWriter(const std::string& path, int width, int height, int fps
   s.codec->gop_size = 2 * fps;
   s.codec->thread_count = 0;  // let the codec pick (one per core)
   if (s.format == VideoFormat::Mp4) {
-    av_opt_set(s.codec->priv_data, "preset", "veryfast", 0);
+    av_opt_set(s.codec->priv_data, "preset", "superfast", 0);
     av_opt_set(s.codec->priv_data, "crf", "20", 0);
   } else if (s.format == VideoFormat::WebM) {
     s.codec->bit_rate = 0;
