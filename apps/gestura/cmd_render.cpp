@@ -20,7 +20,8 @@ The file appears only when complete.
   -o, --output PATH       output file (.png, .gif, .mp4, .webm)
   --camera LIST           front, side, three-quarter, top, side-section; a comma list
                           (front,side,top) renders a split view   [front]
-  --orbit YAW,PITCH,DIST  free camera: degrees about +Y from the front, degrees up, metres
+  --orbit YAW,PITCH,DIST[,X,Y,Z]  free camera: degrees about +Y from the front, degrees up,
+                          metres away from the target X,Y,Z (default: the body's centre)
   --size WxH              image size, 16..8192 per side           [1280x720]
   --fps N                 frames per second, 1..120               [30]
   --background #rrggbb    background colour                       [#999ea3]
@@ -33,18 +34,29 @@ The file appears only when complete.
   --rest                  the rest pose, no clip
   --test-motion           the built-in test motion (a wave))";
 
-Orbit parse_orbit(const std::string& text) {
+// Fills job.orbit (and whether it aims at the body) from "YAW,PITCH,DIST[,X,Y,Z]".
+void parse_orbit(const std::string& text, RenderJob& job) {
+  std::vector<float> values;
   std::stringstream in(text);
-  float values[3];
-  char comma = 0;
-  if (!(in >> values[0] >> comma) || comma != ',' || !(in >> values[1] >> comma) || comma != ',' || !(in >> values[2]) ||
-      !in.eof() || !std::isfinite(values[0]) || !std::isfinite(values[1]) || !(values[2] > 0.0f && values[2] < 1000.0f))
-    throw Error("bad --orbit '" + text + "' (expected YAW,PITCH,DISTANCE, e.g. 30,10,2.5)");
+  bool ok = true;
+  for (std::string item; std::getline(in, item, ',');) {
+    std::size_t used = 0;
+    try {
+      values.push_back(std::stof(item, &used));
+    } catch (const std::exception&) {
+      ok = false;
+    }
+    ok = ok && used == item.size() && std::isfinite(values.back());
+  }
+  ok = ok && (values.size() == 3 || values.size() == 6) && values[2] > 0.0f && values[2] < 1000.0f;
+  if (!ok) throw Error("bad --orbit '" + text + "' (expected YAW,PITCH,DISTANCE[,X,Y,Z], e.g. 30,10,2.5)");
   Orbit orbit;
   orbit.yaw = deg(values[0]);
   orbit.pitch = deg(values[1]);
   orbit.distance = values[2];
-  return orbit;
+  job.orbit_about_body = values.size() == 3;
+  if (values.size() == 6) orbit.target = vec3(values[3], values[4], values[5]);
+  job.orbit = orbit;
 }
 
 int run(const std::vector<std::string>& args) {
@@ -60,7 +72,7 @@ int run(const std::vector<std::string>& args) {
     const std::string& a = args[i];
     if (a == "-o" || a == "--output") job.output = flag_value(args, i);
     else if (a == "--camera") job.cameras = parse_camera_list(flag_value(args, i));
-    else if (a == "--orbit") job.orbit = parse_orbit(flag_value(args, i));
+    else if (a == "--orbit") parse_orbit(flag_value(args, i), job);
     else if (a == "--size") job.size = parse_image_size(flag_value(args, i));
     else if (a == "--fps") job.fps = parse_fps(flag_value(args, i));
     else if (a == "--background") job.look.background = parse_hex_color(flag_value(args, i));

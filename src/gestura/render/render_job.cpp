@@ -71,7 +71,10 @@ int frame_count(float seconds, int fps) {
 std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int width, int height) {
   std::vector<View> views;
   if (job.orbit) {
-    views.push_back({orbit_camera(*job.orbit, static_cast<float>(width) / static_cast<float>(height)), {0, 0, width, height}});
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    Orbit orbit = *job.orbit;
+    if (job.orbit_about_body) orbit.target = preset_orbit(CameraPreset::Front, box, aspect).target;
+    views.push_back({orbit_camera(orbit, aspect), {0, 0, width, height}});
     return views;
   }
   const std::vector<Viewport> panes = split_viewports(static_cast<int>(job.cameras.size()), width, height);

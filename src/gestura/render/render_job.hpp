@@ -33,6 +33,7 @@ struct RenderJob {
   int fps = 30;
   std::vector<CameraPreset> cameras{CameraPreset::Front};  // more than one: split view
   std::optional<Orbit> orbit;                  // replaces the presets when set
+  bool orbit_about_body = true;                // aim the orbit at the front framing's centre, not orbit->target
   Look look;
   bool sheet = false;                          // PNG only: 4×4 contact sheet over the clip
   float still_time = 0.0f;                     // the time a single PNG shows
