@@ -9,6 +9,9 @@ extern "C" {
 }
 
 #include <algorithm>
+#include <cstring>
+#include <unordered_map>
+#include <vector>
 #include <optional>
 
 #include "gestura/core/error.hpp"
@@ -67,6 +70,26 @@ struct VideoWriter::State {
   AVPacket* packet = nullptr;
   SwsContext* scaler = nullptr;
   bool finished = false;
+  // GIF: the 6×7×6 cube plus, in the last 4 entries, the most frequent exact colours of the first
+  // frame (the background above all), which are then drawn flat instead of dithered.
+  std::uint32_t palette[256] = {};
+  std::uint32_t exact[256 - kRed * kGreen * kBlue] = {};
+  int exact_count = 0;
+
+  void choose_exact_colours(const Image& image) {
+    std::unordered_map<std::uint32_t, int> counts;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4 * 7)  // a sample is plenty
+      ++counts[static_cast<std::uint32_t>(image.rgba[i]) << 16 | static_cast<std::uint32_t>(image.rgba[i + 1]) << 8 |
+               image.rgba[i + 2]];
+    std::vector<std::pair<int, std::uint32_t>> ranked;
+    for (const auto& [colour, n] : counts) ranked.emplace_back(n, colour);
+    std::sort(ranked.rbegin(), ranked.rend());
+    exact_count = static_cast<int>(std::min(ranked.size(), std::size(exact)));
+    for (int k = 0; k < exact_count; ++k) {
+      exact[k] = ranked[static_cast<std::size_t>(k)].second;
+      palette[kRed * kGreen * kBlue + k] = 0xff000000u | exact[k];
+    }
+  }
 
   ~State() {
     sws_freeContext(scaler);
@@ -153,13 +176,10 @@ VideoWriter::VideoWriter(const std::string& path, int width, int height, int fps
   rc = av_frame_get_buffer(s.frame, 0);
   if (rc < 0) s.fail("cannot allocate a frame", rc);
   if (s.format == VideoFormat::Gif) {
-    auto* palette = reinterpret_cast<std::uint32_t*>(s.frame->data[1]);
-    for (int i = 0; i < 256; ++i) {
+    for (int i = 0; i < kRed * kGreen * kBlue; ++i) {
       const int r = i / (kGreen * kBlue), g = i / kBlue % kGreen, b = i % kBlue;
-      palette[i] = i < kRed * kGreen * kBlue ? 0xff000000u | static_cast<std::uint32_t>(r * 255 / (kRed - 1)) << 16 |
-                                                   static_cast<std::uint32_t>(g * 255 / (kGreen - 1)) << 8 |
-                                                   static_cast<std::uint32_t>(b * 255 / (kBlue - 1))
-                                             : 0xff000000u;
+      s.palette[i] = 0xff000000u | static_cast<std::uint32_t>(r * 255 / (kRed - 1)) << 16 |
+                     static_cast<std::uint32_t>(g * 255 / (kGreen - 1)) << 8 | static_cast<std::uint32_t>(b * 255 / (kBlue - 1));
     }
   } else {
     s.scaler = sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height, AV_PIX_FMT_YUV420P, SWS_BILINEAR,
@@ -177,10 +197,19 @@ void VideoWriter::write(const Image& image) {
   const int rc = av_frame_make_writable(s.frame);
   if (rc < 0) s.fail("cannot reuse the frame buffer", rc);
   if (s.format == VideoFormat::Gif) {
+    if (s.frames == 0) s.choose_exact_colours(image);
+    std::memcpy(s.frame->data[1], s.palette, sizeof s.palette);
     for (int y = 0; y < s.height; ++y) {
       std::uint8_t* row = s.frame->data[0] + static_cast<std::ptrdiff_t>(y) * s.frame->linesize[0];
       for (int x = 0; x < s.width; ++x) {
         const std::uint8_t* p = image.pixel(x, y);
+        const std::uint32_t colour = static_cast<std::uint32_t>(p[0]) << 16 | static_cast<std::uint32_t>(p[1]) << 8 | p[2];
+        int k = 0;
+        while (k < s.exact_count && s.exact[k] != colour) ++k;
+        if (k < s.exact_count) {
+          row[x] = static_cast<std::uint8_t>(kRed * kGreen * kBlue + k);
+          continue;
+        }
         const float t = (kBayer[y & 3][x & 3] + 0.5f) / 16.0f;
         row[x] = static_cast<std::uint8_t>((quantise(p[0], kRed, t) * kGreen + quantise(p[1], kGreen, t)) * kBlue +
                                            quantise(p[2], kBlue, t));

@@ -1,7 +1,7 @@
 #pragma once
 // Animated output through libavcodec/libavformat: MP4 (H.264 via libx264), WebM (VP9 via
 // libvpx-vp9) and GIF (ffmpeg's gif encoder fed with our own palette: a fixed 6×7×6 colour cube
-// with ordered dithering). Frame i gets timestamp i / fps exactly, so the file has exactly the
+// with ordered dithering, plus the first frame's most frequent colours — the background — exact). Frame i gets timestamp i / fps exactly, so the file has exactly the
 // frames written at exactly the frame rate asked for (GIF stores delays in 1/100 s, so its rate is
 // only exact for fps dividing 100). Staged: the target appears only when finish() succeeds.
 #include <memory>
