@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "gestura/render/cpu_skinning.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/renderer.hpp"
 #include "gestura/render/test_figure.hpp"
@@ -94,6 +95,21 @@ void BM_R1_Draw(benchmark::State& state) {
                  (state.range(1) == 4 ? ", 4x msaa" : ", no msaa") + "; " + s.context.description());
 }
 BENCHMARK(BM_R1_Draw)->Args({0, 4})->Args({1, 4})->Args({0, 1})->Args({1, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The renderer's CPU linear-blend skinning loop alone (what the CPU path adds before its upload).
+void BM_R1_CpuSkinningLoop(benchmark::State& state) {
+  Scene& s = scene();
+  const Mesh& mesh = s.figure.mesh;
+  std::vector<vec3> scratch_p(mesh.vertex_count()), scratch_n(mesh.vertex_count()), out_p(mesh.vertex_count()),
+      out_n(mesh.vertex_count());
+  s.animator.pose_at(1.0f);
+  for (auto _ : state) {
+    cpu_skin_for_render(mesh, s.animator.skinning(), s.animator.morph_weights(), scratch_p, scratch_n, out_p, out_n);
+    benchmark::DoNotOptimize(out_p.data());
+  }
+  state.counters["vertices"] = static_cast<double>(mesh.vertex_count());
+}
+BENCHMARK(BM_R1_CpuSkinningLoop)->Unit(benchmark::kMicrosecond);
 
 // A full headless frame: draw + glReadPixels into an Image.
 void BM_R1_DrawAndReadback(benchmark::State& state) {
