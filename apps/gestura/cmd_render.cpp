@@ -22,7 +22,7 @@ The file appears only when complete.
                           (front,side,top) renders a split view   [front]
   --orbit YAW,PITCH,DIST[,X,Y,Z]  free camera: degrees about +Y from the front, degrees up,
                           metres away from the target X,Y,Z (default: the body's centre)
-  --size WxH              image size, 16..8192 per side           [1280x720]
+  --size WxH              image size, 16..4096 per side, at most 4096x2304 pixels  [1280x720]
   --fps N                 frames per second, 1..120               [30]
   --background #rrggbb    background colour                       [#999ea3]
   --color MATERIAL=#rrggbb  colour of skin, cloth, hair, eye-white, iris, lips, teeth, tongue,

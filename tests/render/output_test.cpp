@@ -163,7 +163,7 @@ TEST_F(RenderOutput, RestPoseVideoLastsTheRequestedSeconds) {
 }
 
 TEST_F(RenderOutput, BadSizesAreClearErrors) {
-  for (const char* text : {"0x0", "100000x100000", "abc", "640", "640x", "-640x480", "15x100", "8193x100"}) {
+  for (const char* text : {"0x0", "100000x100000", "abc", "640", "640x", "-640x480", "15x100", "4097x100", "4096x4096"}) {
     try {
       parse_image_size(text);
       ADD_FAILURE() << text << " accepted";
@@ -173,6 +173,8 @@ TEST_F(RenderOutput, BadSizesAreClearErrors) {
   }
   EXPECT_EQ(parse_image_size("1280x720").width, 1280);
   EXPECT_EQ(parse_image_size("1280x720").height, 720);
+  EXPECT_EQ(parse_image_size("4096x2304").width, 4096);
+  EXPECT_THROW(validate(job(path("a.png"), 0, 0)), Error);
 }
 
 TEST_F(RenderOutput, BadFrameRatesAreClearErrors) {

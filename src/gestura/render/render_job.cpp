@@ -31,6 +31,8 @@ ImageSize parse_image_size(const std::string& text) {
     if (side < kMinImageSide || side > kMaxImageSide)
       throw Error("bad --size '" + text + "': each side must be " + std::to_string(kMinImageSide) + ".." +
                   std::to_string(kMaxImageSide) + " pixels");
+  if (static_cast<long>(size.width) * size.height > kMaxImagePixels)
+    throw Error("bad --size '" + text + "': at most " + std::to_string(kMaxImagePixels) + " pixels in all (e.g. 4096x2304)");
   return size;
 }
 
@@ -55,9 +57,7 @@ void validate(const RenderJob& job) {
   const bool png = ends_with_png(job.output);
   if (!png) video_format_of(job.output);  // throws for unknown extensions
   if (job.sheet && !png) throw Error("--sheet writes a PNG contact sheet; " + job.output + " is not .png");
-  for (int side : {job.size.width, job.size.height})
-    if (side < kMinImageSide || side > kMaxImageSide)
-      throw Error("bad size " + std::to_string(job.size.width) + "x" + std::to_string(job.size.height));
+  parse_image_size(std::to_string(job.size.width) + "x" + std::to_string(job.size.height));
   if (job.fps < 1 || job.fps > kMaxFps) throw Error("bad fps " + std::to_string(job.fps));
   if (job.cameras.empty() && !job.orbit) throw Error("no camera");
   if (!png && video_format_of(job.output) != VideoFormat::Gif && (job.size.width % 2 || job.size.height % 2))

@@ -14,13 +14,15 @@
 
 namespace gestura {
 
-inline constexpr int kMinImageSide = 16, kMaxImageSide = 8192;
+inline constexpr int kMinImageSide = 16, kMaxImageSide = 4096;
+// 4096×2304: with 4× MSAA colour and depth that is already ~300 MB of render target.
+inline constexpr long kMaxImagePixels = 4096L * 2304L;
 inline constexpr int kMaxFps = 120;
 
 struct ImageSize {
   int width = 0, height = 0;
 };
-// "WxH", both in [16, 8192]; throws gestura::Error quoting the text otherwise.
+// "WxH", both in [16, 4096] and at most kMaxImagePixels in all; throws gestura::Error quoting the text otherwise.
 ImageSize parse_image_size(const std::string& text);
 // An integer in [1, 120]; throws gestura::Error quoting the text otherwise.
 int parse_fps(const std::string& text);
