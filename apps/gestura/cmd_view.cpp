@@ -2,6 +2,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -123,8 +124,9 @@ int run(const std::vector<std::string>& args) {
     else if (a == "--screenshot") screenshot = flag_value(args, i);
     else if (a == "--frames") {
       const std::string n = flag_value(args, i);
-      screenshot_frames = static_cast<int>(parse_seconds(n, "--frames"));
-      if (std::to_string(screenshot_frames) != n || screenshot_frames < 1) throw Error("bad --frames '" + n + "' (a whole number >= 1)");
+      const auto [end, ec] = std::from_chars(n.data(), n.data() + n.size(), screenshot_frames);
+      if (ec != std::errc() || end != n.data() + n.size() || screenshot_frames < 1 || screenshot_frames > 100000)
+        throw Error("bad --frames '" + n + "' (a whole number 1..100000)");
     } else if (a == "--rest") motion = Motion::Rest;
     else if (a == "--test-motion") motion = Motion::TestMotion;
     else if (!a.empty() && a[0] == '-') throw Error("unknown flag " + a + " (see gestura view --help)");
