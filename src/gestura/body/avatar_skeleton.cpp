@@ -1,5 +1,8 @@
 #include "gestura/body/avatar_skeleton.hpp"
 
+#include "gestura/body/avatar_proportions.hpp"
+
+#include <algorithm>
 #include <string>
 
 namespace gestura {
@@ -46,6 +49,7 @@ struct Builder {
 struct SideDims {
   float side;  // +1 left, −1 right
   float scale, shoulder_x, hip_x, upper_arm, forearm, hand, phalanx;
+  float a_pose = 0.0f;  // radians from vertical
 };
 
 vec3 mirror(vec3 p, float side) { return vec3(p.x * side, p.y, p.z); }
@@ -61,8 +65,9 @@ void add_arm(Builder& b, int vt1, const SideDims& s) {
   const vec3 shoulder_pos = at(vec3(s.shoulder_x, 1.385f * k, -0.020f * k));
   const int shoulder = b.add(p + "shoulder", clav, shoulder_pos,
                              limits(dofs(RotationOrder::ZXY, kX | kY | kZ, {-188, -70, -48}, {61, 90, 134})));
-  // A-pose: the arm hangs 10° away from the body, in the frontal plane.
-  const float a = deg(10.0f);
+  // A-pose: the arm hangs 10° away from the body in the frontal plane, more for a heavier build so
+  // that the hands stay clear of the hips.
+  const float a = s.a_pose;
   const vec3 down = at(vec3(std::sin(a), -std::cos(a), 0.0f));
   const vec3 elbow_pos = shoulder_pos + down * s.upper_arm;
   const int elbow = b.add(p + "elbow", shoulder, elbow_pos,
@@ -145,6 +150,20 @@ void add_leg(Builder& b, int pelvis, const SideDims& s) {
   b.add(p + "toe_tip", toes, at(hx * 1.14f, 0.016f, 0.195f));
 }
 
+// The A-pose angle: 10° from vertical, or wider when needed for the hand (with its detail box,
+// see avatar_volume.cpp) to clear the widest of pelvis and thighs by a few centimetres.
+float a_pose_angle(const AvatarParams& p, float shoulder_x) {
+  using namespace proportions;
+  const float hip_x = 0.086f * (0.8f + 0.2f * p.build);
+  const float hips = std::max(kPelvisHalfWidth * hip_factor(p.sex), hip_x + kThighRadius * thigh_factor(p.sex)) * p.build;
+  // Blend bulge of the thighs, lattice snapping (one coarse cell) and a centimetre of air.
+  const float clearance = 0.0125f * p.build + 0.016f + 0.010f;
+  const float wrist_x = hips + clearance + kThumbPalmReach * p.hand_size + hand_flesh_margin(p);
+  const float arm = 0.55f * p.arm_length;
+  const float s = std::clamp((wrist_x - shoulder_x) / arm, std::sin(deg(10.0f)), std::sin(deg(30.0f)));
+  return std::asin(s);
+}
+
 }  // namespace
 
 Skeleton build_avatar_skeleton(const AvatarParams& params) {
@@ -172,8 +191,8 @@ Skeleton build_avatar_skeleton(const AvatarParams& params) {
   b.add("temporomandibular", skull, vec3(0.0f, 1.545f, 0.030f) * k,
         dofs(RotationOrder::XYZ, kX | kY, {-2, -8, 0}, {28, 8, 0}));
   const JointDofs eye = dofs(RotationOrder::YXZ, kX | kY, {-25, -35, 0}, {30, 35, 0});
-  b.add("l_eyeball_joint", skull, vec3(0.032f, 1.598f, 0.068f) * k, eye);
-  b.add("r_eyeball_joint", skull, vec3(-0.032f, 1.598f, 0.068f) * k, mirrored(eye));
+  b.add("l_eyeball_joint", skull, vec3(0.032f, 1.598f, 0.075f) * k, eye);
+  b.add("r_eyeball_joint", skull, vec3(-0.032f, 1.598f, 0.075f) * k, mirrored(eye));
   b.add("skull_tip", skull, vec3(0.0f, 1.700f, 0.000f) * k);
 
   for (float side : {1.0f, -1.0f}) {
@@ -184,7 +203,8 @@ Skeleton build_avatar_skeleton(const AvatarParams& params) {
                         0.300f * k * params.arm_length,
                         0.250f * k * params.arm_length,
                         k * hand * params.hand_size,
-                        params.finger_length};
+                        params.finger_length,
+                        a_pose_angle(params, shoulder * params.shoulder_width * (0.85f + 0.15f * params.build))};
     add_arm(b, vt1, dims);
   }
   for (float side : {1.0f, -1.0f}) {

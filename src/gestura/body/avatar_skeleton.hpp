@@ -3,7 +3,8 @@
 // freedom, built from AvatarParams (no asset files).
 //
 // Rest pose: standing, feet on y = 0, facing +Z, the avatar's left is +X, arms hanging in a slight
-// A-pose (10° from vertical) with the palms facing the thighs, thumbs forward, fingers straight and
+// A-pose (10° from vertical; up to 30° for heavy builds, narrow shoulders or bulky hands, so the hands
+// clear the hips) with the palms facing the thighs, thumbs forward, fingers straight and
 // slightly spread. Metres.
 //
 // AXIS CONVENTION (what sign synthesis needs to drive the joints)

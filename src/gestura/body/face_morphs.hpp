@@ -1,0 +1,54 @@
+#pragma once
+// Facial morph targets of the default avatar, made by region-based free-form deformation
+// (realtime-virtual-humans.txt §5.1): each morph is a sum of displacement fields, each confined to
+// a region of the face with a smooth (1 − r²)² falloff — lift a brow, rotate the lower face about
+// the jaw, pull the lips towards the mouth centre, squash a lid onto the other.
+//
+// Naming (camelCase with _L / _R for the avatar's left / right, as in ARKit blend shapes):
+//   visemes (Oculus/MPEG-4-style set): sil PP FF TH DD kk CH SS nn RR aa E ih oh ou
+//   browInnerUp_L/R browOuterUp_L/R browDown_L/R eyeBlink_L/R eyeWide_L/R eyeSquint_L/R cheekPuff
+//   mouthSmile_L/R (lip corner up) mouthFrown_L/R mouthPucker mouthPress mouthOpen tongueOut
+// The lips and lids are one surface with the face (no separate eye or mouth meshes), so blinks
+// squash the exposed eyeball under the lid and mouth shapes stretch the mouth slit.
+#include <array>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "gestura/body/mesh.hpp"
+#include "gestura/skeleton/skeleton.hpp"
+
+namespace gestura {
+
+inline constexpr std::array<std::string_view, 15> kVisemeNames{"sil", "PP", "FF", "TH", "DD", "kk", "CH", "SS",
+                                                               "nn",  "RR", "aa", "E",  "ih", "oh", "ou"};
+inline constexpr std::array<std::string_view, 21> kExpressionMorphNames{
+    "browInnerUp_L", "browInnerUp_R", "browOuterUp_L", "browOuterUp_R", "browDown_L",   "browDown_R",
+    "eyeBlink_L",    "eyeBlink_R",    "eyeWide_L",     "eyeWide_R",     "eyeSquint_L",  "eyeSquint_R",
+    "cheekPuff",     "mouthSmile_L",  "mouthSmile_R",  "mouthFrown_L",  "mouthFrown_R", "mouthPucker",
+    "mouthPress",    "mouthOpen",     "tongueOut"};
+
+// All morphs above, visemes first. `scale` = avatar height / 1.70 m. Only vertices of the head move.
+std::vector<MorphTarget> build_face_morphs(const Skeleton& skeleton, const Mesh& mesh, float scale);
+
+// Fills every morph's normal_deltas: the change of the area-weighted vertex normal when the morph
+// is applied at full weight (computed on the tessellation, so rest and morphed normals compare).
+void compute_morph_normal_deltas(Mesh& mesh);
+
+// The six universal expressions of MPEG-4 facial animation plus neutral.
+enum class Expression { Neutral, Joy, Sadness, Anger, Fear, Disgust, Surprise };
+inline constexpr std::array<std::string_view, 7> kExpressionNames{"neutral", "joy",     "sadness", "anger",
+                                                                  "fear",    "disgust", "surprise"};
+// Throws gestura::Error for an unknown name.
+Expression parse_expression(std::string_view name);
+
+// The expression as weights over the named morphs (the table in face_morphs.cpp).
+std::vector<std::pair<std::string_view, float>> expression_weights(Expression expression);
+
+// Weights for every morph of `mesh` (0 for morphs the expression does not use), times intensity.
+std::vector<float> expression_morph_weights(const Mesh& mesh, Expression expression, float intensity = 1.0f);
+
+// V' = V + Σ w·ΔV. weights.size() must equal mesh.morphs.size().
+std::vector<vec3> apply_morphs(const Mesh& mesh, const std::vector<float>& weights);
+
+}  // namespace gestura

@@ -1,0 +1,116 @@
+#include "gestura/body/implicit_body.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace gestura {
+namespace {
+
+// Polynomial smooth minimum: equals min(a, b) once |a − b| ≥ k, rounds the crease within k.
+float smooth_min(float a, float b, float k) {
+  if (k <= 0.0f) return std::min(a, b);
+  const float h = std::max(k - std::abs(a - b), 0.0f) / k;
+  return std::min(a, b) - h * h * k * 0.25f;
+}
+float smooth_max(float a, float b, float k) { return -smooth_min(-a, -b, k); }
+
+float apply(BlendOp op, float field, float d, float k) {
+  switch (op) {
+    case BlendOp::Union: return smooth_min(field, d, k);
+    case BlendOp::Subtract: return smooth_max(field, -d, k);
+    case BlendOp::Intersect: return smooth_max(field, d, k);
+  }
+  return field;
+}
+
+bool outside_box(const Primitive& s, const vec3& p, float margin) {
+  return p.x < s.lo.x - margin || p.y < s.lo.y - margin || p.z < s.lo.z - margin || p.x > s.hi.x + margin ||
+         p.y > s.hi.y + margin || p.z > s.hi.z + margin;
+}
+
+}  // namespace
+
+float primitive_distance(const Primitive& s, const vec3& p) {
+  switch (s.shape) {
+    case PrimitiveShape::Capsule: {
+      const vec3 ba = s.b - s.a, pa = p - s.a;
+      const float len2 = glm::dot(ba, ba);
+      const float t = len2 > 0.0f ? std::clamp(glm::dot(pa, ba) / len2, 0.0f, 1.0f) : 0.0f;
+      return glm::length(pa - ba * t) - (s.radius_a + (s.radius_b - s.radius_a) * t);
+    }
+    case PrimitiveShape::Ellipsoid: {
+      const vec3 q = glm::transpose(s.axes) * (p - s.a);
+      const float k0 = glm::length(q / s.radii);
+      const float k1 = glm::length(q / (s.radii * s.radii));
+      if (k1 <= 0.0f) return -std::min(s.radii.x, std::min(s.radii.y, s.radii.z));
+      return k0 * (k0 - 1.0f) / k1;
+    }
+    case PrimitiveShape::RoundBox: {
+      const vec3 q = glm::abs(glm::transpose(s.axes) * (p - s.a)) - s.radii;
+      return glm::length(glm::max(q, vec3(0.0f))) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f) - s.radius_a;
+    }
+    case PrimitiveShape::HalfSpace: return glm::dot(p - s.a, s.axes[1]);
+  }
+  return std::numeric_limits<float>::infinity();
+}
+
+void ImplicitBody::finish() {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  lo = vec3(inf);
+  hi = vec3(-inf);
+  for (Primitive& s : primitives) {
+    vec3 extent(0.0f);
+    switch (s.shape) {
+      case PrimitiveShape::Capsule:
+        s.lo = glm::min(s.a - s.radius_a, s.b - s.radius_b);
+        s.hi = glm::max(s.a + s.radius_a, s.b + s.radius_b);
+        break;
+      case PrimitiveShape::Ellipsoid:
+      case PrimitiveShape::RoundBox: {
+        const float round = s.shape == PrimitiveShape::RoundBox ? s.radius_a : 0.0f;
+        for (int i = 0; i < 3; ++i) {
+          float e = 0.0f;
+          for (int j = 0; j < 3; ++j) e += std::abs(s.axes[j][i]) * s.radii[j];
+          extent[i] = e + round;
+        }
+        s.lo = s.a - extent;
+        s.hi = s.a + extent;
+        break;
+      }
+      case PrimitiveShape::HalfSpace:
+        s.lo = vec3(-inf);
+        s.hi = vec3(inf);
+        break;
+    }
+    if (s.op == BlendOp::Union) {
+      lo = glm::min(lo, s.lo);
+      hi = glm::max(hi, s.hi);
+    }
+  }
+}
+
+float ImplicitBody::field(const vec3& p, float band) const {
+  float f = band;
+  for (const Primitive& s : primitives) {
+    if (s.op != BlendOp::Intersect && outside_box(s, p, band + s.blend)) continue;
+    f = apply(s.op, f, primitive_distance(s, p), s.blend);
+  }
+  return std::clamp(f, -band, band);
+}
+
+vec3 ImplicitBody::gradient(const vec3& p, float step) const {
+  const float band = 0.05f;
+  const vec3 dx(step, 0, 0), dy(0, step, 0), dz(0, 0, step);
+  return vec3(field(p + dx, band) - field(p - dx, band), field(p + dy, band) - field(p - dy, band),
+              field(p + dz, band) - field(p - dz, band)) /
+         (2.0f * step);
+}
+
+void ImplicitBody::distances(const vec3& p, std::span<float> out) const {
+  for (std::size_t i = 0; i < primitives.size(); ++i) {
+    const Primitive& s = primitives[i];
+    out[i] = s.op == BlendOp::Union ? primitive_distance(s, p) : std::numeric_limits<float>::infinity();
+  }
+}
+
+}  // namespace gestura

@@ -1,0 +1,57 @@
+#include "gestura/render/look.hpp"
+
+#include <cctype>
+
+#include "gestura/core/error.hpp"
+
+namespace gestura {
+
+Look::Look() {
+  auto set = [this](MaterialId m, vec3 color, SurfaceResponse surface) {
+    colors[static_cast<std::size_t>(m)] = color;
+    surfaces[static_cast<std::size_t>(m)] = surface;
+  };
+  set(MaterialId::Skin, {0.88f, 0.68f, 0.57f}, {0.5f, 0.35f, 0.10f, 24.0f});
+  set(MaterialId::Cloth, {0.11f, 0.12f, 0.15f}, {0.2f, 0.0f, 0.04f, 8.0f});
+  set(MaterialId::Hair, {0.20f, 0.13f, 0.08f}, {0.3f, 0.0f, 0.15f, 30.0f});
+  set(MaterialId::EyeWhite, {0.90f, 0.88f, 0.85f}, {0.3f, 0.1f, 0.9f, 200.0f});
+  set(MaterialId::Iris, {0.28f, 0.40f, 0.52f}, {0.2f, 0.0f, 1.2f, 300.0f});
+  set(MaterialId::Lips, {0.74f, 0.42f, 0.42f}, {0.5f, 0.4f, 0.25f, 40.0f});
+  set(MaterialId::Teeth, {0.94f, 0.92f, 0.86f}, {0.3f, 0.1f, 0.3f, 60.0f});
+  set(MaterialId::Tongue, {0.78f, 0.38f, 0.40f}, {0.5f, 0.4f, 0.3f, 40.0f});
+  set(MaterialId::Brow, {0.18f, 0.12f, 0.08f}, {0.3f, 0.0f, 0.05f, 10.0f});
+  set(MaterialId::Pupil, {0.02f, 0.02f, 0.02f}, {0.0f, 0.0f, 1.5f, 300.0f});
+}
+
+namespace {
+constexpr const char* kMaterialNames[kMaterialCount] = {"skin", "cloth", "hair", "eye-white", "iris",
+                                                         "lips", "teeth", "tongue", "brow", "pupil"};
+}
+
+const char* material_name(MaterialId material) { return kMaterialNames[static_cast<std::size_t>(material)]; }
+
+MaterialId parse_material(const std::string& name) {
+  std::string all;
+  for (int m = 0; m < kMaterialCount; ++m) {
+    if (name == kMaterialNames[m]) return static_cast<MaterialId>(m);
+    all += (m ? ", " : "") + std::string(kMaterialNames[m]);
+  }
+  throw Error("unknown material '" + name + "' (" + all + ")");
+}
+
+void apply_color_setting(Look& look, const std::string& setting) {
+  const auto eq = setting.find('=');
+  if (eq == std::string::npos) throw Error("bad --color '" + setting + "' (expected MATERIAL=#rrggbb)");
+  look.set_color(parse_material(setting.substr(0, eq)), parse_hex_color(setting.substr(eq + 1)));
+}
+
+vec3 parse_hex_color(const std::string& text) {
+  std::string hex = !text.empty() && text[0] == '#' ? text.substr(1) : text;
+  bool ok = hex.size() == 6;
+  for (char c : hex) ok = ok && std::isxdigit(static_cast<unsigned char>(c));
+  if (!ok) throw Error("bad colour '" + text + "' (expected #rrggbb)");
+  const unsigned long value = std::stoul(hex, nullptr, 16);
+  return vec3((value >> 16) & 0xff, (value >> 8) & 0xff, value & 0xff) / 255.0f;
+}
+
+}  // namespace gestura

@@ -1,0 +1,65 @@
+#pragma once
+// Rendering a subject to a file: one still (PNG), a contact sheet (16 frames in a 4×4 grid as one
+// PNG) or an animation (GIF/MP4/WebM), headless. Option parsing lives here too, so the CLI and the
+// tests share the same checks and messages.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gestura/render/camera.hpp"
+#include "gestura/render/look.hpp"
+#include "gestura/render/renderer.hpp"
+#include "gestura/render/subject.hpp"
+
+namespace gestura {
+
+inline constexpr int kMinImageSide = 16, kMaxImageSide = 4096;
+// 4096×2304: with 4× MSAA colour and depth that is already ~300 MB of render target.
+inline constexpr long kMaxImagePixels = 4096L * 2304L;
+inline constexpr int kMaxFps = 120;
+
+struct ImageSize {
+  int width = 0, height = 0;
+};
+// "WxH", both in [16, 4096] and at most kMaxImagePixels in all; throws gestura::Error quoting the text otherwise.
+ImageSize parse_image_size(const std::string& text);
+// An integer in [1, 120]; throws gestura::Error quoting the text otherwise.
+int parse_fps(const std::string& text);
+// A finite number >= 0 (seconds); throws gestura::Error quoting the text and the flag otherwise.
+float parse_seconds(const std::string& text, const std::string& flag);
+
+struct RenderJob {
+  std::string output;                          // .png, .gif, .mp4 or .webm
+  ImageSize size{1280, 720};
+  int fps = 30;
+  std::vector<CameraPreset> cameras{CameraPreset::Front};  // more than one: split view
+  std::optional<Orbit> orbit;                  // replaces the presets when set
+  bool orbit_about_body = true;                // aim the orbit at the front framing's centre, not orbit->target
+  Look look;
+  bool sheet = false;                          // PNG only: 4×4 contact sheet over the clip
+  float still_time = 0.0f;                     // the time a single PNG shows
+  float rest_seconds = 2.0f;                   // animation length when the subject has no clip
+  SkinningPath skinning = SkinningPath::Gpu;
+};
+
+// Throws gestura::Error for a bad combination (sheet with a video, unknown extension, sizes out of
+// range, odd sizes for MP4/WebM) before anything is rendered.
+void validate(const RenderJob& job);
+
+// The number of frames an animation of `seconds` at `fps` has: frames at 0, 1/fps, … up to and
+// including the end (at least 1).
+int frame_count(float seconds, int fps);
+
+struct RenderReport {
+  int frames = 0;
+  std::string renderer;  // GL platform and renderer name
+};
+
+// Renders headless and writes job.output (staged: nothing is left behind on failure).
+RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job);
+
+// The views for an image of `width`×`height`: one per camera (split grid) or the orbit.
+std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int width, int height);
+
+}  // namespace gestura

@@ -1,0 +1,478 @@
+#include "gestura/render/renderer.hpp"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+#include "gestura/core/error.hpp"
+#include "gestura/render/cpu_skinning.hpp"
+
+namespace gestura {
+namespace {
+
+// Texture units of the three texture buffers the vertex shader reads.
+constexpr GLint kMorphDeltaUnit = 1, kMorphWeightUnit = 2;
+constexpr GLuint kJointBlockBinding = 0;
+
+// Compiled with "#define MAX_JOINTS n" prepended (n from the GL's uniform block size).
+constexpr const char* kVertexShader = R"(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in uint a_material;
+layout(location = 3) in uvec4 a_joints;
+layout(location = 4) in vec4 a_weights;
+layout(location = 5) in uvec2 a_morph_range;   // first entry, entry count
+
+layout(std140) uniform Joints { mat4 u_joints[MAX_JOINTS]; };  // skinning matrices
+uniform samplerBuffer u_morph_deltas;  // 2 texels per entry: (position delta, morph index), (normal delta, 0)
+uniform samplerBuffer u_morph_weights; // one weight per morph target
+uniform bool u_skin_on_gpu;
+uniform bool u_morphs_active;
+uniform mat4 u_view_projection;
+
+out vec3 v_world;
+out vec3 v_normal;
+flat out uint v_material;
+
+mat4 joint_matrix(uint j) { return u_joints[j]; }
+
+void main() {
+  vec3 p = a_position;
+  vec3 n = a_normal;
+  if (u_skin_on_gpu) {
+    if (u_morphs_active) {
+      for (uint e = a_morph_range.x; e < a_morph_range.x + a_morph_range.y; ++e) {
+        vec4 d = texelFetch(u_morph_deltas, int(e) * 2);
+        float w = texelFetch(u_morph_weights, int(d.w)).r;
+        p += w * d.xyz;
+        n += w * texelFetch(u_morph_deltas, int(e) * 2 + 1).xyz;
+      }
+    }
+    mat4 m = a_weights.x * joint_matrix(a_joints.x) + a_weights.y * joint_matrix(a_joints.y) +
+             a_weights.z * joint_matrix(a_joints.z) + a_weights.w * joint_matrix(a_joints.w);
+    p = (m * vec4(p, 1.0)).xyz;
+    n = mat3(m) * n;
+  }
+  v_world = p;
+  v_normal = n;
+  v_material = a_material;
+  gl_Position = u_view_projection * vec4(p, 1.0);
+}
+)";
+
+// Skin-like shading: wrap lighting with a reddish scatter band at the terminator (a cheap
+// subsurface look), three soft lights fixed to the avatar (warm key front-right, cool fill
+// front-left, rim from behind), a hemisphere ambient and a Fresnel edge that lifts silhouettes —
+// what keeps hands readable in front of a dark shirt.
+constexpr const char* kFragmentShader = R"(#version 330 core
+in vec3 v_world;
+in vec3 v_normal;
+flat in uint v_material;
+
+uniform vec3 u_eye;
+uniform vec3 u_view_direction;
+uniform bool u_orthographic;
+uniform vec3 u_albedo[10];    // linear
+uniform vec4 u_surface[10];   // wrap, scatter, specular, shininess
+
+out vec4 o_color;
+
+const vec3 kScatterTint = vec3(0.85, 0.22, 0.12);
+
+vec3 diffuse(vec3 n, vec3 l, vec3 color, vec3 albedo, vec4 s) {
+  float ndl = dot(n, l);
+  float wrapped = max((ndl + s.x) / (1.0 + s.x), 0.0);
+  float scatter = s.y * smoothstep(-s.x - 0.1, 0.0, ndl) * (1.0 - smoothstep(0.0, 0.6, ndl));
+  return color * albedo * (wrapped + kScatterTint * scatter);
+}
+
+// Blinn-Phong; only the key and rim lights get highlights (the fill is soft by design).
+float specular(vec3 n, vec3 v, vec3 l, vec4 s) {
+  return dot(n, l) > 0.0 ? s.z * pow(max(dot(n, normalize(l + v)), 0.0), s.w) : 0.0;
+}
+
+void main() {
+  uint m = min(v_material, 9u);
+  vec3 n = normalize(v_normal);
+  vec3 v = u_orthographic ? -u_view_direction : normalize(u_eye - v_world);
+  if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n;
+  vec3 albedo = u_albedo[m];
+  vec4 s = u_surface[m];
+
+  const vec3 key = vec3(-0.4511, 0.5514, 0.7018), fill = vec3(0.7814, 0.1116, 0.6140), rim = vec3(0.2516, 0.4528, -0.8554);
+  const vec3 key_color = vec3(1.25, 1.18, 1.08), fill_color = vec3(0.32, 0.36, 0.44), rim_color = vec3(0.70, 0.70, 0.75);
+  vec3 c = albedo * mix(vec3(0.10, 0.09, 0.09), vec3(0.20, 0.22, 0.26), n.y * 0.5 + 0.5);
+  c += diffuse(n, key, key_color, albedo, s) + diffuse(n, fill, fill_color, albedo, s) + diffuse(n, rim, rim_color, albedo, s);
+  if (s.z > 0.0) c += key_color * specular(n, v, key, s) + rim_color * specular(n, v, rim, s);
+  float facing = 1.0 - max(dot(n, v), 0.0);
+  c += facing * facing * facing * 0.25 * mix(albedo, vec3(1.0), 0.3);
+  c = c / (1.0 + 0.12 * c);   // soft shoulder instead of hard clipping
+  o_color = vec4(pow(clamp(c, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0);
+}
+)";
+
+GLuint compile(GLenum type, const std::string& source) {
+  const GLuint shader = glCreateShader(type);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[2048] = {};
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    glDeleteShader(shader);
+    throw Error(std::string("renderer: shader does not compile: ") + log);
+  }
+  return shader;
+}
+
+void check_gl(const char* what) {
+  const GLenum e = glGetError();
+  if (e == GL_OUT_OF_MEMORY) throw Error(std::string("renderer: out of GPU memory while ") + what);
+  if (e != GL_NO_ERROR) throw Error(std::string("renderer: OpenGL error ") + std::to_string(e) + " while " + what);
+}
+
+}  // namespace
+
+struct Renderer::Gl {
+  GLuint program = 0;
+  GLint u_view_projection = -1, u_skin_on_gpu = -1, u_morphs_active = -1, u_eye = -1, u_view_direction = -1,
+        u_orthographic = -1, u_albedo = -1, u_surface = -1;
+  GLuint gpu_vao = 0, cpu_vao = 0;
+  GLuint positions = 0, normals = 0, materials = 0, joints = 0, weights = 0, morph_ranges = 0, indices = 0;
+  GLuint skinned_positions = 0, skinned_normals = 0;
+  GLuint joint_buffer = 0, delta_buffer = 0, delta_texture = 0, weight_buffer = 0,
+         weight_texture = 0;
+  GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0, resolve_fbo = 0, resolve_color = 0;
+  GLsizei index_count = 0;
+};
+
+Renderer::Renderer(const Look& look, int msaa_samples) : gl_(std::make_unique<Gl>()), look_(look) {
+  GLint max_samples = 1;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  samples_ = std::clamp(msaa_samples, 1, std::max(1, static_cast<int>(max_samples)));
+
+  GLint block_bytes = 0;
+  glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &block_bytes);
+  max_gpu_joints_ = std::min<std::size_t>(1024, static_cast<std::size_t>(block_bytes) / sizeof(mat4));
+  const GLuint vs = compile(GL_VERTEX_SHADER, "#version 330 core\n#define MAX_JOINTS " + std::to_string(max_gpu_joints_) +
+                                                  kVertexShader);
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
+  Gl& g = *gl_;
+  g.program = glCreateProgram();
+  glAttachShader(g.program, vs);
+  glAttachShader(g.program, fs);
+  glLinkProgram(g.program);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(g.program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[2048] = {};
+    glGetProgramInfoLog(g.program, sizeof log, nullptr, log);
+    throw Error(std::string("renderer: shaders do not link: ") + log);
+  }
+  auto loc = [&](const char* name) { return glGetUniformLocation(g.program, name); };
+  g.u_view_projection = loc("u_view_projection");
+  g.u_skin_on_gpu = loc("u_skin_on_gpu");
+  g.u_morphs_active = loc("u_morphs_active");
+  g.u_eye = loc("u_eye");
+  g.u_view_direction = loc("u_view_direction");
+  g.u_orthographic = loc("u_orthographic");
+  g.u_albedo = loc("u_albedo");
+  g.u_surface = loc("u_surface");
+  glUseProgram(g.program);
+  glUniformBlockBinding(g.program, glGetUniformBlockIndex(g.program, "Joints"), kJointBlockBinding);
+  glUniform1i(loc("u_morph_deltas"), kMorphDeltaUnit);
+  glUniform1i(loc("u_morph_weights"), kMorphWeightUnit);
+
+  GLuint buffers[11];
+  glGenBuffers(11, buffers);
+  g.positions = buffers[0], g.normals = buffers[1], g.materials = buffers[2], g.joints = buffers[3];
+  g.weights = buffers[4], g.morph_ranges = buffers[5], g.indices = buffers[6], g.skinned_positions = buffers[7];
+  g.skinned_normals = buffers[8], g.joint_buffer = buffers[9], g.delta_buffer = buffers[10];
+  glGenBuffers(1, &g.weight_buffer);
+  glGenVertexArrays(1, &g.gpu_vao);
+  glGenVertexArrays(1, &g.cpu_vao);
+  GLuint textures[2];
+  glGenTextures(2, textures);
+  g.delta_texture = textures[0], g.weight_texture = textures[1];
+  glBindBuffer(GL_UNIFORM_BUFFER, g.joint_buffer);
+  glBufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(max_gpu_joints_ * sizeof(mat4)), nullptr, GL_STREAM_DRAW);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_CULL_FACE);
+  check_gl("setting up the renderer");
+}
+
+Renderer::~Renderer() {
+  Gl& g = *gl_;
+  const GLuint buffers[] = {g.positions, g.normals, g.materials, g.joints, g.weights, g.morph_ranges,
+                            g.indices, g.skinned_positions, g.skinned_normals, g.joint_buffer, g.delta_buffer,
+                            g.weight_buffer};
+  glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
+  const GLuint textures[] = {g.delta_texture, g.weight_texture, g.resolve_color};
+  glDeleteTextures(static_cast<GLsizei>(std::size(textures)), textures);
+  const GLuint renderbuffers[] = {g.msaa_color, g.msaa_depth};
+  glDeleteRenderbuffers(2, renderbuffers);
+  const GLuint framebuffers[] = {g.msaa_fbo, g.resolve_fbo};
+  glDeleteFramebuffers(2, framebuffers);
+  const GLuint vaos[] = {g.gpu_vao, g.cpu_vao};
+  glDeleteVertexArrays(2, vaos);
+  glDeleteProgram(g.program);
+}
+
+void Renderer::upload(const Mesh& mesh) {
+  const std::size_t n = mesh.vertex_count();
+  if (n == 0 || mesh.indices.empty()) throw Error("renderer: the mesh is empty");
+  if (mesh.normals.size() != n || mesh.materials.size() != n || mesh.joints.size() != n || mesh.weights.size() != n)
+    throw Error("renderer: mesh arrays differ in length (positions " + std::to_string(n) + ", normals " +
+                std::to_string(mesh.normals.size()) + ", materials " + std::to_string(mesh.materials.size()) +
+                ", joints " + std::to_string(mesh.joints.size()) + ", weights " + std::to_string(mesh.weights.size()) + ")");
+  if (mesh.indices.size() % 3 != 0) throw Error("renderer: index count is not a multiple of 3");
+  for (std::size_t i = 0; i < mesh.indices.size(); ++i)
+    if (mesh.indices[i] >= n) throw Error("renderer: index " + std::to_string(i) + " refers to vertex " +
+                                          std::to_string(mesh.indices[i]) + " of " + std::to_string(n));
+  mesh_ = mesh;
+  joint_limit_ = 0;
+  for (const JointIndices& j : mesh.joints)
+    joint_limit_ = std::max<std::size_t>(joint_limit_, 1u + std::max(std::max(j.x, j.y), std::max(j.z, j.w)));
+
+  // Sparse morph deltas regrouped per vertex: (offset, count) per vertex into an entry list.
+  std::vector<glm::uvec2> ranges(n, glm::uvec2(0));
+  for (std::size_t m = 0; m < mesh.morphs.size(); ++m) {
+    const MorphTarget& t = mesh.morphs[m];
+    if (t.position_deltas.size() != t.vertices.size() || (!t.normal_deltas.empty() && t.normal_deltas.size() != t.vertices.size()))
+      throw Error("renderer: morph '" + t.name + "' has delta arrays of the wrong length");
+    for (std::uint32_t v : t.vertices) {
+      if (v >= n) throw Error("renderer: morph '" + t.name + "' refers to vertex " + std::to_string(v) + " of " + std::to_string(n));
+      ++ranges[v].y;
+    }
+  }
+  std::uint32_t offset = 0;
+  for (glm::uvec2& r : ranges) r.x = offset, offset += r.y, r.y = 0;
+  std::vector<vec4> entries(std::max<std::size_t>(2, 2 * static_cast<std::size_t>(offset)), vec4(0.0f));
+  for (std::size_t m = 0; m < mesh.morphs.size(); ++m) {
+    const MorphTarget& t = mesh.morphs[m];
+    for (std::size_t k = 0; k < t.vertices.size(); ++k) {
+      glm::uvec2& r = ranges[t.vertices[k]];
+      const std::size_t e = 2 * (r.x + r.y++);
+      entries[e] = vec4(t.position_deltas[k], static_cast<float>(m));
+      entries[e + 1] = vec4(t.normal_deltas.empty() ? vec3(0.0f) : t.normal_deltas[k], 0.0f);
+    }
+  }
+
+  Gl& g = *gl_;
+  auto fill = [](GLenum target, GLuint buffer, std::size_t bytes, const void* data, GLenum usage) {
+    glBindBuffer(target, buffer);
+    glBufferData(target, static_cast<GLsizeiptr>(bytes), data, usage);
+  };
+  fill(GL_ARRAY_BUFFER, g.positions, n * sizeof(vec3), mesh.positions.data(), GL_STATIC_DRAW);
+  fill(GL_ARRAY_BUFFER, g.normals, n * sizeof(vec3), mesh.normals.data(), GL_STATIC_DRAW);
+  fill(GL_ARRAY_BUFFER, g.materials, n, mesh.materials.data(), GL_STATIC_DRAW);
+  fill(GL_ARRAY_BUFFER, g.joints, n * sizeof(JointIndices), mesh.joints.data(), GL_STATIC_DRAW);
+  fill(GL_ARRAY_BUFFER, g.weights, n * sizeof(vec4), mesh.weights.data(), GL_STATIC_DRAW);
+  fill(GL_ARRAY_BUFFER, g.morph_ranges, n * sizeof(glm::uvec2), ranges.data(), GL_STATIC_DRAW);
+  fill(GL_ARRAY_BUFFER, g.skinned_positions, n * sizeof(vec3), nullptr, GL_STREAM_DRAW);
+  fill(GL_ARRAY_BUFFER, g.skinned_normals, n * sizeof(vec3), nullptr, GL_STREAM_DRAW);
+  fill(GL_TEXTURE_BUFFER, g.delta_buffer, entries.size() * sizeof(vec4), entries.data(), GL_STATIC_DRAW);
+  glActiveTexture(GL_TEXTURE0 + kMorphDeltaUnit);
+  glBindTexture(GL_TEXTURE_BUFFER, g.delta_texture);
+  glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, g.delta_buffer);
+
+  auto float_attribute = [](GLuint index, GLuint buffer, GLint size) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    glEnableVertexAttribArray(index);
+    glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, 0, nullptr);
+  };
+  auto int_attribute = [](GLuint index, GLuint buffer, GLint size, GLenum type) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    glEnableVertexAttribArray(index);
+    glVertexAttribIPointer(index, size, type, 0, nullptr);
+  };
+  glBindVertexArray(g.gpu_vao);
+  float_attribute(0, g.positions, 3);
+  float_attribute(1, g.normals, 3);
+  int_attribute(2, g.materials, 1, GL_UNSIGNED_BYTE);
+  int_attribute(3, g.joints, 4, GL_UNSIGNED_SHORT);
+  float_attribute(4, g.weights, 4);
+  int_attribute(5, g.morph_ranges, 2, GL_UNSIGNED_INT);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
+               mesh.indices.data(), GL_STATIC_DRAW);
+  glBindVertexArray(g.cpu_vao);
+  float_attribute(0, g.skinned_positions, 3);
+  float_attribute(1, g.skinned_normals, 3);
+  int_attribute(2, g.materials, 1, GL_UNSIGNED_BYTE);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices);
+  glBindVertexArray(0);
+  g.index_count = static_cast<GLsizei>(mesh.indices.size());
+
+  scratch_positions_.resize(n);
+  scratch_normals_.resize(n);
+  skinned_positions_.resize(n);
+  skinned_normals_.resize(n);
+  check_gl("uploading the mesh");
+}
+
+void Renderer::resize(int width, int height) {
+  if (width == width_ && height == height_) return;
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+  if (width <= 0 || height <= 0 || width > max_size || height > max_size)
+    throw Error("renderer: cannot render " + std::to_string(width) + "x" + std::to_string(height) +
+                " (this GL allows 1.." + std::to_string(max_size) + " per side)");
+  Gl& g = *gl_;
+  if (g.msaa_fbo == 0) {
+    glGenFramebuffers(1, &g.msaa_fbo);
+    glGenFramebuffers(1, &g.resolve_fbo);
+    glGenRenderbuffers(1, &g.msaa_color);
+    glGenRenderbuffers(1, &g.msaa_depth);
+    glGenTextures(1, &g.resolve_color);
+  }
+  glBindRenderbuffer(GL_RENDERBUFFER, g.msaa_color);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, width, height);
+  glBindRenderbuffer(GL_RENDERBUFFER, g.msaa_depth);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT24, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, g.msaa_fbo);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, g.msaa_color);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, g.msaa_depth);
+  const GLenum msaa_status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  glBindTexture(GL_TEXTURE_2D, g.resolve_color);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glBindFramebuffer(GL_FRAMEBUFFER, g.resolve_fbo);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, g.resolve_color, 0);
+  const GLenum resolve_status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  check_gl("allocating the render target");
+  if (msaa_status != GL_FRAMEBUFFER_COMPLETE || resolve_status != GL_FRAMEBUFFER_COMPLETE)
+    throw Error("renderer: the " + std::to_string(width) + "x" + std::to_string(height) + " render target is incomplete");
+  width_ = width, height_ = height;
+}
+
+void Renderer::render(std::span<const View> views, std::span<const mat4> skinning, std::span<const float> morph_weights,
+                      SkinningPath path) {
+  if (width_ == 0) throw Error("renderer: resize() before render()");
+  if (gl_->index_count == 0) throw Error("renderer: upload() a mesh before render()");
+  if (skinning.size() < joint_limit_)
+    throw Error("renderer: the mesh uses " + std::to_string(joint_limit_) + " joints but only " +
+                std::to_string(skinning.size()) + " skinning matrices were given");
+  if (morph_weights.size() > mesh_.morphs.size())
+    throw Error("renderer: " + std::to_string(morph_weights.size()) + " morph weights for " +
+                std::to_string(mesh_.morphs.size()) + " morph targets");
+  Gl& g = *gl_;
+  glUseProgram(g.program);
+  const bool morphs_active = std::any_of(morph_weights.begin(), morph_weights.end(), [](float w) { return w != 0.0f; });
+  if (path == SkinningPath::Gpu) {
+    if (joint_limit_ > max_gpu_joints_)
+      throw Error("renderer: the mesh uses " + std::to_string(joint_limit_) + " joints; GPU skinning here holds " +
+                  std::to_string(max_gpu_joints_) + " (use the CPU skinning path)");
+    const std::size_t used = std::min(skinning.size(), max_gpu_joints_);
+    glBindBuffer(GL_UNIFORM_BUFFER, g.joint_buffer);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, static_cast<GLsizeiptr>(used * sizeof(mat4)), skinning.data());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kJointBlockBinding, g.joint_buffer);
+    std::vector<float> weights(std::max<std::size_t>(1, mesh_.morphs.size()), 0.0f);
+    std::copy(morph_weights.begin(), morph_weights.end(), weights.begin());
+    glBindBuffer(GL_TEXTURE_BUFFER, g.weight_buffer);
+    glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(weights.size() * sizeof(float)), weights.data(), GL_STREAM_DRAW);
+    glActiveTexture(GL_TEXTURE0 + kMorphWeightUnit);
+    glBindTexture(GL_TEXTURE_BUFFER, g.weight_texture);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_R32F, g.weight_buffer);
+    glActiveTexture(GL_TEXTURE0 + kMorphDeltaUnit);
+    glBindTexture(GL_TEXTURE_BUFFER, g.delta_texture);
+    glUniform1i(g.u_skin_on_gpu, 1);
+    glUniform1i(g.u_morphs_active, morphs_active ? 1 : 0);
+    glBindVertexArray(g.gpu_vao);
+  } else {
+    cpu_skin_for_render(mesh_, skinning, morph_weights, scratch_positions_, scratch_normals_, skinned_positions_,
+                        skinned_normals_);
+    const auto bytes = static_cast<GLsizeiptr>(skinned_positions_.size() * sizeof(vec3));
+    glBindBuffer(GL_ARRAY_BUFFER, g.skinned_positions);
+    glBufferData(GL_ARRAY_BUFFER, bytes, skinned_positions_.data(), GL_STREAM_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, g.skinned_normals);
+    glBufferData(GL_ARRAY_BUFFER, bytes, skinned_normals_.data(), GL_STREAM_DRAW);
+    glUniform1i(g.u_skin_on_gpu, 0);
+    glUniform1i(g.u_morphs_active, 0);
+    glBindVertexArray(g.cpu_vao);
+  }
+  vec3 albedo[kMaterialCount];  // sRGB colours to linear once per frame, not per fragment
+  for (int m = 0; m < kMaterialCount; ++m) albedo[m] = glm::pow(look_.colors[static_cast<std::size_t>(m)], vec3(2.2f));
+  glUniform3fv(g.u_albedo, kMaterialCount, &albedo[0].x);
+  vec4 surfaces[kMaterialCount];
+  for (int m = 0; m < kMaterialCount; ++m) {
+    const SurfaceResponse& s = look_.surfaces[static_cast<std::size_t>(m)];
+    surfaces[m] = vec4(s.wrap, s.scatter, s.specular, s.shininess);
+  }
+  glUniform4fv(g.u_surface, kMaterialCount, &surfaces[0].x);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, g.msaa_fbo);
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_SCISSOR_TEST);
+  glClearColor(look_.background.x, look_.background.y, look_.background.z, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  for (const View& view : views) {
+    const Viewport& vp = view.viewport;
+    const GLint y = height_ - vp.y - vp.height;
+    glViewport(vp.x, y, vp.width, vp.height);
+    glScissor(vp.x, y, vp.width, vp.height);
+    const mat4 view_projection = view.camera.projection * view.camera.view;
+    glUniformMatrix4fv(g.u_view_projection, 1, GL_FALSE, &view_projection[0][0]);
+    glUniform3fv(g.u_eye, 1, &view.camera.eye.x);
+    const vec3 direction = glm::normalize(view.camera.target - view.camera.eye);
+    glUniform3fv(g.u_view_direction, 1, &direction.x);
+    glUniform1i(g.u_orthographic, view.camera.orthographic ? 1 : 0);
+    glDrawElements(GL_TRIANGLES, g.index_count, GL_UNSIGNED_INT, nullptr);
+  }
+  glDisable(GL_SCISSOR_TEST);
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, g.msaa_fbo);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, g.resolve_fbo);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  check_gl("drawing");
+}
+
+void Renderer::read_pixels(Image& out) { read_framebuffer(gl_->resolve_fbo, width_, height_, out); }
+
+void Renderer::read_window_pixels(Image& out, int framebuffer_width, int framebuffer_height) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  read_framebuffer(0, framebuffer_width, framebuffer_height, out);
+}
+
+void Renderer::read_framebuffer(unsigned framebuffer, int width, int height, Image& out) {
+  if (out.width != width || out.height != height) out = Image(width, height);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, out.rgba.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  check_gl("reading pixels back");
+  // GL rows run bottom to top; images top to bottom.
+  const std::size_t row = static_cast<std::size_t>(width) * 4;
+  std::vector<std::uint8_t> tmp(row);
+  for (int y = 0; y < height / 2; ++y) {
+    std::uint8_t* a = out.pixel(0, y);
+    std::uint8_t* b = out.pixel(0, height - 1 - y);
+    std::memcpy(tmp.data(), a, row);
+    std::memcpy(a, b, row);
+    std::memcpy(b, tmp.data(), row);
+  }
+}
+
+void Renderer::present(int framebuffer_width, int framebuffer_height) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, gl_->resolve_fbo);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glClearColor(look_.background.x, look_.background.y, look_.background.z, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, framebuffer_width, framebuffer_height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Renderer::finish() { glFinish(); }
+
+}  // namespace gestura

@@ -1,0 +1,77 @@
+#pragma once
+// Draws a skinned, morphable Mesh. Needs a current OpenGL 3.3 core context (HeadlessGlContext or
+// WindowGlContext) for its whole life; the same drawing code serves both.
+//
+// Upload the mesh once, then per frame render() with the joints' skinning matrices (model-space
+// joint matrix × inverse bind matrix, one per joint) and morph weights (one per mesh morph target,
+// missing = 0). Two skinning paths:
+//   Gpu — bind-pose vertices stay on the GPU; the vertex shader blends four joint matrices
+//         (from a uniform block, up to max_gpu_joints()) after adding the sparse morph deltas (a texture buffer
+//         of (delta, morph index) entries per vertex, weights in another texture buffer).
+//   Cpu — the vertices are skinned on the CPU and streamed to the GPU every frame (comparison).
+// Frames go to a 4× MSAA offscreen target, resolved to a texture; read_pixels() reads it back,
+// present() blits it into the window.
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "gestura/body/mesh.hpp"
+#include "gestura/render/camera.hpp"
+#include "gestura/render/image.hpp"
+#include "gestura/render/look.hpp"
+
+namespace gestura {
+
+enum class SkinningPath : std::uint8_t { Gpu, Cpu };
+
+struct View {
+  Camera camera;
+  Viewport viewport;  // pixels in the render target, origin top-left
+};
+
+class Renderer {
+ public:
+  explicit Renderer(const Look& look = Look{}, int msaa_samples = 4);  // throws gestura::Error on GL failure
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Copies the mesh (kept for the CPU path) and uploads it. Throws gestura::Error when the mesh's
+  // arrays disagree in size or an index is out of range.
+  void upload(const Mesh& mesh);
+  void set_look(const Look& look) { look_ = look; }
+  const Look& look() const { return look_; }
+
+  // (Re)allocates the offscreen target; throws gestura::Error beyond the GL's limits.
+  void resize(int width, int height);
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // Draws all views into the offscreen target and resolves it. Throws gestura::Error when a
+  // vertex refers to a joint beyond skinning.size() or more weights than morphs are given.
+  void render(std::span<const View> views, std::span<const mat4> skinning, std::span<const float> morph_weights,
+              SkinningPath path = SkinningPath::Gpu);
+  // Waits for the GPU and copies the resolved frame into `out` (resized), rows top to bottom.
+  void read_pixels(Image& out);
+  // Reads what present() put into the window's back buffer (a screenshot of the window itself).
+  void read_window_pixels(Image& out, int framebuffer_width, int framebuffer_height);
+  // Blits the resolved frame into the default framebuffer (the window), scaled to fit.
+  void present(int framebuffer_width, int framebuffer_height);
+  std::size_t max_gpu_joints() const { return max_gpu_joints_; }
+  // Blocks until the GL has finished drawing (for measuring draw time alone).
+  void finish();
+
+ private:
+  struct Gl;
+  void read_framebuffer(unsigned framebuffer, int width, int height, Image& out);
+  std::unique_ptr<Gl> gl_;
+  Look look_;
+  Mesh mesh_;
+  int samples_;
+  int width_ = 0, height_ = 0;
+  std::size_t joint_limit_ = 0;
+  std::size_t max_gpu_joints_ = 0;  // 1 + the largest joint index any vertex uses
+  std::vector<vec3> scratch_positions_, scratch_normals_, skinned_positions_, skinned_normals_;
+};
+
+}  // namespace gestura

@@ -1,0 +1,196 @@
+// Headless rendering of the test figure: works without a display, figure pixels land where the
+// figure is, presets see different things, GPU and CPU skinning agree, morphs and colours apply.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <memory>
+
+#include "gestura/core/error.hpp"
+#include "gestura/render/gl_context.hpp"
+#include "gestura/render/renderer.hpp"
+#include "gestura/render/test_figure.hpp"
+
+namespace gestura {
+namespace {
+
+constexpr int kW = 320, kH = 180;
+
+class HeadlessRender : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    unsetenv("DISPLAY");  // headless must not need an X server
+    unsetenv("WAYLAND_DISPLAY");
+    context_ = new HeadlessGlContext();
+    figure_ = new RenderSubject(make_test_figure(1));
+  }
+  static void TearDownTestSuite() {
+    delete figure_;
+    delete context_;
+  }
+  void SetUp() override {
+    renderer_ = std::make_unique<Renderer>(look_);
+    renderer_->upload(figure_->mesh);
+    renderer_->resize(kW, kH);
+    animator_ = std::make_unique<Animator>(*figure_);
+    box_ = framing_box(figure_->mesh, figure_->skeleton);
+  }
+  Image draw(const std::vector<View>& views, SkinningPath path = SkinningPath::Gpu, std::vector<float> morphs = {}) {
+    renderer_->set_look(look_);
+    if (morphs.empty()) morphs.assign(animator_->morph_weights().begin(), animator_->morph_weights().end());
+    renderer_->render(views, animator_->skinning(), morphs, path);
+    Image image;
+    renderer_->read_pixels(image);
+    return image;
+  }
+  Image draw(CameraPreset preset) { return draw({View{preset_camera(preset, box_, float(kW) / kH), {0, 0, kW, kH}}}); }
+  bool is_background(const Image& image, int x, int y) const {
+    const std::uint8_t* p = image.pixel(x, y);
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(int(p[c]) - int(std::lround(look_.background[c] * 255.0f))) > 1) return false;
+    return true;
+  }
+  int coverage(const Image& image, Viewport area = {0, 0, kW, kH}) const {
+    int n = 0;
+    for (int y = area.y; y < area.y + area.height; ++y)
+      for (int x = area.x; x < area.x + area.width; ++x) n += !is_background(image, x, y);
+    return n;
+  }
+  // Pixel of a model-space point under a camera (in a full-image view).
+  static glm::ivec2 project(const Camera& camera, vec3 p) {
+    const vec4 clip = camera.projection * camera.view * vec4(p, 1.0f);
+    const vec3 ndc = vec3(clip) / clip.w;
+    return {int((ndc.x * 0.5f + 0.5f) * kW), int((0.5f - ndc.y * 0.5f) * kH)};
+  }
+  vec3 joint_position(const char* name) const {
+    return vec3(animator_->model()[static_cast<std::size_t>(figure_->skeleton.find(name))][3]);
+  }
+
+  static HeadlessGlContext* context_;
+  static RenderSubject* figure_;
+  Look look_;
+  std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<Animator> animator_;
+  FramingBox box_;
+};
+HeadlessGlContext* HeadlessRender::context_ = nullptr;
+RenderSubject* HeadlessRender::figure_ = nullptr;
+
+TEST_F(HeadlessRender, ContextIsOpenGlWithoutDisplay) {
+  EXPECT_EQ(std::getenv("DISPLAY"), nullptr);
+  EXPECT_NE(context_->description().find("EGL"), std::string::npos) << context_->description();
+}
+
+TEST_F(HeadlessRender, EveryPresetShowsTheHeadAndChestAndLeavesTheCornersEmpty) {
+  for (CameraPreset preset : kCameraPresets) {
+    SCOPED_TRACE(preset_name(preset));
+    const Image image = draw(preset);
+    const Camera camera = preset_camera(preset, box_, float(kW) / kH);
+    const vec3 head = joint_position("skullbase") + vec3(0.0f, 0.09f, 0.0f);
+    const vec3 chest = joint_position("vt10") + vec3(0.0f, 0.05f, 0.0f);
+    for (vec3 p : {head, chest}) {
+      const glm::ivec2 px = project(camera, p);
+      ASSERT_TRUE(px.x >= 0 && px.x < kW && px.y >= 0 && px.y < kH) << px.x << "," << px.y;
+      EXPECT_FALSE(is_background(image, px.x, px.y)) << "at " << px.x << "," << px.y;
+    }
+    EXPECT_TRUE(is_background(image, 0, 0));
+    EXPECT_TRUE(is_background(image, kW - 1, 0));
+    const double fraction = double(coverage(image)) / (kW * kH);
+    EXPECT_GT(fraction, 0.03);
+    EXPECT_LT(fraction, 0.6);
+  }
+}
+
+TEST_F(HeadlessRender, FrontViewIsEmptyBesideTheBody) {
+  const Image image = draw(CameraPreset::Front);
+  const Camera camera = preset_camera(CameraPreset::Front, box_, float(kW) / kH);
+  const glm::ivec2 beside = project(camera, joint_position("skullbase") + vec3(0.45f, 0.0f, 0.0f));
+  EXPECT_TRUE(is_background(image, beside.x, beside.y));
+}
+
+TEST_F(HeadlessRender, PresetsSeeDifferentSilhouettes) {
+  std::vector<Image> images;
+  for (CameraPreset preset : kCameraPresets) images.push_back(draw(preset));
+  for (std::size_t a = 0; a < images.size(); ++a)
+    for (std::size_t b = a + 1; b < images.size(); ++b) {
+      int differing = 0;
+      for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) differing += is_background(images[a], x, y) != is_background(images[b], x, y);
+      EXPECT_GT(differing, kW * kH / 50) << preset_name(kCameraPresets[a]) << " vs " << preset_name(kCameraPresets[b]);
+    }
+}
+
+TEST_F(HeadlessRender, RaisedHandAppearsWhereTheWristIs) {
+  animator_->pose_at(1.0f);  // the wave: right hand up in the signing space
+  const Image image = draw(CameraPreset::Front);
+  const Camera camera = preset_camera(CameraPreset::Front, box_, float(kW) / kH);
+  const glm::ivec2 wrist = project(camera, joint_position("r_wrist"));
+  EXPECT_FALSE(is_background(image, wrist.x, wrist.y));
+  const std::uint8_t* p = image.pixel(wrist.x, wrist.y);
+  EXPECT_GT(int(p[0]), int(p[2]) + 20) << "the hand is skin-coloured (red over blue), not shirt";
+}
+
+TEST_F(HeadlessRender, GpuAndCpuSkinningDrawTheSameImage) {
+  animator_->pose_at(0.8f);
+  const Image gpu = draw(CameraPreset::Front);
+  const View view{preset_camera(CameraPreset::Front, box_, float(kW) / kH), {0, 0, kW, kH}};
+  const Image cpu = draw({view}, SkinningPath::Cpu);
+  long total = 0;
+  for (std::size_t i = 0; i < gpu.rgba.size(); ++i) total += std::abs(int(gpu.rgba[i]) - int(cpu.rgba[i]));
+  EXPECT_LT(double(total) / gpu.rgba.size(), 0.5);
+  EXPECT_GT(coverage(gpu), kW * kH / 30);
+}
+
+TEST_F(HeadlessRender, MorphTargetMovesTheChinOnBothPaths) {
+  const View view{preset_camera(CameraPreset::Side, box_, float(kW) / kH), {0, 0, kW, kH}};
+  const Image closed = draw({view}, SkinningPath::Gpu, {0.0f});
+  const Image open_gpu = draw({view}, SkinningPath::Gpu, {1.0f});
+  const Image open_cpu = draw({view}, SkinningPath::Cpu, {1.0f});
+  int changed = 0;
+  long gpu_cpu = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      changed += is_background(closed, x, y) != is_background(open_gpu, x, y);
+      for (int c = 0; c < 3; ++c) gpu_cpu += std::abs(int(open_gpu.pixel(x, y)[c]) - int(open_cpu.pixel(x, y)[c]));
+    }
+  EXPECT_GT(changed, 5);
+  EXPECT_LT(double(gpu_cpu) / (kW * kH * 3), 0.5);
+}
+
+TEST_F(HeadlessRender, BackgroundAndClothingColoursAreConfigurable) {
+  look_.background = parse_hex_color("#204080");
+  look_.set_color(MaterialId::Cloth, parse_hex_color("#ff0000"));
+  const Image image = draw(CameraPreset::Front);
+  const std::uint8_t* corner = image.pixel(0, 0);
+  EXPECT_EQ(int(corner[0]), 0x20);
+  EXPECT_EQ(int(corner[1]), 0x40);
+  EXPECT_EQ(int(corner[2]), 0x80);
+  const Camera camera = preset_camera(CameraPreset::Front, box_, float(kW) / kH);
+  const glm::ivec2 chest = project(camera, joint_position("vt10"));
+  const std::uint8_t* shirt = image.pixel(chest.x, chest.y);
+  EXPECT_GT(int(shirt[0]), 3 * int(shirt[1]) + 10) << "a red shirt";
+}
+
+TEST_F(HeadlessRender, SplitViewDrawsEachCameraInItsPane) {
+  const std::vector<Viewport> panes = split_viewports(2, kW, kH);
+  ASSERT_EQ(panes.size(), 2u);
+  std::vector<View> views;
+  for (std::size_t i = 0; i < 2; ++i)
+    views.push_back({preset_camera(i ? CameraPreset::Top : CameraPreset::Front, box_,
+                                   float(panes[i].width) / panes[i].height), panes[i]});
+  const Image image = draw(views);
+  EXPECT_GT(coverage(image, panes[0]), panes[0].width * panes[0].height / 30);
+  EXPECT_GT(coverage(image, panes[1]), panes[1].width * panes[1].height / 30);
+}
+
+TEST_F(HeadlessRender, TooFewSkinningMatricesAndTooManyMorphWeightsAreErrors) {
+  const View view{preset_camera(CameraPreset::Front, box_, float(kW) / kH), {0, 0, kW, kH}};
+  std::vector<mat4> few(3, mat4(1.0f));
+  EXPECT_THROW(renderer_->render({&view, 1}, few, {}), Error);
+  std::vector<float> many(5, 0.0f);
+  EXPECT_THROW(renderer_->render({&view, 1}, animator_->skinning(), many), Error);
+}
+
+TEST_F(HeadlessRender, HugeTargetIsAnError) { EXPECT_THROW(renderer_->resize(100000, 100000), Error); }
+
+}  // namespace
+}  // namespace gestura

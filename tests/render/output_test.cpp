@@ -1,0 +1,257 @@
+// Files the renderer writes: PNG and contact sheets decode, MP4/WebM/GIF have exactly the frames
+// and frame rate asked for, bad options and unwritable paths fail clearly and leave no file.
+#include <gtest/gtest.h>
+
+extern "C" {
+#include <libavformat/avformat.h>
+}
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "gestura/core/error.hpp"
+#include "gestura/render/png_writer.hpp"
+#include "gestura/render/render_job.hpp"
+#include "gestura/render/test_figure.hpp"
+#include "gestura/render/video_writer.hpp"
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#include <stb/stb_image.h>
+#pragma GCC diagnostic pop
+
+namespace gestura {
+namespace {
+
+namespace fs = std::filesystem;
+
+class RenderOutput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    unsetenv("DISPLAY");
+    dir_ = fs::temp_directory_path() / ("gestura_render_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  // Nothing but `expected` (no temporaries) in the directory.
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  static const RenderSubject& figure() {
+    static const RenderSubject subject = make_test_figure(1);
+    return subject;
+  }
+  fs::path dir_;
+};
+
+struct StreamInfo {
+  std::string codec;
+  int frames = 0;  // packets counted by reading the whole file
+  AVRational rate{0, 1};
+  double duration = 0.0;
+};
+
+StreamInfo probe(const std::string& path) {
+  AVFormatContext* format = nullptr;
+  if (avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) return {};
+  avformat_find_stream_info(format, nullptr);
+  StreamInfo info;
+  if (format->nb_streams == 1) {
+    AVStream* s = format->streams[0];
+    info.codec = avcodec_get_name(s->codecpar->codec_id);
+    info.rate = s->r_frame_rate;
+    AVPacket* packet = av_packet_alloc();
+    while (av_read_frame(format, packet) >= 0) {
+      ++info.frames;
+      av_packet_unref(packet);
+    }
+    av_packet_free(&packet);
+    if (format->duration > 0) info.duration = double(format->duration) / AV_TIME_BASE;
+  }
+  avformat_close_input(&format);
+  return info;
+}
+
+RenderJob job(const std::string& output, int w = 160, int h = 96, int fps = 30) {
+  RenderJob j;
+  j.output = output;
+  j.size = {w, h};
+  j.fps = fps;
+  return j;
+}
+
+TEST_F(RenderOutput, PngDecodesWithTheRequestedSize) {
+  const std::string out = path("still.png");
+  render_to_file(figure(), job(out, 200, 120));
+  int w = 0, h = 0, n = 0;
+  stbi_uc* pixels = stbi_load(out.c_str(), &w, &h, &n, 4);
+  ASSERT_NE(pixels, nullptr);
+  EXPECT_EQ(w, 200);
+  EXPECT_EQ(h, 120);
+  stbi_image_free(pixels);
+  EXPECT_EQ(files(), std::vector<std::string>{"still.png"});
+}
+
+TEST_F(RenderOutput, ContactSheetIsOnePngOfSixteenDifferentTiles) {
+  const std::string out = path("sheet.png");
+  RenderJob j = job(out, 320, 192);
+  j.sheet = true;
+  EXPECT_EQ(render_to_file(figure(), j).frames, 16);
+  int w = 0, h = 0, n = 0;
+  stbi_uc* pixels = stbi_load(out.c_str(), &w, &h, &n, 4);
+  ASSERT_NE(pixels, nullptr);
+  EXPECT_EQ(w, 320);
+  EXPECT_EQ(h, 192);
+  // The first tile (rest) and the sixth (mid-wave) differ: the sheet walks through the clip.
+  int differing = 0;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 80; ++x)
+      differing += pixels[(y * w + x) * 4] != pixels[((48 + y) * w + 80 + x) * 4];
+  EXPECT_GT(differing, 40);
+  stbi_image_free(pixels);
+}
+
+TEST_F(RenderOutput, Mp4HasExactFrameCountAndRate) {
+  const std::string out = path("clip.mp4");
+  const RenderReport report = render_to_file(figure(), job(out, 160, 96, 25));
+  EXPECT_EQ(report.frames, 51);  // 2 s at 25 fps, both ends included
+  const StreamInfo info = probe(out);
+  EXPECT_EQ(info.codec, "h264");
+  EXPECT_EQ(info.frames, 51);
+  EXPECT_EQ(info.rate.num, 25);
+  EXPECT_EQ(info.rate.den, 1);
+  EXPECT_EQ(files(), std::vector<std::string>{"clip.mp4"});
+}
+
+TEST_F(RenderOutput, WebmHasExactFrameCountAndRate) {
+  const std::string out = path("clip.webm");
+  RenderJob j = job(out, 160, 96, 12);
+  render_to_file(figure(), j);
+  const StreamInfo info = probe(out);
+  EXPECT_EQ(info.codec, "vp9");
+  EXPECT_EQ(info.frames, 25);
+  EXPECT_EQ(info.rate.num, 12);
+  EXPECT_EQ(info.rate.den, 1);
+}
+
+TEST_F(RenderOutput, GifDecodesFrameByFrame) {
+  const std::string out = path("clip.gif");
+  render_to_file(figure(), job(out, 120, 72, 10));
+  const StreamInfo info = probe(out);
+  EXPECT_EQ(info.codec, "gif");
+  EXPECT_EQ(info.frames, 21);
+  EXPECT_NEAR(info.duration, 2.1, 0.05);
+}
+
+TEST_F(RenderOutput, RestPoseVideoLastsTheRequestedSeconds) {
+  const std::string out = path("rest.mp4");
+  RenderSubject rest = make_test_figure(1);
+  rest.clip.reset();
+  RenderJob j = job(out, 160, 96, 10);
+  j.rest_seconds = 0.5f;
+  render_to_file(rest, j);
+  EXPECT_EQ(probe(out).frames, 6);
+}
+
+TEST_F(RenderOutput, BadSizesAreClearErrors) {
+  for (const char* text : {"0x0", "100000x100000", "abc", "640", "640x", "-640x480", "15x100", "4097x100", "4096x4096"}) {
+    try {
+      parse_image_size(text);
+      ADD_FAILURE() << text << " accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(parse_image_size("1280x720").width, 1280);
+  EXPECT_EQ(parse_image_size("1280x720").height, 720);
+  EXPECT_EQ(parse_image_size("4096x2304").width, 4096);
+  EXPECT_THROW(validate(job(path("a.png"), 0, 0)), Error);
+}
+
+TEST_F(RenderOutput, BadFrameRatesAreClearErrors) {
+  for (const char* text : {"0", "-1", "1000", "30.5", "", "x"}) {
+    try {
+      parse_fps(text);
+      ADD_FAILURE() << "'" << text << "' accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("--fps"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(parse_fps("60"), 60);
+}
+
+TEST_F(RenderOutput, UnwritablePathsFailAndLeaveNothing) {
+  for (const std::string& out : {path("missing/dir/out.png"), path("missing/dir/out.mp4"), path("missing/out.gif")}) {
+    EXPECT_THROW(render_to_file(figure(), job(out)), Error) << out;
+  }
+  EXPECT_TRUE(files().empty());
+  // A directory in the target's place.
+  fs::create_directory(path("taken.png"));
+  EXPECT_THROW(render_to_file(figure(), job(path("taken.png"))), Error);
+  EXPECT_EQ(files(), std::vector<std::string>{"taken.png"});
+}
+
+TEST_F(RenderOutput, ReadOnlyDirectoryFailsAndLeavesNothing) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root writes into read-only directories";
+  fs::create_directory(path("ro"));
+  fs::permissions(path("ro"), fs::perms::owner_read | fs::perms::owner_exec);
+  EXPECT_THROW(render_to_file(figure(), job(path("ro/out.webm"))), Error);
+  fs::permissions(path("ro"), fs::perms::owner_all);
+  EXPECT_TRUE(fs::is_empty(path("ro")));
+}
+
+TEST_F(RenderOutput, FailedVideoLeavesNoFileAndKeepsAnOldOne) {
+  const std::string out = path("keep.mp4");
+  std::ofstream(out) << "old";
+  {
+    VideoWriter writer(out, 64, 64, 30);
+    writer.write(Image(64, 64));
+    EXPECT_THROW(writer.write(Image(32, 32)), Error);
+  }  // destroyed without finish(): abandoned
+  EXPECT_EQ(files(), std::vector<std::string>{"keep.mp4"});
+  EXPECT_EQ(fs::file_size(out), 3u);
+}
+
+TEST_F(RenderOutput, BadCombinationsAreRejectedBeforeRendering) {
+  RenderJob sheet_video = job(path("a.mp4"));
+  sheet_video.sheet = true;
+  EXPECT_THROW(validate(sheet_video), Error);
+  EXPECT_THROW(validate(job(path("a.mp4"), 161, 96)), Error);  // odd width for 4:2:0
+  EXPECT_THROW(validate(job(path("a.avi"))), Error);
+  EXPECT_THROW(validate(job("")), Error);
+  EXPECT_NO_THROW(validate(job(path("a.gif"), 161, 97)));
+  EXPECT_TRUE(files().empty());
+}
+
+TEST_F(RenderOutput, FrameCountIncludesBothEnds) {
+  EXPECT_EQ(frame_count(2.0f, 30), 61);
+  EXPECT_EQ(frame_count(0.0f, 30), 1);
+  EXPECT_EQ(frame_count(1.0f / 3.0f, 30), 11);
+}
+
+TEST_F(RenderOutput, CommandLineRejectsBadFlagsWithoutWritingFiles) {
+  const std::string out = path("cli.png");
+  const std::string cli = GESTURA_CLI;
+  for (const char* flags : {"--size 0x0", "--size 100000x100000", "--size abc", "--fps 0", "--fps -1",
+                                   "--fps 1000", "--camera nowhere", "--background '#12345'", "--color skin=blue",
+                                   "--orbit 1,2"}) {
+    const std::string command = cli + " render --rest -o " + out + " " + std::string(flags) + " 2>/dev/null";
+    EXPECT_EQ(WEXITSTATUS(std::system(command.c_str())), 1) << flags;
+  }
+  EXPECT_EQ(WEXITSTATUS(std::system((cli + " render --rest -o " + path("no/such/dir/x.png") + " 2>/dev/null").c_str())), 1);
+  EXPECT_TRUE(files().empty());
+  EXPECT_EQ(WEXITSTATUS(std::system((cli + " render --rest --size 64x64 --camera front,top -o " + out).c_str())), 0);
+  EXPECT_EQ(files(), std::vector<std::string>{"cli.png"});
+}
+
+}  // namespace
+}  // namespace gestura

@@ -1,0 +1,47 @@
+// The interactive viewer runs under a virtual X server and shows the figure: a scripted
+// screenshot of its window (after 10 frames) has the figure in the middle and background at the
+// corners. Skipped where xvfb-run is not installed.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#include <stb/stb_image.h>
+#pragma GCC diagnostic pop
+
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(RenderViewer, ScreenshotUnderXvfbShowsTheFigure) {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run not installed";
+  const fs::path shot = fs::temp_directory_path() / ("gestura_view_" + std::to_string(::getpid()) + ".png");
+  const std::string command = std::string("timeout 60 xvfb-run -a ") + GESTURA_CLI +
+                              " view --rest --size 320x240 --background '#808080' --frames 10 --screenshot " +
+                              shot.string() + " 2>/dev/null";
+  ASSERT_EQ(WEXITSTATUS(std::system(command.c_str())), 0);
+  int w = 0, h = 0, n = 0;
+  stbi_uc* pixels = stbi_load(shot.string().c_str(), &w, &h, &n, 3);
+  fs::remove(shot);
+  ASSERT_NE(pixels, nullptr);
+  EXPECT_EQ(w, 320);
+  EXPECT_EQ(h, 240);
+  auto is_background = [&](int x, int y) {
+    const stbi_uc* p = pixels + (y * w + x) * 3;
+    return std::abs(p[0] - 128) <= 1 && std::abs(p[1] - 128) <= 1 && std::abs(p[2] - 128) <= 1;
+  };
+  EXPECT_TRUE(is_background(0, 0));
+  EXPECT_TRUE(is_background(w - 1, h - 1));
+  int figure = 0;
+  for (int y = 0; y < h; ++y) figure += !is_background(w / 2, y);
+  EXPECT_GT(figure, h / 2) << "the body runs down the middle column";
+  stbi_image_free(pixels);
+}
+
+}  // namespace
