@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -47,6 +48,22 @@ TEST(LexiconCli, AddShowSearchExportRemove) {
 
   EXPECT_EQ(gestura_cli(dir, "lexicon remove HOUSE --lang ase").status, 0);
   EXPECT_EQ(gestura_cli(dir, "lexicon list").out, "");
+}
+
+TEST(LexiconCli, AddFromSigmlAndImportSigml) {
+  TempDir dir;
+  const char* from_env = std::getenv("GESTURA_SHARED_DATA");
+  const std::string data = from_env && !std::filesystem::exists(GESTURA_SHARED_DATA) ? from_env : GESTURA_SHARED_DATA;
+  const std::string absorb = data + "/sigml-isl/absorb.sigml";
+  EXPECT_EQ(gestura_cli(dir, "lexicon add --gloss absorb --lang ins --sigml '" + absorb + "'").status, 0);
+  const CliRun show = gestura_cli(dir, "lexicon show absorb --lang ins");
+  EXPECT_NE(show.out.find("notation (sigml): <hns_sign gloss=\"absorb\"><hamnosys_nonmanual/>"), std::string::npos)
+      << show.out;
+  const CliRun no_lang = gestura_cli(dir, "lexicon import '" + data + "/sigml-isl/10.sigml'");
+  EXPECT_EQ(no_lang.status, 1);
+  EXPECT_NE(no_lang.out.find("--lang ins"), std::string::npos) << no_lang.out;
+  EXPECT_EQ(gestura_cli(dir, "lexicon import '" + data + "/sigml-isl/10.sigml' --lang ins").status, 0);
+  EXPECT_EQ(gestura_cli(dir, "lexicon list --lang ins").out, "10\tins\tsigml\t10\nabsorb\tins\tsigml\t\n");
 }
 
 TEST(LexiconCli, ClearErrors) {
