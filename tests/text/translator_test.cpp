@@ -89,6 +89,9 @@ INSTANTIATE_TEST_SUITE_P(
         Example{"I saw her yesterday.", "YESTERDAY IX-1 SEE IX-3"},
         Example{"Her dog is old.", "POSS-3 DOG OLD"},
         Example{"I will see you tomorrow.", "TOMORROW IX-1 WILL SEE IX-2"},
+        // perfect aspect: have + participle → FINISH; possession stays HAVE
+        Example{"We have eaten.", "WE FINISH EAT"},
+        Example{"She has two cats.", "IX-3 HAVE 2 CAT"},
         Example{"Thank you!", "THANK-YOU"},
         Example{"Nice to meet you!", "NICE MEET IX-2"},
         Example{"Yesterday, I went home.", "YESTERDAY / IX-1 GO HOME"},

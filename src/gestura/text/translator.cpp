@@ -381,6 +381,14 @@ class SentenceTranslator {
            !english::time_gloss(next->lower) && !english::is_auxiliary(next->lower) && next->lower != "not";
   }
 
+  // "have eaten", "has gone", "had finished": the next word reads as a past form.
+  bool next_is_participle() const {
+    const Word* next = at(i_ + 1);
+    if (!next || next->kind != TokenKind::word) return false;
+    const auto rule = lemma_candidates(next->lower).front().rule;
+    return rule == "irregular participle" || rule == "irregular past" || rule == "past -ed" || rule == "past -ied";
+  }
+
   void fingerspell(const Word& w, std::string why) {
     GlossToken t = make("", GlossKind::fingerspell, w, "");
     std::string name;
@@ -431,6 +439,13 @@ class SentenceTranslator {
       const std::string reason = "'never' → NEVER: negation, in place";
       note(w, reason);
       emit(make("NEVER", GlossKind::sign, w, reason), Role::negation_in_place);
+      ++i_;
+      return;
+    }
+    if ((l == "have" || l == "has" || l == "had") && next_is_participle()) {
+      const std::string reason = quoted(w.text) + " → FINISH: perfect 'have', a completed action";
+      note(w, reason);
+      emit(make("FINISH", GlossKind::sign, w, reason), Role::plain);
       ++i_;
       return;
     }
