@@ -919,15 +919,42 @@ class Parser {
     return true;
   }
 
+  // "hamseqbegin [contact] location hamseqend" after a location: which part of the hand is there.
+  static bool is_hand_part_sequence(const Element& e) {
+    if (e.kind != ElementKind::sequence || e.children.empty() || e.children.size() > 2) return false;
+    if (e.children.size() == 2 && e.children[0].kind != ElementKind::contact) return false;
+    return e.children.back().kind == ElementKind::location;
+  }
+
+  static void apply_hand_part(Location& at, const Element& seq) {
+    const Location& part = *seq.children.back().location();
+    at.hand_part = SitePoint{part.site, part.fingers, part.finger_part, part.side};
+    if (seq.children.size() == 2) at.proximity = seq.children[0].contact()->proximity;
+  }
+
   // Fills one hand's fields from a posture branch; a field already set is kept.
   void fill_hand(Posture& p, const Element& e, bool dominant, std::optional<Proximity>& pending) {
     auto set = [&](auto& per_hand, const auto& v) {
       auto& slot = dominant ? per_hand.dominant : per_hand.nondominant;
       if (!slot) slot = v;
+      else note(e.symbol_index, "second value for the same hand in the posture ignored");
     };
     switch (e.kind) {
       case ElementKind::handshape: set(p.handshape, *e.handshape()); break;
-      case ElementKind::orientation: set(p.orientation, *e.orientation()); break;
+      case ElementKind::orientation: {
+        // A palm-only orientation completes one written with only the finger direction
+        // ("hamextfingerdo hamparbegin hampalml hamplus hampalmr hamparend").
+        auto& slot = dominant ? p.orientation.dominant : p.orientation.nondominant;
+        const Orientation& o = *e.orientation();
+        if (slot && !slot->palm && o.palm && !o.extended_finger) {
+          slot->palm = o.palm;
+          slot->palm_between = o.palm_between;
+          slot->palm_relative = o.palm_relative;
+        } else {
+          set(p.orientation, o);
+        }
+        break;
+      }
       case ElementKind::location: {
         Location loc = *e.location();
         if (pending) {
@@ -951,9 +978,15 @@ class Parser {
         note(e.symbol_index, "alternatives in the posture: the first one is used");
         if (!e.children.empty()) fill_hand(p, e.children.front(), dominant, pending);
         break;
-      case ElementKind::sequence:
+      case ElementKind::sequence: {
+        auto& slot = dominant ? p.location.dominant : p.location.nondominant;
+        if (slot && !slot->hand_part && is_hand_part_sequence(e)) {
+          apply_hand_part(*slot, e);
+          break;
+        }
         for (const Element& child : e.children) fill_hand(p, child, dominant, pending);
         break;
+      }
       default: break;
     }
   }
@@ -970,6 +1003,10 @@ class Parser {
           const bool dominant = (b == 0) != first_is_nondominant;
           fill_hand(p, e.children[b], dominant, pending);
         }
+        continue;
+      }
+      if (p.location.dominant && !p.location.dominant->hand_part && is_hand_part_sequence(e)) {
+        apply_hand_part(*p.location.dominant, e);
         continue;
       }
       if (e.kind == ElementKind::alternatives && is_posture_group(e)) {
@@ -1006,6 +1043,9 @@ class Parser {
       fill_hand(p, e, true, pending);
     }
     if (pending) p.hands_contact = pending;
+    // A finger direction written once before per-hand palms holds for both hands.
+    if (p.orientation.dominant && p.orientation.nondominant && !p.orientation.nondominant->extended_finger)
+      p.orientation.nondominant->extended_finger = p.orientation.dominant->extended_finger;
     // Lexicons omit the handshape when it carries over (an orientation is then still written);
     // a segment with neither is not a sign.
     if (!p.handshape.dominant && !p.handshape.nondominant) {
