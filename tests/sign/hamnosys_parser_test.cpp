@@ -252,6 +252,7 @@ TEST(HamnosysErrors, NameTheSymbolIndexAndExpectedClass) {
   EXPECT_EQ(error_index("hamflathand,hamextfingeru,hamreplace"), 3);           // replace with nothing
   EXPECT_EQ(error_index("hamflathand,hamextfingeru,hammetaalt"), 2);
   EXPECT_EQ(error_index("hamtouch,hammoveu"), 0);                               // no handshape
+  EXPECT_EQ(error_index("hamsymmlr,hamtouch,hammoveu"), 1);
   EXPECT_EQ(error_index("hamflathand,hamextfingeru,hampalml,hamplus"), 4);     // plus then nothing
   try {
     parse_hamnosys_names("hamflathand,hamextfingeru,hamreplace,hamrepeatfromstart");

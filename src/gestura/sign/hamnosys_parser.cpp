@@ -280,9 +280,10 @@ class Parser {
     ManualSign segment;
     segment.first_symbol = index();
     parse_symmetry_prefix(segment);
+    const int posture_start = index();
     std::vector<Element> elements;
     parse_list(elements);
-    build_segment(segment, std::move(elements));
+    build_segment(segment, std::move(elements), posture_start);
     return segment;
   }
 
@@ -991,7 +992,7 @@ class Parser {
     }
   }
 
-  void build_segment(ManualSign& segment, std::vector<Element> elements) {
+  void build_segment(ManualSign& segment, std::vector<Element> elements, int posture_start) {
     Posture& p = segment.posture;
     std::optional<Proximity> pending;
     std::size_t i = 0;
@@ -1050,11 +1051,11 @@ class Parser {
     // a segment with neither is not a sign.
     if (!p.handshape.dominant && !p.handshape.nondominant) {
       if (!p.orientation.dominant && !p.orientation.nondominant)
-        fail(segment.first_symbol, "expected a handshape (e.g. hamflathand) at the start of the sign, found " +
-                                       (segment.first_symbol < static_cast<int>(sym_.size())
-                                            ? quoted(sym_[static_cast<std::size_t>(segment.first_symbol)])
-                                            : std::string("end of input")));
-      tolerate(segment.first_symbol, "sign without a handshape: expected one before the orientation");
+        fail(posture_start, "expected a handshape (e.g. hamflathand) at the start of the sign, found " +
+                                (posture_start < static_cast<int>(sym_.size())
+                                     ? quoted(sym_[static_cast<std::size_t>(posture_start)])
+                                     : std::string("end of input")));
+      tolerate(posture_start, "sign without a handshape: expected one before the orientation");
     }
     segment.actions.assign(std::make_move_iterator(elements.begin() + static_cast<std::ptrdiff_t>(i)),
                            std::make_move_iterator(elements.end()));
