@@ -27,4 +27,9 @@ TEST(HamnosysDescribe, HandPairLocationsAndSymmetry) {
             "non-dominant: at dominant-side cheek close; par(move do & replace fingers o, palm u)");
 }
 
+TEST(HamnosysDescribe, FingerPartWithoutNamedFinger) {
+  const HamSign sign = parse_hamnosys_names("hamfinger2,hamextfingerul,hampalmdl,hamfingertip,hamtouch,hammoveor");
+  EXPECT_EQ(describe(sign), "dominant: finger2, fingers ul, palm dl, at fingers tip touch; move or");
+}
+
 }  // namespace

@@ -50,7 +50,8 @@ std::string point_name(Site site, FingerSet fingers, std::optional<FingerPart> p
   std::string out;
   if (side == Side::dominant_side) out += "dominant-side ";
   if (side == Side::beside) out += "beside ";
-  out += site == Site::fingers ? fingers_name(fingers) : std::string(site_name(site));
+  if (site != Site::fingers) out.append(site_name(site));
+  else out.append(fingers.empty() ? "fingers" : fingers_name(fingers));
   if (site != Site::fingers && !fingers.empty()) out.append(" ").append(fingers_name(fingers));
   if (part) out.append(" ").append(std::string(part_name(*part)));
   return out;
