@@ -236,7 +236,9 @@ enum class ElementKind : std::uint8_t {
 };
 
 // One node of a sign. Leaves carry one typed value; groups carry children. For hand_pair and
-// alternatives each child is a sequence holding one branch.
+// alternatives each child is a sequence holding one branch. A replacement motion whose new values
+// are given per hand ("hamreplace hamparbegin ... hamplus ... hamparend") carries that group as
+// its one child.
 struct Element {
   ElementKind kind = ElementKind::sequence;
   std::variant<std::monostate, Handshape, Orientation, Location, Contact, Motion, Repetition> value;

@@ -184,6 +184,15 @@ bool is_location_symbol(C c) {
   return c == C::location_site || c == C::finger || c == C::finger_part || c == C::location_side;
 }
 
+Symbol opener_of(Symbol closer) {
+  switch (closer) {
+    case S::parend: return S::parbegin;
+    case S::seqend: return S::seqbegin;
+    case S::fusionend: return S::fusionbegin;
+    default: return S::altbegin;
+  }
+}
+
 bool is_opener(Symbol s) { return s == S::parbegin || s == S::seqbegin || s == S::fusionbegin || s == S::altbegin; }
 bool is_closer(Symbol s) { return s == S::parend || s == S::seqend || s == S::fusionend || s == S::altend; }
 
@@ -237,7 +246,7 @@ class Parser {
         note(index() - 1, "top-level hamplus read as a compound of two sign segments");
         continue;
       }
-      if (is_closer(s)) fail(index(), quoted(s) + " without a matching opening bracket");
+      if (is_closer(s)) fail(index(), quoted(s) + " without a matching opening bracket: expected " + quoted(opener_of(s)) + " before it");
       fail(index(), "hammetaalt outside hamaltbegin ... hamaltend");
     }
     sign.notes = std::move(notes_);
