@@ -44,8 +44,11 @@ TEST(Polygonize, UniformLatticeGivesAClosedSphereLikeSurface) {
   // Two balls of radius 6 cm plus the bar: about 2·0.905 + 0.3·π·0.025² litres.
   EXPECT_NEAR(t.signed_volume, 2 * 4.18879 * 0.06 * 0.06 * 0.06 + 0.28 * kPi * 0.025 * 0.025, 0.0004);
   // Beyond the bar's blend the right ball is a sphere of radius 6 cm.
-  for (const vec3& v : p.positions)
-    if (v.x > 0.26f) ASSERT_NEAR(glm::length(v - vec3(0.2f, 0, 0)), 0.06f, 0.003f);
+  for (const vec3& v : p.positions) {
+    if (v.x > 0.26f) {
+      ASSERT_NEAR(glm::length(v - vec3(0.2f, 0, 0)), 0.06f, 0.003f);
+    }
+  }
 }
 
 TEST(Polygonize, DetailBoxIsZippedIntoTheSameClosedSurface) {
