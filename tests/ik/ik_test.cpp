@@ -302,3 +302,42 @@ TEST(IkLimits, WideLimitsRecogniseEitherEulerSolution) {
 
 }  // namespace
 }  // namespace gestura
+
+namespace gestura {
+namespace {
+
+// The arm chain on a two-armed skeleton with fingers: right side, effector at a knuckle two joints
+// below the wrist; DLS still reaches.
+TEST(IkArmChain, WorksOnTheRightArmOfAFullSkeleton) {
+  Skeleton s;
+  s.add_joint("humanoid_root", -1, vec3(0.0f, 1.0f, 0.0f));
+  for (const char* side : {"l", "r"}) {
+    const float x = side[0] == 'l' ? 1.0f : -1.0f;
+    const std::string p = std::string(side) + "_";
+    const int shoulder = s.add_joint(p + "shoulder", 0, vec3(0.18f * x, 0.4f, 0.0f));
+    const int elbow = s.add_joint(p + "elbow", shoulder, vec3(0.0f, -0.3f, 0.0f));
+    const int wrist = s.add_joint(p + "wrist", elbow, vec3(0.0f, -0.26f, 0.0f));
+    const int palm = s.add_joint(p + "middle0", wrist, vec3(0.0f, -0.04f, 0.0f));
+    s.add_joint(p + "middle1", palm, vec3(0.0f, -0.05f, 0.01f));
+    s.dofs[shoulder] = JointDofs{RotationOrder::ZXY, 0b111, vec3(deg(-188.0f), deg(-90.0f), deg(-134.0f)), vec3(deg(61.0f), deg(90.0f), deg(48.0f))};
+    s.dofs[elbow] = JointDofs{RotationOrder::XYZ, 0b011, vec3(deg(-142.0f), deg(-113.0f), 0.0f), vec3(0.0f, deg(77.0f), 0.0f)};
+    s.dofs[wrist] = JointDofs{RotationOrder::ZXY, 0b101, vec3(deg(-90.0f), 0.0f, deg(-27.0f)), vec3(deg(99.0f), 0.0f, deg(47.0f))};
+  }
+  const IkChain chain = arm_chain(s, "r");
+  EXPECT_EQ(chain.joints.size(), 3u);
+  EXPECT_EQ(chain.dof_count(), 3u + 2u + 2u);
+  EXPECT_NEAR(glm::length(chain.effector_offset - vec3(0.0f, -0.09f, 0.01f)), 0.0f, 1e-6f);
+  IkWorkspace ws(chain);
+  Pose pose = arm_ready_pose(s, "r");
+  const vec3 target(-0.25f, 1.1f, 0.3f);
+  const int shoulder = s.find("r_shoulder");
+  const IkResult r = solve_dls(s, chain, parent_model_matrix(s, pose, shoulder), IkTarget{target}, IkSettings{}, ws, pose);
+  std::vector<mat4> m(s.size());
+  local_to_model(s, pose, m);
+  EXPECT_LT(glm::length(vec3(m[s.find("r_middle1")][3]) - target), 1e-4f) << r.iterations;
+  EXPECT_THROW(arm_chain(s, "r", "l_middle1"), Error);
+  EXPECT_THROW(arm_chain(s, "x"), Error);
+}
+
+}  // namespace
+}  // namespace gestura
