@@ -10,6 +10,7 @@
 #include "gestura/core/error.hpp"
 #include "gestura/ik/aim.hpp"
 #include "gestura/ik/ccd.hpp"
+#include "gestura/ik/combined.hpp"
 #include "gestura/ik/dls.hpp"
 #include "gestura/ik/limb.hpp"
 #include "gestura/ik/reference_arm.hpp"
@@ -83,6 +84,11 @@ void reaches_positions(ArmFixture& f, Solver solve) {
 
 TEST_F(ArmFixture, IkCcdReachesReachableTargetsWithinLimits) { reaches_positions(*this, solve_ccd); }
 TEST_F(ArmFixture, IkDlsReachesReachableTargetsWithinLimits) { reaches_positions(*this, solve_dls); }
+IkResult combined(const Skeleton& s, const IkChain& c, const mat4& b, const IkTarget& t, const IkSettings& st, IkWorkspace& ws,
+                  Pose& p) {
+  return solve_combined(s, c, b, t, st, ws, p);
+}
+TEST_F(ArmFixture, IkCombinedReachesReachableTargetsWithinLimits) { reaches_positions(*this, combined); }
 
 void meets_orientations(ArmFixture& f, Solver solve, float position_tolerance, float angle_tolerance) {
   Lcg rng{11};
@@ -108,6 +114,7 @@ void meets_orientations(ArmFixture& f, Solver solve, float position_tolerance, f
 
 TEST_F(ArmFixture, IkCcdMeetsOrientationTargets) { meets_orientations(*this, solve_ccd, 1e-3f, deg(1.0f)); }
 TEST_F(ArmFixture, IkDlsMeetsOrientationTargets) { meets_orientations(*this, solve_dls, 1e-4f, deg(0.1f)); }
+TEST_F(ArmFixture, IkCombinedMeetsOrientationTargets) { meets_orientations(*this, combined, 1e-4f, deg(0.1f)); }
 
 void degrades_gracefully(ArmFixture& f, Solver solve) {
   const vec3 shoulder(0.18f, 1.40f, 0.0f);

@@ -43,7 +43,7 @@ struct IkTarget {
 };
 
 struct IkSettings {
-  int max_iterations = 100;
+  int max_iterations = 200;                  // CCD averages ~33 sweeps on the arm; its slow tail needs more
   float position_tolerance = 1e-5f;          // metres; stop when both residuals are below tolerance
   float orientation_tolerance = deg(0.05f);  // radians
   // Metres per radian that make orientation error commensurable with position error:
