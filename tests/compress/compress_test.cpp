@@ -72,6 +72,9 @@ TEST(Compress, HonoursTheErrorBoundOnTheSyntheticHumanoid) {
     EXPECT_LE(independent_error(clip, s, c, frame_times(clip.duration, 30.0f)), bound) << bound;
     EXPECT_LE(report.max_error, bound);
     EXPECT_LE(report.p99_error, report.max_error);
+    const ClipError measured = measure_error(clip, s, c);
+    EXPECT_EQ(measured.max, report.max_error);
+    EXPECT_EQ(measured.p99, report.p99_error);
     EXPECT_EQ(report.bytes, c.bytes().size());
     EXPECT_LT(c.bytes().size() * 4, report.raw_bytes) << "expected at least 4:1 at " << bound;
   }
