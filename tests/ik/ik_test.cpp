@@ -348,3 +348,38 @@ TEST(IkArmChain, WorksOnTheRightArmOfAFullSkeleton) {
 
 }  // namespace
 }  // namespace gestura
+
+namespace gestura {
+namespace {
+
+TEST(IkTwoBone, WeightBlendsFromTheInputPoseAndTwistTurnsAboutTheTargetLine) {
+  TwoBoneInput in;
+  in.start = vec3(0.0f), in.mid = vec3(0, -0.3f, 0), in.end = vec3(0, -0.56f, 0);
+  in.start_rotation = in.mid_rotation = quat(1, 0, 0, 0);
+  in.mid_axis = vec3(-1, 0, 0);
+  in.target = vec3(0.1f, -0.2f, 0.3f);
+  in.pole = vec3(0.0f, 0.0f, -1.0f);
+  in.weight = 0.0f;
+  const TwoBoneResult none = solve_two_bone(in);
+  EXPECT_GT(std::abs(glm::dot(none.start_local, quat(1, 0, 0, 0))), 1.0f - 1e-6f);
+  EXPECT_GT(std::abs(glm::dot(none.mid_local, quat(1, 0, 0, 0))), 1.0f - 1e-6f);
+  auto solved_mid = [&](float twist) {
+    in.weight = 1.0f;
+    in.twist = twist;
+    const TwoBoneResult r = solve_two_bone(in);
+    const vec3 mid = r.start_local * vec3(0, -0.3f, 0);
+    const vec3 end = mid + r.start_local * r.mid_local * vec3(0, -0.26f, 0);
+    EXPECT_LT(glm::length(end - in.target), 1e-4f) << twist;
+    return mid;
+  };
+  const vec3 line = glm::normalize(in.target);
+  const vec3 m0 = solved_mid(0.0f), m1 = solved_mid(kPi / 2.0f);
+  // Twisting keeps the elbow on the same circle about the target line, a quarter turn further.
+  EXPECT_NEAR(glm::dot(m0, line), glm::dot(m1, line), 1e-5f);
+  const vec3 p0 = m0 - line * glm::dot(m0, line), p1 = m1 - line * glm::dot(m1, line);
+  EXPECT_NEAR(glm::dot(glm::normalize(p0), glm::normalize(p1)), 0.0f, 1e-4f);
+  EXPECT_GT(glm::dot(glm::cross(p0, p1), line), 0.0f);
+}
+
+}  // namespace
+}  // namespace gestura
