@@ -169,6 +169,14 @@ TEST_F(ArmFixture, IkDlsRejectsPreferredAnglesOfWrongLength) {
   EXPECT_THROW(solve_dls(arm, chain, mat4(1.0f), IkTarget{vec3(0.3f, 1.0f, 0.2f)}, s, ws, pose), Error);
 }
 
+TEST_F(ArmFixture, IkSolversRejectAWorkspaceOfAnotherChain) {
+  const IkChain shorter = make_chain(arm, shoulder, elbow);
+  IkWorkspace other(shorter);
+  Pose pose = arm_ready_pose(arm);
+  EXPECT_THROW(solve_ccd(arm, chain, mat4(1.0f), IkTarget{vec3(0.3f, 1.0f, 0.2f)}, IkSettings{}, other, pose), Error);
+  EXPECT_THROW(solve_dls(arm, chain, mat4(1.0f), IkTarget{vec3(0.3f, 1.0f, 0.2f)}, IkSettings{}, other, pose), Error);
+}
+
 TEST_F(ArmFixture, IkChainRejectsJointsNotOnOnePath) {
   Skeleton s = arm;
   s.add_joint("r_shoulder", 0, vec3(-0.18f, 1.4f, 0.0f));

@@ -88,6 +88,7 @@ mat4 parent_model_matrix(const Skeleton& skeleton, const Pose& pose, int joint);
 // --- Building blocks shared by the solvers (exposed for tests) -------------------------------
 
 // Reads the chain's joint angles from `pose` (within the workspace's angle and limit arrays).
+// Throws gestura::Error when `ws` was sized for another chain or `pose` for another skeleton.
 void load_angles(const Skeleton& skeleton, const IkChain& chain, const Pose& pose, IkWorkspace& ws);
 // Writes the workspace angles back as local rotations of the chain joints.
 void store_angles(const Skeleton& skeleton, const IkChain& chain, IkWorkspace& ws, Pose& pose);
