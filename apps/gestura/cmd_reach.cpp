@@ -11,6 +11,7 @@
 #include "command.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/ik/ccd.hpp"
+#include "gestura/ik/combined.hpp"
 #include "gestura/ik/dls.hpp"
 #include "gestura/ik/limb.hpp"
 #include "gestura/ik/reference_arm.hpp"
@@ -92,8 +93,8 @@ int run_reach(const std::vector<std::string>& args) {
     } else throw Error("unknown argument '" + args[i] + "' (see gestura reach --help)");
   }
   if (!has_target) throw Error("--target x,y,z is required");
-  if (solver != "ccd" && solver != "dls" && solver != "two-bone")
-    throw Error("--solver: expected ccd, dls or two-bone, got '" + solver + "'");
+  if (solver != "ccd" && solver != "dls" && solver != "combined" && solver != "two-bone")
+    throw Error("--solver: expected ccd, dls, combined or two-bone, got '" + solver + "'");
 
   const Skeleton skeleton = reach_skeleton();
   const IkChain chain = arm_chain(skeleton);
@@ -124,7 +125,9 @@ int run_reach(const std::vector<std::string>& args) {
                                         vec3(0.6f, 0.9f, -0.6f), 0.98f);
       last = IkResult{1, r.position_error, 0.0f, r.position_error < 1e-4f};
     } else {
-      last = (solver == "ccd" ? solve_ccd : solve_dls)(skeleton, chain, base, IkTarget{goal}, IkSettings{}, ws, pose);
+      last = solver == "ccd"   ? solve_ccd(skeleton, chain, base, IkTarget{goal}, IkSettings{}, ws, pose)
+             : solver == "dls" ? solve_dls(skeleton, chain, base, IkTarget{goal}, IkSettings{}, ws, pose)
+                               : solve_combined(skeleton, chain, base, IkTarget{goal}, IkSettings{}, ws, pose);
     }
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     total_iterations += last.iterations;
@@ -144,8 +147,8 @@ int run_reach(const std::vector<std::string>& args) {
   return 0;
 }
 
-const cli::Registration reg{{"reach", "reach for a point with the arm (IK demo: ccd, dls or two-bone)",
-                             "usage: gestura reach --target x,y,z [--solver ccd|dls|two-bone] [--frames N] [-o out.bvh]\n"
+const cli::Registration reg{{"reach", "reach for a point with the arm (IK demo: ccd, dls, combined or two-bone)",
+                             "usage: gestura reach --target x,y,z [--solver ccd|dls|combined|two-bone] [--frames N] [-o out.bvh]\n"
                              "  Moves the left hand of the 7-DoF reference arm (shoulder at 0.18,1.40,0; reach\n"
                              "  0.65 m; metres, +Y up, facing +Z) from the ready posture to the target over N frames\n"
                              "  (default 30, 30 fps), solving IK per frame within the joints' limits.",

@@ -72,6 +72,9 @@ TEST(Compress, HonoursTheErrorBoundOnTheSyntheticHumanoid) {
     EXPECT_LE(independent_error(clip, s, c, frame_times(clip.duration, 30.0f)), bound) << bound;
     EXPECT_LE(report.max_error, bound);
     EXPECT_LE(report.p99_error, report.max_error);
+    const ClipError measured = measure_error(clip, s, c);
+    EXPECT_EQ(measured.max, report.max_error);
+    EXPECT_EQ(measured.p99, report.p99_error);
     EXPECT_EQ(report.bytes, c.bytes().size());
     EXPECT_LT(c.bytes().size() * 4, report.raw_bytes) << "expected at least 4:1 at " << bound;
   }
@@ -104,6 +107,47 @@ TEST(Compress, HalfTurnRotationsAndRootTranslation) {
   Clip clip;
   half_turn_clip(s, clip);
   for (float bound : {1e-5f, 1e-4f, 1e-2f}) {
+    CompressionSettings settings;
+    settings.max_error = bound;
+    CompressionReport report;
+    const CompressedClip c = compress(clip, s, settings, &report);
+    EXPECT_TRUE(report.within_bound) << bound;
+    EXPECT_LE(independent_error(clip, s, c, frame_times(clip.duration, 30.0f)), bound) << bound;
+  }
+}
+
+// Keys at irregular times with spline interpolation, animated scale and a non-root translation:
+// the compressed clip is sampled at 30 Hz and must hold the bound at those samples.
+TEST(Compress, IrregularSplineClipWithScaleAndTranslation) {
+  Skeleton s;
+  s.add_joint("root", -1, vec3(0.0f));
+  s.add_joint("spine", 0, vec3(0.0f, 0.4f, 0.0f));
+  s.add_joint("arm", 1, vec3(0.2f, 0.3f, 0.0f));
+  s.add_joint("hand", 2, vec3(0.5f, 0.0f, 0.0f));
+  Clip clip;
+  clip.resize_joints(4);
+  clip.duration = 2.0f;
+  std::uint64_t state = 17;
+  auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<float>(state >> 40) / static_cast<float>(1ull << 24);
+  };
+  for (int joint = 1; joint < 3; ++joint) {
+    float t = 0.0f;
+    while (t < 2.0f) {
+      clip.rotations[static_cast<std::size_t>(joint)].add(t, glm::normalize(quat(1.0f, next() - 0.5f, next() - 0.5f, next() - 0.5f)));
+      t += 0.1f + 0.3f * next();
+    }
+    clip.rotations[static_cast<std::size_t>(joint)].add(2.0f, quat(1, 0, 0, 0));
+    clip.rotations[static_cast<std::size_t>(joint)].interpolation = Interpolation::Squad;
+    make_continuous(clip.rotations[static_cast<std::size_t>(joint)]);
+  }
+  for (float t : {0.0f, 0.7f, 1.3f, 2.0f}) {
+    clip.scales[2].add(t, vec3(1.0f + 0.2f * next()));
+    clip.translations[1].add(t, vec3(0.05f * next(), 0.4f, 0.0f));
+  }
+  clip.scales[2].interpolation = Interpolation::CatmullRom;
+  for (float bound : {1e-4f, 1e-3f}) {
     CompressionSettings settings;
     settings.max_error = bound;
     CompressionReport report;

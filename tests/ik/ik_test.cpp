@@ -10,6 +10,7 @@
 #include "gestura/core/error.hpp"
 #include "gestura/ik/aim.hpp"
 #include "gestura/ik/ccd.hpp"
+#include "gestura/ik/combined.hpp"
 #include "gestura/ik/dls.hpp"
 #include "gestura/ik/limb.hpp"
 #include "gestura/ik/reference_arm.hpp"
@@ -83,6 +84,11 @@ void reaches_positions(ArmFixture& f, Solver solve) {
 
 TEST_F(ArmFixture, IkCcdReachesReachableTargetsWithinLimits) { reaches_positions(*this, solve_ccd); }
 TEST_F(ArmFixture, IkDlsReachesReachableTargetsWithinLimits) { reaches_positions(*this, solve_dls); }
+IkResult combined(const Skeleton& s, const IkChain& c, const mat4& b, const IkTarget& t, const IkSettings& st, IkWorkspace& ws,
+                  Pose& p) {
+  return solve_combined(s, c, b, t, st, ws, p);
+}
+TEST_F(ArmFixture, IkCombinedReachesReachableTargetsWithinLimits) { reaches_positions(*this, combined); }
 
 void meets_orientations(ArmFixture& f, Solver solve, float position_tolerance, float angle_tolerance) {
   Lcg rng{11};
@@ -108,6 +114,7 @@ void meets_orientations(ArmFixture& f, Solver solve, float position_tolerance, f
 
 TEST_F(ArmFixture, IkCcdMeetsOrientationTargets) { meets_orientations(*this, solve_ccd, 1e-3f, deg(1.0f)); }
 TEST_F(ArmFixture, IkDlsMeetsOrientationTargets) { meets_orientations(*this, solve_dls, 1e-4f, deg(0.1f)); }
+TEST_F(ArmFixture, IkCombinedMeetsOrientationTargets) { meets_orientations(*this, combined, 1e-4f, deg(0.1f)); }
 
 void degrades_gracefully(ArmFixture& f, Solver solve) {
   const vec3 shoulder(0.18f, 1.40f, 0.0f);
@@ -160,6 +167,14 @@ TEST_F(ArmFixture, IkDlsRejectsPreferredAnglesOfWrongLength) {
   s.preferred_angles = preferred;
   Pose pose = rest_pose(arm);
   EXPECT_THROW(solve_dls(arm, chain, mat4(1.0f), IkTarget{vec3(0.3f, 1.0f, 0.2f)}, s, ws, pose), Error);
+}
+
+TEST_F(ArmFixture, IkSolversRejectAWorkspaceOfAnotherChain) {
+  const IkChain shorter = make_chain(arm, shoulder, elbow);
+  IkWorkspace other(shorter);
+  Pose pose = arm_ready_pose(arm);
+  EXPECT_THROW(solve_ccd(arm, chain, mat4(1.0f), IkTarget{vec3(0.3f, 1.0f, 0.2f)}, IkSettings{}, other, pose), Error);
+  EXPECT_THROW(solve_dls(arm, chain, mat4(1.0f), IkTarget{vec3(0.3f, 1.0f, 0.2f)}, IkSettings{}, other, pose), Error);
 }
 
 TEST_F(ArmFixture, IkChainRejectsJointsNotOnOnePath) {
@@ -298,6 +313,80 @@ TEST(IkLimits, WideLimitsRecogniseEitherEulerSolution) {
   EXPECT_NEAR(back.x, angles.x, 1e-3f);
   EXPECT_NEAR(back.y, angles.y, 1e-3f);
   EXPECT_NEAR(back.z, angles.z, 1e-3f);
+}
+
+}  // namespace
+}  // namespace gestura
+
+namespace gestura {
+namespace {
+
+// The arm chain on a two-armed skeleton with fingers: right side, effector at a knuckle two joints
+// below the wrist; DLS still reaches.
+TEST(IkArmChain, WorksOnTheRightArmOfAFullSkeleton) {
+  Skeleton s;
+  s.add_joint("humanoid_root", -1, vec3(0.0f, 1.0f, 0.0f));
+  for (const char* side : {"l", "r"}) {
+    const float x = side[0] == 'l' ? 1.0f : -1.0f;
+    const std::string p = std::string(side) + "_";
+    const int shoulder = s.add_joint(p + "shoulder", 0, vec3(0.18f * x, 0.4f, 0.0f));
+    const int elbow = s.add_joint(p + "elbow", shoulder, vec3(0.0f, -0.3f, 0.0f));
+    const int wrist = s.add_joint(p + "wrist", elbow, vec3(0.0f, -0.26f, 0.0f));
+    const int palm = s.add_joint(p + "middle0", wrist, vec3(0.0f, -0.04f, 0.0f));
+    s.add_joint(p + "middle1", palm, vec3(0.0f, -0.05f, 0.01f));
+    s.dofs[shoulder] = JointDofs{RotationOrder::ZXY, 0b111, vec3(deg(-188.0f), deg(-90.0f), deg(-134.0f)), vec3(deg(61.0f), deg(90.0f), deg(48.0f))};
+    s.dofs[elbow] = JointDofs{RotationOrder::XYZ, 0b011, vec3(deg(-142.0f), deg(-113.0f), 0.0f), vec3(0.0f, deg(77.0f), 0.0f)};
+    s.dofs[wrist] = JointDofs{RotationOrder::ZXY, 0b101, vec3(deg(-90.0f), 0.0f, deg(-27.0f)), vec3(deg(99.0f), 0.0f, deg(47.0f))};
+  }
+  const IkChain chain = arm_chain(s, "r");
+  EXPECT_EQ(chain.joints.size(), 3u);
+  EXPECT_EQ(chain.dof_count(), 3u + 2u + 2u);
+  EXPECT_NEAR(glm::length(chain.effector_offset - vec3(0.0f, -0.09f, 0.01f)), 0.0f, 1e-6f);
+  IkWorkspace ws(chain);
+  Pose pose = arm_ready_pose(s, "r");
+  const vec3 target(-0.25f, 1.1f, 0.3f);
+  const int shoulder = s.find("r_shoulder");
+  const IkResult r = solve_dls(s, chain, parent_model_matrix(s, pose, shoulder), IkTarget{target}, IkSettings{}, ws, pose);
+  std::vector<mat4> m(s.size());
+  local_to_model(s, pose, m);
+  EXPECT_LT(glm::length(vec3(m[s.find("r_middle1")][3]) - target), 1e-4f) << r.iterations;
+  EXPECT_THROW(arm_chain(s, "r", "l_middle1"), Error);
+  EXPECT_THROW(arm_chain(s, "x"), Error);
+}
+
+}  // namespace
+}  // namespace gestura
+
+namespace gestura {
+namespace {
+
+TEST(IkTwoBone, WeightBlendsFromTheInputPoseAndTwistTurnsAboutTheTargetLine) {
+  TwoBoneInput in;
+  in.start = vec3(0.0f), in.mid = vec3(0, -0.3f, 0), in.end = vec3(0, -0.56f, 0);
+  in.start_rotation = in.mid_rotation = quat(1, 0, 0, 0);
+  in.mid_axis = vec3(-1, 0, 0);
+  in.target = vec3(0.1f, -0.2f, 0.3f);
+  in.pole = vec3(0.0f, 0.0f, -1.0f);
+  in.weight = 0.0f;
+  const TwoBoneResult none = solve_two_bone(in);
+  EXPECT_GT(std::abs(glm::dot(none.start_local, quat(1, 0, 0, 0))), 1.0f - 1e-6f);
+  EXPECT_GT(std::abs(glm::dot(none.mid_local, quat(1, 0, 0, 0))), 1.0f - 1e-6f);
+  auto solved_mid = [&](float twist) {
+    in.weight = 1.0f;
+    in.twist = twist;
+    const TwoBoneResult r = solve_two_bone(in);
+    const vec3 mid = r.start_local * vec3(0, -0.3f, 0);
+    const vec3 end = mid + r.start_local * r.mid_local * vec3(0, -0.26f, 0);
+    EXPECT_LT(glm::length(end - in.target), 1e-4f) << twist;
+    return mid;
+  };
+  const vec3 line = glm::normalize(in.target);
+  const vec3 m0 = solved_mid(0.0f), m1 = solved_mid(kPi / 2.0f);
+  // Twisting keeps the elbow on the same circle about the target line, a quarter turn further.
+  EXPECT_NEAR(glm::dot(m0, line), glm::dot(m1, line), 1e-5f);
+  const vec3 p0 = m0 - line * glm::dot(m0, line), p1 = m1 - line * glm::dot(m1, line);
+  EXPECT_NEAR(glm::dot(glm::normalize(p0), glm::normalize(p1)), 0.0f, 1e-4f);
+  EXPECT_GT(glm::dot(glm::cross(p0, p1), line), 0.0f);
 }
 
 }  // namespace

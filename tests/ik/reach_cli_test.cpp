@@ -30,7 +30,7 @@ double residual_of(const std::string& output) {
 }
 
 TEST(IkReachCli, EachSolverReachesAPointInFront) {
-  for (const char* solver : {"dls", "ccd", "two-bone"}) {
+  for (const char* solver : {"dls", "ccd", "combined", "two-bone"}) {
     const CliRun r = run(std::string("reach --target 0.3,1.2,0.35 --solver ") + solver);
     ASSERT_EQ(r.status, 0) << r.output;
     const double residual = residual_of(r.output);

@@ -58,7 +58,7 @@ TEST(SignCheck, BadLinesAreReportedAndTheRestChecked) {
   const CliResult r = run_cli("check " + path);
   EXPECT_NE(r.out.find("bad.jsonl:2: not a JSON object"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("bad.jsonl:3: B: no `hamnosys`"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("bad.jsonl:5: C: symbol 1: hamparend without a matching opening bracket"), std::string::npos)
+  EXPECT_NE(r.out.find("bad.jsonl:5: C: symbol 1: hamparend without a matching opening bracket: expected hamparbegin"), std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("5 signs: 1 parsed, 0 synthesized, 4 failed"), std::string::npos) << r.out;
   EXPECT_EQ(r.status, 1);

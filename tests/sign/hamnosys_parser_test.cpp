@@ -197,6 +197,32 @@ TEST(HamnosysParser, LocationBetweenTwoPointsAndAlternatingMotion) {
   EXPECT_TRUE(sign.notes.empty());
 }
 
+// One finger direction for both hands, then a palm per hand.
+TEST(HamnosysParser, SharedFingerDirectionWithPalmPerHand) {
+  const HamSign sign = parse_hamnosys_names(
+      "hamsymmlr,hamflathand,hamextfingerdo,hamparbegin,hampalml,hamplus,hampalmr,hamparend,hammoveo");
+  const Posture& p = sign.main().posture;
+  EXPECT_EQ(p.orientation.dominant->extended_finger, Direction::down_out);
+  EXPECT_EQ(p.orientation.dominant->palm, Direction::left);
+  EXPECT_EQ(p.orientation.nondominant->extended_finger, Direction::down_out);
+  EXPECT_EQ(p.orientation.nondominant->palm, Direction::right);
+  EXPECT_TRUE(sign.notes.empty());
+}
+
+// The fingertips touch the chin, then the hand moves out.
+TEST(HamnosysParser, HandPartAtLocation) {
+  const HamSign sign = parse_hamnosys_names(
+      "hamflathand,hamextfingeru,hampalml,hamchin,hamseqbegin,hamtouch,hamfingertip,hamseqend,hammoveo");
+  const Location& loc = *sign.main().posture.location.dominant;
+  EXPECT_EQ(loc.site, Site::chin);
+  ASSERT_TRUE(loc.hand_part);
+  EXPECT_EQ(loc.hand_part->site, Site::fingers);
+  EXPECT_EQ(loc.hand_part->finger_part, FingerPart::tip);
+  EXPECT_EQ(loc.proximity, Proximity::touch);
+  ASSERT_EQ(sign.main().actions.size(), 1u);
+  EXPECT_EQ(sign.main().actions[0].motion()->direction, Direction::out);
+}
+
 TEST(HamnosysParser, UnicodeAndNamesGiveTheSameSymbols) {
   const std::string names = "hamsymmpar,hamfist,hamextfingero,hampalmd,hamparbegin,hammoveo,hamplus,hamnomotion,hamparend";
   std::string text;
@@ -226,6 +252,7 @@ TEST(HamnosysErrors, NameTheSymbolIndexAndExpectedClass) {
   EXPECT_EQ(error_index("hamflathand,hamextfingeru,hamreplace"), 3);           // replace with nothing
   EXPECT_EQ(error_index("hamflathand,hamextfingeru,hammetaalt"), 2);
   EXPECT_EQ(error_index("hamtouch,hammoveu"), 0);                               // no handshape
+  EXPECT_EQ(error_index("hamsymmlr,hamtouch,hammoveu"), 1);
   EXPECT_EQ(error_index("hamflathand,hamextfingeru,hampalml,hamplus"), 4);     // plus then nothing
   try {
     parse_hamnosys_names("hamflathand,hamextfingeru,hamreplace,hamrepeatfromstart");

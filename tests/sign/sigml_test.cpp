@@ -129,4 +129,35 @@ TEST(Sigml, BinaryJunkAndMegabyteInputGiveErrors) {
   EXPECT_GT(entries[0].error->where().line, 1);
 }
 
+// Seeded byte mutations of a real file: each either reads or throws gestura::Error with a line.
+TEST(Sigml, FuzzedBytesNeverCrash) {
+  const std::string good = isl("australia.sigml");
+  std::mt19937 rng(5);
+  int errors = 0;
+  for (int i = 0; i < 2000; ++i) {
+    std::string text = good;
+    const int edits = 1 + static_cast<int>(rng() % 4);
+    for (int k = 0; k < edits; ++k) {
+      const std::size_t at = rng() % text.size();
+      switch (rng() % 3) {
+        case 0: text[at] = static_cast<char>(rng()); break;
+        case 1: text.erase(at, 1 + rng() % 16); break;
+        default: text.resize(at); break;
+      }
+      if (text.empty()) text.push_back('<');
+    }
+    try {
+      for (const SigmlEntry& e : read_sigml_entries(text, "fuzz.sigml"))
+        if (!e.sign) {
+          ++errors;
+          EXPECT_GT(e.error->where().line, 0) << e.error->what();
+        }
+    } catch (const gestura::Error& e) {
+      ++errors;
+      EXPECT_GT(e.where().line, 0) << e.what();
+    }
+  }
+  EXPECT_GT(errors, 1000);
+}
+
 }  // namespace

@@ -89,6 +89,9 @@ INSTANTIATE_TEST_SUITE_P(
         Example{"I saw her yesterday.", "YESTERDAY IX-1 SEE IX-3"},
         Example{"Her dog is old.", "POSS-3 DOG OLD"},
         Example{"I will see you tomorrow.", "TOMORROW IX-1 WILL SEE IX-2"},
+        // perfect aspect: have + participle → FINISH; possession stays HAVE
+        Example{"We have eaten.", "WE FINISH EAT"},
+        Example{"She has two cats.", "IX-3 HAVE 2 CAT"},
         Example{"Thank you!", "THANK-YOU"},
         Example{"Nice to meet you!", "NICE MEET IX-2"},
         Example{"Yesterday, I went home.", "YESTERDAY / IX-1 GO HOME"},
@@ -220,4 +223,46 @@ TEST(TranslatorInput, OneMegabyteOfText) {
   for (std::size_t i = 5; i < run_on.size(); i += 6) run_on[i] = ' ';
   const Translation long_one = gloss(run_on);
   EXPECT_EQ(long_one.glosses.size(), (1u << 20) / 6 + 1);
+}
+
+// Random sentences built from the tricky pieces (contractions, money, clock times, dates, wh-words,
+// negation, dashes, curly quotes, accented names) must keep the output's invariants.
+TEST(TranslatorInput, RandomMixesKeepInvariants) {
+  const std::vector<std::string> pieces{
+      "I",     "you",   "her",  "don't", "can't", "not",    "never",   "who",  "how many", "where", "do",
+      "the",   "$",     "$5",   "5.50",  "3:30",  "7am",    "p.m.",    "o'clock", "March", "May",  "14",
+      "2024",  "3/14",  "1st",  "%",     "50%",   "twenty-five", "and", "one",   ",",     "\u2014", "\u2019s",
+      "\u201c", "Jos\u00e9", "\u0418\u0432\u0430\u043d", "?",  "!",   ".",      "...",     "thank", "you",
+      "last",  "night", "Yesterday", "dogs", "went", "store", "-",    ":",      "\u2026", "a.m",  "is"};
+  std::uint32_t seed = 12345;
+  auto next = [&] {
+    seed = seed * 1664525u + 1013904223u;
+    return seed >> 8;
+  };
+  for (int round = 0; round < 2000; ++round) {
+    std::string text;
+    const int length = static_cast<int>(next() % 14);
+    for (int k = 0; k < length; ++k) {
+      if (next() % 3) text.push_back(' ');
+      text += pieces[next() % pieces.size()];
+    }
+    const Translation t = gloss(text);
+    for (const GlossToken& g : t.glosses) {
+      EXPECT_FALSE(g.gloss.empty()) << text;
+      EXPECT_LE(g.begin, g.end) << text;
+      EXPECT_LE(g.end, text.size()) << text;
+      if (g.kind == GlossKind::fingerspell) {
+        EXPECT_FALSE(g.letters.empty()) << text;
+      }
+    }
+    for (const Marker& m : t.markers) {
+      EXPECT_LT(m.first, m.last) << text;
+      EXPECT_LE(m.last, t.glosses.size()) << text;
+    }
+    for (const Sentence& s : t.sentences) EXPECT_LE(s.last, t.glosses.size()) << text;
+    if (!t.glosses.empty()) {
+      EXPECT_NE(t.glosses.front().kind, GlossKind::pause) << text;
+      EXPECT_NE(t.glosses.back().kind, GlossKind::pause) << text;
+    }
+  }
 }

@@ -138,9 +138,9 @@ void add_head(VolumeBuilder& b, float k) {
     b.capsule("temporomandibular", v(s * 0.023f, 1.5245f, 0.088f), v(0, 1.5185f, 0.0960f), 0.0040f * k, 0.0062f * k,
               MaterialId::Lips, 0.004f * k);
   }
-  b.ellipsoid("skullbase", v(0, 1.5255f, 0.097f), v(0.020f, 0.0035f, 0.012f), skin, 0.002f * k, BlendOp::Subtract);
-  b.ellipsoid("skullbase", v(0, 1.5275f, 0.087f), v(0.018f, 0.0045f, 0.0065f), MaterialId::Teeth, 0.001f * k);
-  b.ellipsoid("temporomandibular", v(0, 1.5205f, 0.084f), v(0.014f, 0.0035f, 0.0095f), MaterialId::Tongue, 0.001f * k);
+  b.ellipsoid("skullbase", v(0, 1.5255f, 0.097f), v(0.020f, 0.0042f, 0.012f), skin, 0.002f * k, BlendOp::Subtract);
+  b.ellipsoid("skullbase", v(0, 1.5280f, 0.0895f), v(0.017f, 0.0042f, 0.0065f), MaterialId::Teeth, 0.001f * k);
+  b.ellipsoid("temporomandibular", v(0, 1.5218f, 0.0880f), v(0.013f, 0.0030f, 0.0090f), MaterialId::Tongue, 0.001f * k);
 }
 
 void add_arm(VolumeBuilder& b, const AvatarParams& p, const std::string& s, float k) {

@@ -322,18 +322,23 @@ CompressedClip compress(const Clip& clip, const Skeleton& skeleton, const Compre
       tracks[j * 3 + 1] = encode_track(samples[j * 3 + 1], s * settings.max_error, vec4(0.0f));
       tracks[j * 3 + 2] = encode_track(samples[j * 3 + 2], s * settings.max_error / lever[j], vec4(1, 1, 1, 0));
     }
+    return tracks;
+  };
+  auto build = [&](const std::vector<EncodedTrack>& tracks) {
     return CompressedClip::from_bytes(assemble(tracks, static_cast<std::uint32_t>(n), frames, settings.sample_rate, settings.max_error));
   };
 
   // Search the tolerance factor: bracket between a factor that holds the bound and one that breaks it.
   std::vector<float> errors;
+  std::vector<EncodedTrack> best_tracks;
   CompressedClip best;   // smallest encoding within the bound; or, while none is, the most accurate
   ClipError best_error;
   bool have_valid = false;
   float good = 0.0f, bad = 0.0f, s = 1.0f;
   int passes = 0;
   while (passes < 16) {
-    CompressedClip trial = encode_all(s);
+    std::vector<EncodedTrack> tracks = encode_all(s);
+    CompressedClip trial = build(tracks);
     ++passes;
     frame_errors(raw, skeleton, trial, settings.virtual_point_distance, errors);
     const ClipError e = summarise(errors);
@@ -342,10 +347,39 @@ CompressedClip compress(const Clip& clip, const Skeleton& skeleton, const Compre
     else bad = s;
     const bool better = valid ? !have_valid || trial.bytes().size() <= best.bytes().size()
                               : !have_valid && (best.bytes().empty() || e.max < best_error.max);
-    if (better) best = std::move(trial), best_error = e, have_valid = have_valid || valid;
+    if (better) best = std::move(trial), best_tracks = std::move(tracks), best_error = e, have_valid = have_valid || valid;
     if (good > 0.0f && bad > 0.0f && bad / good < 1.08f) break;
     s = bad == 0.0f ? s * 2.0f : good == 0.0f ? s * 0.3f : std::sqrt(good * bad);
     if (s > 1e4f || s < 1e-6f) break;
+  }
+
+  // The shared factor leaves slack wherever a track is not on the worst chain: take bits away track
+  // by track (same keys, same ranges) while the measured error still holds the bound.
+  if (have_valid) {
+    for (std::size_t t = 0; t < best_tracks.size(); ++t) {
+      while (best_tracks[t].kind == GclTrackKind::Animated && best_tracks[t].bits > 1) {
+        EncodedTrack& track = best_tracks[t];
+        const EncodedTrack kept = track;
+        const std::uint8_t bits = static_cast<std::uint8_t>(track.bits - 1);
+        const float steps = static_cast<float>((1u << bits) - 1u);
+        for (std::size_t k = 0; k < track.keys.size(); ++k)
+          for (int c = 0; c < 3; ++c) {
+            const float v = samples[t].kept[track.keys[k]][c];
+            const float q = track.extent[c] > 0.0f ? std::round((v - track.min[c]) / track.extent[c] * steps) : 0.0f;
+            track.quantised[k * 3 + static_cast<std::size_t>(c)] = static_cast<std::uint32_t>(std::clamp(q, 0.0f, steps));
+          }
+        track.bits = bits;
+        CompressedClip trial = build(best_tracks);
+        ++passes;
+        frame_errors(raw, skeleton, trial, settings.virtual_point_distance, errors);
+        const ClipError e = summarise(errors);
+        if (e.max > settings.max_error) {
+          track = kept;
+          break;
+        }
+        best = std::move(trial), best_error = e;
+      }
+    }
   }
   if (report) {
     report->raw_bytes = std::size_t{frames} * n * 10 * sizeof(float);

@@ -33,7 +33,7 @@ struct CompressionReport {
   std::size_t bytes = 0;         // the compressed clip
   float max_error = 0.0f;        // metres, ACL metric over all frames
   float p99_error = 0.0f;        // 99th percentile of the per-joint-per-frame error
-  int passes = 0;                // encode + measure rounds of the tolerance search
+  int passes = 0;                // encode + measure rounds (tolerance search, then per-track bit trimming)
   bool within_bound = false;     // max_error ≤ settings.max_error
 };
 

@@ -60,6 +60,10 @@ mat4 parent_model_matrix(const Skeleton& skeleton, const Pose& pose, int joint) 
 }
 
 void load_angles(const Skeleton& skeleton, const IkChain& chain, const Pose& pose, IkWorkspace& ws) {
+  if (ws.angles.size() != chain.dof_count() || ws.positions.size() != chain.size())
+    throw Error("IK: workspace was made for another chain (" + std::to_string(ws.angles.size()) + " dofs, chain has " +
+                std::to_string(chain.dof_count()) + ")");
+  if (pose.size() != skeleton.size()) throw Error("IK: pose has " + std::to_string(pose.size()) + " joints, skeleton " + std::to_string(skeleton.size()));
   for (std::size_t k = 0; k < chain.size(); ++k) {
     const int j = chain.joints[k];
     ws.link_angles[k] = skeleton.dofs[j].axes ? joint_angles(skeleton, j, pose.rotations[j]) : vec3(0.0f);

@@ -43,7 +43,7 @@ struct IkTarget {
 };
 
 struct IkSettings {
-  int max_iterations = 100;
+  int max_iterations = 200;                  // CCD averages ~33 sweeps on the arm; its slow tail needs more
   float position_tolerance = 1e-5f;          // metres; stop when both residuals are below tolerance
   float orientation_tolerance = deg(0.05f);  // radians
   // Metres per radian that make orientation error commensurable with position error:
@@ -88,6 +88,7 @@ mat4 parent_model_matrix(const Skeleton& skeleton, const Pose& pose, int joint);
 // --- Building blocks shared by the solvers (exposed for tests) -------------------------------
 
 // Reads the chain's joint angles from `pose` (within the workspace's angle and limit arrays).
+// Throws gestura::Error when `ws` was sized for another chain or `pose` for another skeleton.
 void load_angles(const Skeleton& skeleton, const IkChain& chain, const Pose& pose, IkWorkspace& ws);
 // Writes the workspace angles back as local rotations of the chain joints.
 void store_angles(const Skeleton& skeleton, const IkChain& chain, IkWorkspace& ws, Pose& pose);

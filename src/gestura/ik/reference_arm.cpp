@@ -1,5 +1,7 @@
 #include "gestura/ik/reference_arm.hpp"
 
+#include <string>
+
 #include "gestura/core/error.hpp"
 
 namespace gestura {
@@ -20,19 +22,36 @@ Skeleton reference_arm_skeleton() {
   return s;
 }
 
-IkChain arm_chain(const Skeleton& skeleton) {
-  const int shoulder = skeleton.find("l_shoulder"), wrist = skeleton.find("l_wrist"),
-            site = skeleton.find("l_hand_site");
-  if (shoulder < 0 || wrist < 0 || site < 0)
-    throw Error("arm chain: skeleton lacks l_shoulder, l_wrist or l_hand_site");
-  return make_chain(skeleton, shoulder, wrist, skeleton.rest_translations[site]);
+IkChain arm_chain(const Skeleton& skeleton, std::string_view side, std::string_view effector) {
+  const std::string prefix = std::string(side) + "_";
+  auto need = [&](const std::string& name) {
+    const int j = skeleton.find(name);
+    if (j < 0) throw Error("arm chain: skeleton has no joint '" + name + "'");
+    return j;
+  };
+  const int shoulder = need(prefix + "shoulder"), wrist = need(prefix + "wrist");
+  std::string site(effector);
+  if (site.empty()) site = skeleton.find(prefix + "hand_site") >= 0 ? prefix + "hand_site" : prefix + "middle1";
+  const int tip = need(site);
+  // The effector's rest position in the wrist's frame, through whatever joints lie between.
+  const Pose rest = rest_pose(skeleton);
+  const mat4 wrist_model = parent_model_matrix(skeleton, rest, wrist) * Transform{rest.translations[wrist], rest.rotations[wrist], rest.scales[wrist]}.matrix();
+  const mat4 tip_model = parent_model_matrix(skeleton, rest, tip) * Transform{rest.translations[tip], rest.rotations[tip], rest.scales[tip]}.matrix();
+  const vec3 offset = vec3(glm::inverse(wrist_model) * tip_model[3]);
+  IkChain chain = make_chain(skeleton, shoulder, wrist, offset);
+  bool below_wrist = false;
+  for (int j = tip; j >= 0; j = skeleton.parents[j]) below_wrist = below_wrist || j == wrist;
+  if (!below_wrist) throw Error("arm chain: '" + site + "' is not below '" + prefix + "wrist'");
+  return chain;
 }
 
-Pose arm_ready_pose(const Skeleton& skeleton) {
+Pose arm_ready_pose(const Skeleton& skeleton, std::string_view side) {
   Pose pose = rest_pose(skeleton);
-  const int shoulder = skeleton.find("l_shoulder"), elbow = skeleton.find("l_elbow");
-  if (shoulder < 0 || elbow < 0) throw Error("arm ready pose: skeleton lacks l_shoulder or l_elbow");
-  pose.rotations[shoulder] = joint_rotation(skeleton, shoulder, vec3(deg(-30.0f), 0.0f, deg(20.0f)));
+  const std::string prefix = std::string(side) + "_";
+  const int shoulder = skeleton.find(prefix + "shoulder"), elbow = skeleton.find(prefix + "elbow");
+  if (shoulder < 0 || elbow < 0) throw Error("arm ready pose: skeleton lacks " + prefix + "shoulder or " + prefix + "elbow");
+  const float mirror = side == "r" ? -1.0f : 1.0f;
+  pose.rotations[shoulder] = joint_rotation(skeleton, shoulder, vec3(deg(-30.0f), 0.0f, mirror * deg(20.0f)));
   pose.rotations[elbow] = joint_rotation(skeleton, elbow, vec3(deg(-70.0f), 0.0f, 0.0f));
   return pose;
 }

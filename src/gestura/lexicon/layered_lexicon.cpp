@@ -14,11 +14,12 @@ bool LayeredLexicon::hidden_above(std::size_t layer, const SignEntry& entry) {
 }
 
 template <class Query>
-std::vector<SignEntry> LayeredLexicon::merged(Query&& per_layer) {
+std::vector<SignEntry> LayeredLexicon::merged(Query&& per_layer, bool by_gloss) {
   std::vector<SignEntry> out;
   for (std::size_t i = layers_.size(); i-- > 0;)
     for (SignEntry& e : per_layer(*layers_[i]))
       if (!hidden_above(i, e)) out.push_back(std::move(e));
+  if (!by_gloss) return out;
   std::stable_sort(out.begin(), out.end(), [](const SignEntry& a, const SignEntry& b) {
     const int by_gloss = strcasecmp(a.gloss.c_str(), b.gloss.c_str());
     if (by_gloss != 0) return by_gloss < 0;
@@ -43,7 +44,8 @@ std::vector<SignEntry> LayeredLexicon::find_all(std::string_view gloss, std::str
 
 std::vector<SignEntry> LayeredLexicon::by_keyword(std::string_view word, std::string_view language,
                                                   std::string_view spoken) {
-  return merged([&](Lexicon& l) { return l.by_keyword(word, language, spoken); });
+  // Top layer first: a user's sign for a word is preferred to a built-in one.
+  return merged([&](Lexicon& l) { return l.by_keyword(word, language, spoken); }, false);
 }
 
 std::vector<SignEntry> LayeredLexicon::search(std::string_view text, SearchMode mode, std::string_view language,

@@ -18,6 +18,8 @@ class LayeredLexicon {
 
   std::optional<SignEntry> find(std::string_view gloss, std::string_view language, int variant = 1);
   std::vector<SignEntry> find_all(std::string_view gloss, std::string_view language = {});
+  // Signs for an English word, the topmost layer's first (so a translator picking the first
+  // prefers user signs); glosses hidden by a higher layer are left out.
   std::vector<SignEntry> by_keyword(std::string_view word, std::string_view language = {},
                                     std::string_view spoken = "eng");
   std::vector<SignEntry> search(std::string_view text, SearchMode mode = SearchMode::substring,
@@ -27,9 +29,10 @@ class LayeredLexicon {
  private:
   // True when a layer above `layer` has `gloss` in `language`.
   bool hidden_above(std::size_t layer, const SignEntry& entry);
-  // Merges per-layer results top-down, dropping entries hidden by a higher layer.
+  // Merges per-layer results top-down, dropping entries hidden by a higher layer; sorted by gloss,
+  // language and variant unless `by_gloss` is false (then top layer first).
   template <class Query>
-  std::vector<SignEntry> merged(Query&& per_layer);
+  std::vector<SignEntry> merged(Query&& per_layer, bool by_gloss = true);
 
   std::vector<Lexicon*> layers_;
 };

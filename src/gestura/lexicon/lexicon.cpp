@@ -87,7 +87,7 @@ std::int64_t Lexicon::add(SignEntry e, OnConflict on_conflict) {
       drop.bind(1, existing.integer(0)).run();
     }
   }
-  auto insert = db_.prepare(
+  auto& insert = db_.cached(
       "INSERT INTO signs (gloss, lang, variant, notation_kind, notation, clip, source, licence, created, updated) "
       "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, COALESCE(?9, unixepoch()), unixepoch())");
   insert.bind(1, e.gloss).bind(2, e.language).bind(3, std::int64_t{e.variant});
@@ -97,7 +97,7 @@ std::int64_t Lexicon::add(SignEntry e, OnConflict on_conflict) {
   if (created) insert.bind(9, *created); else insert.bind_null(9);
   insert.run();
   const std::int64_t id = db_.last_insert_rowid();
-  auto keyword = db_.prepare("INSERT INTO keywords (sign_id, word, lang, meaning) VALUES (?1, ?2, ?3, ?4)");
+  auto& keyword = db_.cached("INSERT INTO keywords (sign_id, word, lang, meaning) VALUES (?1, ?2, ?3, ?4)");
   for (const Keyword& k : e.keywords) {
     keyword.reset();
     keyword.bind(1, id).bind(2, ascii_lower(k.word)).bind(3, k.language).bind(4, k.meaning).run();
@@ -119,7 +119,7 @@ std::size_t Lexicon::remove(std::string_view gloss, std::string_view language, s
 }
 
 std::vector<SignEntry> Lexicon::query(std::string_view where_and_order, const std::vector<std::string>& params) {
-  auto stmt = db_.prepare(std::string(kSignColumns) + std::string(where_and_order));
+  auto& stmt = db_.cached(std::string(kSignColumns) + std::string(where_and_order));
   for (std::size_t i = 0; i < params.size(); ++i) stmt.bind(static_cast<int>(i + 1), params[i]);
   std::vector<SignEntry> out;
   while (stmt.step()) {
@@ -142,7 +142,7 @@ std::vector<SignEntry> Lexicon::query(std::string_view where_and_order, const st
 }
 
 void Lexicon::load_keywords(SignEntry& entry) {
-  auto stmt = db_.prepare("SELECT word, lang, meaning FROM keywords WHERE sign_id = ?1 ORDER BY rowid");
+  auto& stmt = db_.cached("SELECT word, lang, meaning FROM keywords WHERE sign_id = ?1 ORDER BY rowid");
   stmt.bind(1, entry.id);
   while (stmt.step()) entry.keywords.push_back(Keyword{stmt.text(0), stmt.text(1), stmt.text(2)});
 }

@@ -33,22 +33,40 @@ Database::Database(const std::string& path, bool create, int busy_timeout_ms) : 
   sqlite3_busy_timeout(db_, busy_timeout_ms);
 }
 
-Database::~Database() { sqlite3_close_v2(db_); }
+Database::~Database() {
+  cache_.clear();  // finalize before closing
+  sqlite3_close_v2(db_);
+}
 
 Database::Database(Database&& other) noexcept
-    : db_(std::exchange(other.db_, nullptr)), path_(std::move(other.path_)) {}
+    : db_(std::exchange(other.db_, nullptr)), path_(std::move(other.path_)), cache_(std::move(other.cache_)) {}
 
 Database& Database::operator=(Database&& other) noexcept {
   if (this != &other) {
+    cache_.clear();
     sqlite3_close_v2(db_);
     db_ = std::exchange(other.db_, nullptr);
     path_ = std::move(other.path_);
+    cache_ = std::move(other.cache_);
   }
   return *this;
 }
 
-void Database::fail(const std::string& what) const {
-  throw Error(SourceLocation{path_}, what + ": " + describe(db_, sqlite3_extended_errcode(db_)));
+namespace {
+
+[[noreturn]] void fail_on(sqlite3* db, const std::string& path, const std::string& what) {
+  throw Error(SourceLocation{path}, what + ": " + describe(db, sqlite3_extended_errcode(db)));
+}
+
+}  // namespace
+
+void Database::fail(const std::string& what) const { fail_on(db_, path_, what); }
+
+Statement& Database::cached(const std::string& sql) {
+  auto it = cache_.find(sql);
+  if (it == cache_.end()) it = cache_.emplace(sql, std::make_unique<Statement>(*this, sql)).first;
+  it->second->reset();
+  return *it->second;
 }
 
 void Database::exec(std::string_view sql) {
@@ -72,34 +90,37 @@ std::int64_t Database::last_insert_rowid() const { return sqlite3_last_insert_ro
 
 int Database::changes() const { return sqlite3_changes(db_); }
 
-Statement::Statement(Database& db, std::string_view sql) : db_(&db) {
-  if (sqlite3_prepare_v2(db.handle(), sql.data(), static_cast<int>(sql.size()), &stmt_, nullptr) != SQLITE_OK)
-    db.fail("cannot prepare statement");
+Statement::Statement(Database& db, std::string_view sql) : db_(db.handle()), path_(db.path()) {
+  if (sqlite3_prepare_v2(db_, sql.data(), static_cast<int>(sql.size()), &stmt_, nullptr) != SQLITE_OK)
+    fail("cannot prepare statement");
 }
 
 Statement::~Statement() { sqlite3_finalize(stmt_); }
 
-Statement::Statement(Statement&& other) noexcept : db_(other.db_), stmt_(std::exchange(other.stmt_, nullptr)) {}
+Statement::Statement(Statement&& other) noexcept
+    : db_(other.db_), path_(std::move(other.path_)), stmt_(std::exchange(other.stmt_, nullptr)) {}
+
+void Statement::fail(const std::string& what) const { fail_on(db_, path_, what); }
 
 Statement& Statement::bind(int index, std::string_view text) {
   if (sqlite3_bind_text(stmt_, index, text.data(), static_cast<int>(text.size()), SQLITE_TRANSIENT) != SQLITE_OK)
-    db_->fail("cannot bind text");
+    fail("cannot bind text");
   return *this;
 }
 
 Statement& Statement::bind(int index, std::int64_t value) {
-  if (sqlite3_bind_int64(stmt_, index, value) != SQLITE_OK) db_->fail("cannot bind integer");
+  if (sqlite3_bind_int64(stmt_, index, value) != SQLITE_OK) fail("cannot bind integer");
   return *this;
 }
 
 Statement& Statement::bind(int index, const std::vector<std::uint8_t>& blob) {
   if (sqlite3_bind_blob(stmt_, index, blob.data(), static_cast<int>(blob.size()), SQLITE_TRANSIENT) != SQLITE_OK)
-    db_->fail("cannot bind blob");
+    fail("cannot bind blob");
   return *this;
 }
 
 Statement& Statement::bind_null(int index) {
-  if (sqlite3_bind_null(stmt_, index) != SQLITE_OK) db_->fail("cannot bind null");
+  if (sqlite3_bind_null(stmt_, index) != SQLITE_OK) fail("cannot bind null");
   return *this;
 }
 
@@ -108,7 +129,7 @@ bool Statement::step() {
   if (rc == SQLITE_ROW) return true;
   if (rc == SQLITE_DONE) return false;
   sqlite3_reset(stmt_);
-  db_->fail("query failed");
+  fail("query failed");
 }
 
 void Statement::run() {

@@ -5,9 +5,11 @@
 #include <sqlite3.h>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace gestura::sqlite {
@@ -28,6 +30,9 @@ class Database {
   // Runs one or more statements without results.
   void exec(std::string_view sql);
   Statement prepare(std::string_view sql);
+  // A statement prepared once per connection and reused (reset, bindings cleared) on every call;
+  // for the hot lookups. Not re-entrant: finish with one before asking for the same SQL again.
+  Statement& cached(const std::string& sql);
   std::int64_t last_insert_rowid() const;
   int changes() const;
 
@@ -40,6 +45,7 @@ class Database {
  private:
   sqlite3* db_ = nullptr;
   std::string path_;
+  std::unordered_map<std::string, std::unique_ptr<Statement>> cache_;
 };
 
 class Statement {
@@ -69,7 +75,11 @@ class Statement {
   bool is_null(int column) const;
 
  private:
-  Database* db_;
+  [[noreturn]] void fail(const std::string& what) const;
+
+  // The connection and its file name, not the Database object, which may move.
+  sqlite3* db_;
+  std::string path_;
   sqlite3_stmt* stmt_ = nullptr;
 };
 

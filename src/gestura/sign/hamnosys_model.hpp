@@ -151,6 +151,9 @@ struct Location {
   std::optional<FingerPart> finger_part;
   Side side = Side::centre;
   std::optional<SitePoint> between;  // hambetween: halfway between this point and that one
+  // The part of the hand placed at the location, written as a bracketed sequence after it:
+  // "hamchin hamseqbegin hamtouch hamfingertip hamseqend" = the fingertips touch the chin.
+  std::optional<SitePoint> hand_part;
   std::optional<Proximity> proximity;  // contact symbol written with the location
   bool contact_before = false;       // the contact symbol preceded the location
   bool nondominant_hand = false;     // a site on the other hand (hand constellations)
@@ -233,7 +236,9 @@ enum class ElementKind : std::uint8_t {
 };
 
 // One node of a sign. Leaves carry one typed value; groups carry children. For hand_pair and
-// alternatives each child is a sequence holding one branch.
+// alternatives each child is a sequence holding one branch. A replacement motion whose new values
+// are given per hand ("hamreplace hamparbegin ... hamplus ... hamparend") carries that group as
+// its one child.
 struct Element {
   ElementKind kind = ElementKind::sequence;
   std::variant<std::monostate, Handshape, Orientation, Location, Contact, Motion, Repetition> value;

@@ -184,6 +184,15 @@ bool is_location_symbol(C c) {
   return c == C::location_site || c == C::finger || c == C::finger_part || c == C::location_side;
 }
 
+Symbol opener_of(Symbol closer) {
+  switch (closer) {
+    case S::parend: return S::parbegin;
+    case S::seqend: return S::seqbegin;
+    case S::fusionend: return S::fusionbegin;
+    default: return S::altbegin;
+  }
+}
+
 bool is_opener(Symbol s) { return s == S::parbegin || s == S::seqbegin || s == S::fusionbegin || s == S::altbegin; }
 bool is_closer(Symbol s) { return s == S::parend || s == S::seqend || s == S::fusionend || s == S::altend; }
 
@@ -237,7 +246,7 @@ class Parser {
         note(index() - 1, "top-level hamplus read as a compound of two sign segments");
         continue;
       }
-      if (is_closer(s)) fail(index(), quoted(s) + " without a matching opening bracket");
+      if (is_closer(s)) fail(index(), quoted(s) + " without a matching opening bracket: expected " + quoted(opener_of(s)) + " before it");
       fail(index(), "hammetaalt outside hamaltbegin ... hamaltend");
     }
     sign.notes = std::move(notes_);
@@ -280,9 +289,10 @@ class Parser {
     ManualSign segment;
     segment.first_symbol = index();
     parse_symmetry_prefix(segment);
+    const int posture_start = index();
     std::vector<Element> elements;
     parse_list(elements);
-    build_segment(segment, std::move(elements));
+    build_segment(segment, std::move(elements), posture_start);
     return segment;
   }
 
@@ -919,15 +929,42 @@ class Parser {
     return true;
   }
 
+  // "hamseqbegin [contact] location hamseqend" after a location: which part of the hand is there.
+  static bool is_hand_part_sequence(const Element& e) {
+    if (e.kind != ElementKind::sequence || e.children.empty() || e.children.size() > 2) return false;
+    if (e.children.size() == 2 && e.children[0].kind != ElementKind::contact) return false;
+    return e.children.back().kind == ElementKind::location;
+  }
+
+  static void apply_hand_part(Location& at, const Element& seq) {
+    const Location& part = *seq.children.back().location();
+    at.hand_part = SitePoint{part.site, part.fingers, part.finger_part, part.side};
+    if (seq.children.size() == 2) at.proximity = seq.children[0].contact()->proximity;
+  }
+
   // Fills one hand's fields from a posture branch; a field already set is kept.
   void fill_hand(Posture& p, const Element& e, bool dominant, std::optional<Proximity>& pending) {
     auto set = [&](auto& per_hand, const auto& v) {
       auto& slot = dominant ? per_hand.dominant : per_hand.nondominant;
       if (!slot) slot = v;
+      else note(e.symbol_index, "second value for the same hand in the posture ignored");
     };
     switch (e.kind) {
       case ElementKind::handshape: set(p.handshape, *e.handshape()); break;
-      case ElementKind::orientation: set(p.orientation, *e.orientation()); break;
+      case ElementKind::orientation: {
+        // A palm-only orientation completes one written with only the finger direction
+        // ("hamextfingerdo hamparbegin hampalml hamplus hampalmr hamparend").
+        auto& slot = dominant ? p.orientation.dominant : p.orientation.nondominant;
+        const Orientation& o = *e.orientation();
+        if (slot && !slot->palm && o.palm && !o.extended_finger) {
+          slot->palm = o.palm;
+          slot->palm_between = o.palm_between;
+          slot->palm_relative = o.palm_relative;
+        } else {
+          set(p.orientation, o);
+        }
+        break;
+      }
       case ElementKind::location: {
         Location loc = *e.location();
         if (pending) {
@@ -951,14 +988,20 @@ class Parser {
         note(e.symbol_index, "alternatives in the posture: the first one is used");
         if (!e.children.empty()) fill_hand(p, e.children.front(), dominant, pending);
         break;
-      case ElementKind::sequence:
+      case ElementKind::sequence: {
+        auto& slot = dominant ? p.location.dominant : p.location.nondominant;
+        if (slot && !slot->hand_part && is_hand_part_sequence(e)) {
+          apply_hand_part(*slot, e);
+          break;
+        }
         for (const Element& child : e.children) fill_hand(p, child, dominant, pending);
         break;
+      }
       default: break;
     }
   }
 
-  void build_segment(ManualSign& segment, std::vector<Element> elements) {
+  void build_segment(ManualSign& segment, std::vector<Element> elements, int posture_start) {
     Posture& p = segment.posture;
     std::optional<Proximity> pending;
     std::size_t i = 0;
@@ -970,6 +1013,10 @@ class Parser {
           const bool dominant = (b == 0) != first_is_nondominant;
           fill_hand(p, e.children[b], dominant, pending);
         }
+        continue;
+      }
+      if (p.location.dominant && !p.location.dominant->hand_part && is_hand_part_sequence(e)) {
+        apply_hand_part(*p.location.dominant, e);
         continue;
       }
       if (e.kind == ElementKind::alternatives && is_posture_group(e)) {
@@ -1006,15 +1053,18 @@ class Parser {
       fill_hand(p, e, true, pending);
     }
     if (pending) p.hands_contact = pending;
+    // A finger direction written once before per-hand palms holds for both hands.
+    if (p.orientation.dominant && p.orientation.nondominant && !p.orientation.nondominant->extended_finger)
+      p.orientation.nondominant->extended_finger = p.orientation.dominant->extended_finger;
     // Lexicons omit the handshape when it carries over (an orientation is then still written);
     // a segment with neither is not a sign.
     if (!p.handshape.dominant && !p.handshape.nondominant) {
       if (!p.orientation.dominant && !p.orientation.nondominant)
-        fail(segment.first_symbol, "expected a handshape (e.g. hamflathand) at the start of the sign, found " +
-                                       (segment.first_symbol < static_cast<int>(sym_.size())
-                                            ? quoted(sym_[static_cast<std::size_t>(segment.first_symbol)])
-                                            : std::string("end of input")));
-      tolerate(segment.first_symbol, "sign without a handshape: expected one before the orientation");
+        fail(posture_start, "expected a handshape (e.g. hamflathand) at the start of the sign, found " +
+                                (posture_start < static_cast<int>(sym_.size())
+                                     ? quoted(sym_[static_cast<std::size_t>(posture_start)])
+                                     : std::string("end of input")));
+      tolerate(posture_start, "sign without a handshape: expected one before the orientation");
     }
     segment.actions.assign(std::make_move_iterator(elements.begin() + static_cast<std::ptrdiff_t>(i)),
                            std::make_move_iterator(elements.end()));

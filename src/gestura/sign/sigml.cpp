@@ -1,7 +1,6 @@
 #include "gestura/sign/sigml.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <fstream>
 #include <pugixml.hpp>
 

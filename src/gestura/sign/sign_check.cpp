@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gestura/core/error.hpp"
+#include "gestura/sign/hamnosys_describe.hpp"
 #include "gestura/sign/sigml.hpp"
 
 namespace gestura::sign {
@@ -14,8 +15,9 @@ SynthesisHook& hook_slot() {
 }
 
 // Counts a parsed sign and runs synthesis when connected.
-void after_parse(CheckReport& report, const HamSign& sign, const std::string& place) {
+void after_parse(CheckReport& report, const HamSign& sign, const std::string& place, const CheckOptions& options) {
   ++report.parsed;
+  if (options.describe_parsed) report.descriptions.push_back(place + ": " + describe(sign));
   if (!report.synthesis_connected) return;
   if (const auto why = synthesis_hook()(sign)) {
     ++report.failed;
@@ -42,7 +44,7 @@ std::string_view extension(std::string_view path) {
 void set_synthesis_hook(SynthesisHook hook) { hook_slot() = std::move(hook); }
 const SynthesisHook& synthesis_hook() { return hook_slot(); }
 
-CheckReport check_jsonl(std::string_view text, std::string_view file_name, const ParseOptions& options) {
+CheckReport check_jsonl(std::string_view text, std::string_view file_name, const CheckOptions& options) {
   CheckReport report;
   report.synthesis_connected = static_cast<bool>(synthesis_hook());
   std::size_t start = 0;
@@ -71,9 +73,9 @@ CheckReport check_jsonl(std::string_view text, std::string_view file_name, const
       continue;
     }
     try {
-      const HamSign sign = have_unicode ? parse_hamnosys_unicode(ham->get_ref<const std::string&>(), options)
-                                        : parse_hamnosys_names(names->get_ref<const std::string&>(), options);
-      after_parse(report, sign, place);
+      const HamSign sign = have_unicode ? parse_hamnosys_unicode(ham->get_ref<const std::string&>(), options.parse)
+                                        : parse_hamnosys_names(names->get_ref<const std::string&>(), options.parse);
+      after_parse(report, sign, place, options);
     } catch (const Error& e) {
       parse_failed(report, place, e.what());
     }
@@ -81,19 +83,19 @@ CheckReport check_jsonl(std::string_view text, std::string_view file_name, const
   return report;
 }
 
-CheckReport check_sigml(std::string_view text, std::string_view file_name, const ParseOptions& options) {
+CheckReport check_sigml(std::string_view text, std::string_view file_name, const CheckOptions& options) {
   CheckReport report;
   report.synthesis_connected = static_cast<bool>(synthesis_hook());
-  for (const SigmlEntry& entry : read_sigml_entries(text, file_name, options)) {
+  for (const SigmlEntry& entry : read_sigml_entries(text, file_name, options.parse)) {
     ++report.signs;
     const std::string place = std::string(file_name) + ":" + std::to_string(entry.line) + ": " + entry.gloss;
-    if (entry.sign) after_parse(report, entry.sign->manual, place);
+    if (entry.sign) after_parse(report, entry.sign->manual, place, options);
     else parse_failed(report, place, entry.error->message());
   }
   return report;
 }
 
-CheckReport check_file(const std::string& path, const ParseOptions& options) {
+CheckReport check_file(const std::string& path, const CheckOptions& options) {
   const std::string_view ext = extension(path);
   if (ext != ".jsonl" && ext != ".sigml") throw Error(path + ": unknown file type: expected .jsonl or .sigml");
   const std::string text = read_text_file(path);

@@ -19,21 +19,27 @@ using SynthesisHook = std::function<std::optional<std::string>(const HamSign&)>;
 void set_synthesis_hook(SynthesisHook hook);
 const SynthesisHook& synthesis_hook();
 
+struct CheckOptions {
+  ParseOptions parse;
+  bool describe_parsed = false;  // fill CheckReport::descriptions (gestura check --show)
+};
+
 struct CheckReport {
   int signs = 0;
   int parsed = 0;
   int synthesized = 0;
   int failed = 0;                     // not parsed, or parsed but synthesis failed
   std::vector<std::string> failures;  // one line per failing sign: "file:line: gloss: reason"
+  std::vector<std::string> descriptions;  // "file:line: gloss: <describe(sign)>" when asked for
   bool synthesis_connected = false;
 };
 
 // One object per line with a `hamnosys` string (Unicode) or, failing that, a `names` string.
 // Bad lines (not JSON, no notation) count as failed signs; the rest go on.
-CheckReport check_jsonl(std::string_view text, std::string_view file_name, const ParseOptions& options = {});
+CheckReport check_jsonl(std::string_view text, std::string_view file_name, const CheckOptions& options = {});
 // Malformed XML throws gestura::Error (file:line:col); a bad sign inside counts as failed.
-CheckReport check_sigml(std::string_view text, std::string_view file_name, const ParseOptions& options = {});
+CheckReport check_sigml(std::string_view text, std::string_view file_name, const CheckOptions& options = {});
 // Picks the reader by extension (.jsonl / .sigml); throws gestura::Error for others.
-CheckReport check_file(const std::string& path, const ParseOptions& options = {});
+CheckReport check_file(const std::string& path, const CheckOptions& options = {});
 
 }  // namespace gestura::sign

@@ -79,6 +79,9 @@ class SentenceTranslator {
  public:
   SentenceTranslator(std::vector<Word> words, bool question, SignInventory& inventory, std::vector<WordNote>& notes)
       : w_(std::move(words)), question_(question), inventory_(inventory), notes_(notes) {
+    while (first_word_ < w_.size() && w_[first_word_].kind != TokenKind::word &&
+           w_[first_word_].kind != TokenKind::number)
+      ++first_word_;
     all_caps_ = std::none_of(w_.begin(), w_.end(), [](const Word& w) {
       return w.kind == TokenKind::word && w.text != utf8::upper(w.text) && w.lower != w.text;
     });
@@ -356,11 +359,8 @@ class SentenceTranslator {
     return true;
   }
 
-  bool sentence_initial() const {
-    for (std::size_t k = 0; k < i_; ++k)
-      if (w_[k].kind == TokenKind::word || w_[k].kind == TokenKind::number) return false;
-    return true;
-  }
+  // No word or number before the current one (pauses and symbols may precede it).
+  bool sentence_initial() const { return i_ <= first_word_; }
 
   // Do-support: "do not", and an auxiliary "do" opening a question or following its wh-word.
   bool is_do_support() const {
@@ -379,6 +379,14 @@ class SentenceTranslator {
     if (!next || next->kind != TokenKind::word) return false;
     return english::dropped(next->lower) == english::DropReason::none && !english::pronoun_gloss(next->lower) &&
            !english::time_gloss(next->lower) && !english::is_auxiliary(next->lower) && next->lower != "not";
+  }
+
+  // "have eaten", "has gone", "had finished": the next word reads as a past form.
+  bool next_is_participle() const {
+    const Word* next = at(i_ + 1);
+    if (!next || next->kind != TokenKind::word) return false;
+    const auto rule = lemma_candidates(next->lower).front().rule;
+    return rule == "irregular participle" || rule == "irregular past" || rule == "past -ed" || rule == "past -ied";
   }
 
   void fingerspell(const Word& w, std::string why) {
@@ -431,6 +439,13 @@ class SentenceTranslator {
       const std::string reason = "'never' → NEVER: negation, in place";
       note(w, reason);
       emit(make("NEVER", GlossKind::sign, w, reason), Role::negation_in_place);
+      ++i_;
+      return;
+    }
+    if ((l == "have" || l == "has" || l == "had") && next_is_participle()) {
+      const std::string reason = quoted(w.text) + " → FINISH: perfect 'have', a completed action";
+      note(w, reason);
+      emit(make("FINISH", GlossKind::sign, w, reason), Role::plain);
       ++i_;
       return;
     }
@@ -489,12 +504,7 @@ class SentenceTranslator {
     fingerspell(w, "no sign in the lexicon");
   }
 
-  bool sentence_initial_word(const Word& w) const { return &w == first_word(); }
-  const Word* first_word() const {
-    for (const Word& w : w_)
-      if (w.kind == TokenKind::word || w.kind == TokenKind::number) return &w;
-    return nullptr;
-  }
+  bool sentence_initial_word(const Word& w) const { return first_word_ < w_.size() && &w == &w_[first_word_]; }
 
   void sign(const Word& w, const std::string& gloss, std::string reason) {
     note(w, reason);
@@ -502,6 +512,7 @@ class SentenceTranslator {
   }
 
   std::vector<Word> w_;
+  std::size_t first_word_ = 0;  // index of the first word or number
   bool question_;
   SignInventory& inventory_;
   std::vector<WordNote>& notes_;
@@ -628,8 +639,10 @@ Translation translate_to_gloss(std::string_view english, SignInventory& inventor
     }
     start = end + 1;
   }
-  std::stable_sort(out.notes.begin(), out.notes.end(),
-                   [](const WordNote& a, const WordNote& b) { return a.begin < b.begin; });
+  // Notes come out in word order already; the sort is a guarantee, not the usual path.
+  const auto by_position = [](const WordNote& a, const WordNote& b) { return a.begin < b.begin; };
+  if (!std::is_sorted(out.notes.begin(), out.notes.end(), by_position))
+    std::stable_sort(out.notes.begin(), out.notes.end(), by_position);
   return out;
 }
 
