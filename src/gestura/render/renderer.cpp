@@ -32,10 +32,13 @@ uniform samplerBuffer u_morph_weights; // one weight per morph target
 uniform bool u_skin_on_gpu;
 uniform bool u_morphs_active;
 uniform mat4 u_view_projection;
+uniform vec3 u_albedo[10];    // per MaterialId, linear
+uniform vec4 u_surface[10];   // per MaterialId: wrap, scatter, specular, shininess
 
 out vec3 v_world;
 out vec3 v_normal;
-flat out uint v_material;
+out vec3 v_albedo;   // interpolated, so material borders blend instead of stair-stepping
+out vec4 v_surface;
 
 mat4 joint_matrix(uint j) { return u_joints[j]; }
 
@@ -58,7 +61,9 @@ void main() {
   }
   v_world = p;
   v_normal = n;
-  v_material = a_material;
+  uint material = min(a_material, 9u);
+  v_albedo = u_albedo[material];
+  v_surface = u_surface[material];
   gl_Position = u_view_projection * vec4(p, 1.0);
 }
 )";
@@ -70,13 +75,12 @@ void main() {
 constexpr const char* kFragmentShader = R"(#version 330 core
 in vec3 v_world;
 in vec3 v_normal;
-flat in uint v_material;
+in vec3 v_albedo;
+in vec4 v_surface;
 
 uniform vec3 u_eye;
 uniform vec3 u_view_direction;
 uniform bool u_orthographic;
-uniform vec3 u_albedo[10];    // linear
-uniform vec4 u_surface[10];   // wrap, scatter, specular, shininess
 
 out vec4 o_color;
 
@@ -95,12 +99,11 @@ float specular(vec3 n, vec3 v, vec3 l, vec4 s) {
 }
 
 void main() {
-  uint m = min(v_material, 9u);
   vec3 n = normalize(v_normal);
   vec3 v = u_orthographic ? -u_view_direction : normalize(u_eye - v_world);
   if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n;
-  vec3 albedo = u_albedo[m];
-  vec4 s = u_surface[m];
+  vec3 albedo = v_albedo;
+  vec4 s = v_surface;
 
   const vec3 key = vec3(-0.4511, 0.5514, 0.7018), fill = vec3(0.7814, 0.1116, 0.6140), rim = vec3(0.2516, 0.4528, -0.8554);
   const vec3 key_color = vec3(1.25, 1.18, 1.08), fill_color = vec3(0.32, 0.36, 0.44), rim_color = vec3(0.70, 0.70, 0.75);
