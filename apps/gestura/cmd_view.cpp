@@ -13,6 +13,7 @@
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/render_job.hpp"
 #include "gestura/render/renderer.hpp"
+#include "gestura/render/viewer_controls.hpp"
 #include "render_subject.hpp"
 
 namespace gestura::cli {
@@ -33,49 +34,38 @@ keys:  space play/pause   , . step one frame back/forward   1 2 3 speed 0.25x 0.
        r restart   q / Esc quit
 mouse: left drag orbit   right or middle drag pan   wheel zoom)";
 
+// What the window callbacks reach: the controls and the mouse state.
 struct Viewer {
-  const RenderSubject* subject = nullptr;
-  FramingBox box;
-  Orbit orbit;
-  std::optional<CameraPreset> fixed;  // an orthographic preset shown as is until the mouse moves it
-  float time = 0.0f, speed = 1.0f, step = 1.0f / 30.0f;
-  bool playing = true, loop = true;
+  ViewerControls controls;
   bool dragging_orbit = false, dragging_pan = false;
   double last_x = 0.0, last_y = 0.0;
-  float aspect = 16.0f / 9.0f;
-
-  void select(CameraPreset preset) {
-    orbit = preset_orbit(preset, box, aspect);
-    fixed.reset();
-    if (preset == CameraPreset::Top || preset == CameraPreset::SideSection) fixed = preset;
-  }
-  Camera camera(float view_aspect) const {
-    return fixed ? preset_camera(*fixed, box, view_aspect) : orbit_camera(orbit, view_aspect);
-  }
 };
 
 Viewer& viewer_of(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
 
+std::optional<ViewerCommand> command_for(int key) {
+  switch (key) {
+    case GLFW_KEY_SPACE: return ViewerCommand::PlayPause;
+    case GLFW_KEY_COMMA: return ViewerCommand::StepBack;
+    case GLFW_KEY_PERIOD: return ViewerCommand::StepForward;
+    case GLFW_KEY_1: return ViewerCommand::Speed025;
+    case GLFW_KEY_2: return ViewerCommand::Speed05;
+    case GLFW_KEY_3: return ViewerCommand::Speed1;
+    case GLFW_KEY_L: return ViewerCommand::ToggleLoop;
+    case GLFW_KEY_R: return ViewerCommand::Restart;
+    case GLFW_KEY_F1: case GLFW_KEY_F: return ViewerCommand::Front;
+    case GLFW_KEY_F2: case GLFW_KEY_S: return ViewerCommand::Side;
+    case GLFW_KEY_F3: case GLFW_KEY_T: return ViewerCommand::ThreeQuarter;
+    case GLFW_KEY_F4: case GLFW_KEY_P: return ViewerCommand::Top;
+    case GLFW_KEY_F5: case GLFW_KEY_X: return ViewerCommand::SideSection;
+    default: return std::nullopt;
+  }
+}
+
 void on_key(GLFWwindow* window, int key, int, int action, int) {
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
-  Viewer& v = viewer_of(window);
-  switch (key) {
-    case GLFW_KEY_SPACE: v.playing = !v.playing; break;
-    case GLFW_KEY_COMMA: v.playing = false, v.time = std::max(0.0f, v.time - v.step); break;
-    case GLFW_KEY_PERIOD: v.playing = false, v.time += v.step; break;
-    case GLFW_KEY_1: v.speed = 0.25f; break;
-    case GLFW_KEY_2: v.speed = 0.5f; break;
-    case GLFW_KEY_3: v.speed = 1.0f; break;
-    case GLFW_KEY_L: v.loop = !v.loop; break;
-    case GLFW_KEY_R: v.time = 0.0f, v.playing = true; break;
-    case GLFW_KEY_F1: case GLFW_KEY_F: v.select(CameraPreset::Front); break;
-    case GLFW_KEY_F2: case GLFW_KEY_S: v.select(CameraPreset::Side); break;
-    case GLFW_KEY_F3: case GLFW_KEY_T: v.select(CameraPreset::ThreeQuarter); break;
-    case GLFW_KEY_F4: case GLFW_KEY_P: v.select(CameraPreset::Top); break;
-    case GLFW_KEY_F5: case GLFW_KEY_X: v.select(CameraPreset::SideSection); break;
-    case GLFW_KEY_Q: case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
-    default: break;
-  }
+  if (key == GLFW_KEY_Q || key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
+  else if (const auto command = command_for(key)) viewer_of(window).controls.apply(*command);
 }
 
 void on_button(GLFWwindow* window, int button, int action, int) {
@@ -90,24 +80,11 @@ void on_move(GLFWwindow* window, double x, double y) {
   Viewer& v = viewer_of(window);
   const float dx = static_cast<float>(x - v.last_x), dy = static_cast<float>(y - v.last_y);
   v.last_x = x, v.last_y = y;
-  if (!v.dragging_orbit && !v.dragging_pan) return;
-  v.fixed.reset();
-  if (v.dragging_orbit) {
-    v.orbit.yaw -= dx * 0.008f;
-    v.orbit.pitch = std::clamp(v.orbit.pitch + dy * 0.008f, deg(-89.0f), deg(89.0f));
-  } else {
-    const Camera c = orbit_camera(v.orbit, v.aspect);
-    const vec3 right{c.view[0][0], c.view[1][0], c.view[2][0]}, up{c.view[0][1], c.view[1][1], c.view[2][1]};
-    const float scale = v.orbit.distance * 0.0015f;
-    v.orbit.target += (-dx * right + dy * up) * scale;
-  }
+  if (v.dragging_orbit) v.controls.orbit_drag(dx, dy);
+  else if (v.dragging_pan) v.controls.pan_drag(dx, dy);
 }
 
-void on_scroll(GLFWwindow* window, double, double dy) {
-  Viewer& v = viewer_of(window);
-  v.fixed.reset();
-  v.orbit.distance = std::clamp(v.orbit.distance * std::pow(0.9f, static_cast<float>(dy)), 0.1f, 100.0f);
-}
+void on_scroll(GLFWwindow* window, double, double dy) { viewer_of(window).controls.zoom(static_cast<float>(dy)); }
 
 int run(const std::vector<std::string>& args) {
   Motion motion = Motion::TestMotion;
@@ -140,11 +117,8 @@ int run(const std::vector<std::string>& args) {
   WindowGlContext window(size.width, size.height, "gestura view");
   Renderer renderer(look);
   renderer.upload(subject.mesh);
-  Viewer viewer;
-  viewer.subject = &subject;
-  viewer.box = framing_box(subject.mesh, subject.skeleton);
-  viewer.aspect = static_cast<float>(size.width) / static_cast<float>(size.height);
-  viewer.select(start);
+  Viewer viewer{ViewerControls(framing_box(subject.mesh, subject.skeleton), start,
+                                static_cast<float>(size.width) / static_cast<float>(size.height))};
   glfwSetWindowUserPointer(window.window(), &viewer);
   glfwSetKeyCallback(window.window(), on_key);
   glfwSetMouseButtonCallback(window.window(), on_button);
@@ -156,18 +130,17 @@ int run(const std::vector<std::string>& args) {
   for (int drawn = 0; !window.should_close(); ++drawn) {
     glfwPollEvents();
     const double now = glfwGetTime();
-    if (viewer.playing) viewer.time += static_cast<float>(now - last) * viewer.speed;
+    ViewerControls& c = viewer.controls;
+    c.advance(static_cast<float>(now - last), animator.duration());
     last = now;
-    const float duration = animator.duration();
-    if (duration > 0.0f && viewer.time > duration) viewer.time = viewer.loop ? std::fmod(viewer.time, duration) : duration;
-    animator.pose_at(viewer.time);
+    animator.pose_at(c.time);
 
     int width = 0, height = 0;
     window.framebuffer_size(width, height);
     if (width <= 0 || height <= 0) continue;  // minimised
     renderer.resize(width, height);
-    viewer.aspect = static_cast<float>(width) / static_cast<float>(height);
-    const View view{viewer.camera(viewer.aspect), {0, 0, width, height}};
+    c.aspect = static_cast<float>(width) / static_cast<float>(height);
+    const View view{c.camera(c.aspect), {0, 0, width, height}};
     renderer.render(std::span(&view, 1), animator.skinning(), animator.morph_weights());
     renderer.present(width, height);
     if (screenshot_file && drawn + 1 >= screenshot_frames) {
@@ -177,8 +150,8 @@ int run(const std::vector<std::string>& args) {
     }
     window.swap_buffers();
     char title[160];
-    std::snprintf(title, sizeof title, "gestura view — %.2f / %.2f s  %.2gx%s%s", viewer.time, duration, viewer.speed,
-                  viewer.playing ? "" : "  paused", viewer.loop ? "  loop" : "");
+    std::snprintf(title, sizeof title, "gestura view — %.2f / %.2f s  %.2gx%s%s", c.time, animator.duration(), c.speed,
+                  c.playing ? "" : "  paused", c.loop ? "  loop" : "");
     glfwSetWindowTitle(window.window(), title);
   }
   return 0;

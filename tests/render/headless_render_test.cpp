@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 
 #include "gestura/core/error.hpp"
@@ -180,6 +181,28 @@ TEST_F(HeadlessRender, SplitViewDrawsEachCameraInItsPane) {
   const Image image = draw(views);
   EXPECT_GT(coverage(image, panes[0]), panes[0].width * panes[0].height / 30);
   EXPECT_GT(coverage(image, panes[1]), panes[1].width * panes[1].height / 30);
+}
+
+TEST_F(HeadlessRender, PreviousFramesLeaveNoTrails) {
+  const Image fresh = draw(CameraPreset::Front);  // rest pose on a new renderer
+  // The whole figure moved 0.6 m to its left: far outside where the rest pose draws.
+  std::vector<mat4> shifted(animator_->skinning().begin(), animator_->skinning().end());
+  for (mat4& m : shifted) m = glm::translate(mat4(1.0f), vec3(0.6f, 0.0f, 0.0f)) * m;
+  const View view{preset_camera(CameraPreset::Front, box_, float(kW) / kH), {0, 0, kW, kH}};
+  renderer_->render({&view, 1}, shifted, {});
+  Image moved;
+  renderer_->read_pixels(moved);
+  ASSERT_NE(moved.rgba, fresh.rgba);
+  EXPECT_EQ(draw(CameraPreset::Front).rgba, fresh.rgba);
+}
+
+TEST_F(HeadlessRender, BackgroundChangeRepaintsTheWholeImage) {
+  const Image fresh = draw(CameraPreset::Front);
+  look_.background = vec3(0.2f, 0.3f, 0.4f);
+  const Image blue = draw(CameraPreset::Front);
+  EXPECT_EQ(int(blue.pixel(0, kH - 1)[2]), 102);
+  look_ = Look{};
+  EXPECT_EQ(draw(CameraPreset::Front).rgba, fresh.rgba);
 }
 
 TEST_F(HeadlessRender, TooFewSkinningMatricesAndTooManyMorphWeightsAreErrors) {

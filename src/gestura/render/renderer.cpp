@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "gestura/core/error.hpp"
@@ -31,10 +32,13 @@ uniform samplerBuffer u_morph_weights; // one weight per morph target
 uniform bool u_skin_on_gpu;
 uniform bool u_morphs_active;
 uniform mat4 u_view_projection;
+uniform vec3 u_albedo[10];    // per MaterialId, linear
+uniform vec4 u_surface[10];   // per MaterialId: wrap, scatter, specular, shininess
 
 out vec3 v_world;
 out vec3 v_normal;
-flat out uint v_material;
+out vec3 v_albedo;   // interpolated, so material borders blend instead of stair-stepping
+out vec4 v_surface;
 
 mat4 joint_matrix(uint j) { return u_joints[j]; }
 
@@ -57,7 +61,9 @@ void main() {
   }
   v_world = p;
   v_normal = n;
-  v_material = a_material;
+  uint material = min(a_material, 9u);
+  v_albedo = u_albedo[material];
+  v_surface = u_surface[material];
   gl_Position = u_view_projection * vec4(p, 1.0);
 }
 )";
@@ -69,13 +75,12 @@ void main() {
 constexpr const char* kFragmentShader = R"(#version 330 core
 in vec3 v_world;
 in vec3 v_normal;
-flat in uint v_material;
+in vec3 v_albedo;
+in vec4 v_surface;
 
 uniform vec3 u_eye;
 uniform vec3 u_view_direction;
 uniform bool u_orthographic;
-uniform vec3 u_albedo[10];    // linear
-uniform vec4 u_surface[10];   // wrap, scatter, specular, shininess
 
 out vec4 o_color;
 
@@ -94,12 +99,11 @@ float specular(vec3 n, vec3 v, vec3 l, vec4 s) {
 }
 
 void main() {
-  uint m = min(v_material, 9u);
   vec3 n = normalize(v_normal);
   vec3 v = u_orthographic ? -u_view_direction : normalize(u_eye - v_world);
   if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n;
-  vec3 albedo = u_albedo[m];
-  vec4 s = u_surface[m];
+  vec3 albedo = v_albedo;
+  vec4 s = v_surface;
 
   const vec3 key = vec3(-0.4511, 0.5514, 0.7018), fill = vec3(0.7814, 0.1116, 0.6140), rim = vec3(0.2516, 0.4528, -0.8554);
   const vec3 key_color = vec3(1.25, 1.18, 1.08), fill_color = vec3(0.32, 0.36, 0.44), rim_color = vec3(0.70, 0.70, 0.75);
@@ -236,6 +240,7 @@ void Renderer::upload(const Mesh& mesh) {
     if (mesh.indices[i] >= n) throw Error("renderer: index " + std::to_string(i) + " refers to vertex " +
                                           std::to_string(mesh.indices[i]) + " of " + std::to_string(n));
   mesh_ = mesh;
+  compute_bounds();
   joint_limit_ = 0;
   for (const JointIndices& j : mesh.joints)
     joint_limit_ = std::max<std::size_t>(joint_limit_, 1u + std::max(std::max(j.x, j.y), std::max(j.z, j.w)));
@@ -317,6 +322,27 @@ void Renderer::upload(const Mesh& mesh) {
   check_gl("uploading the mesh");
 }
 
+void Renderer::compute_bounds() {
+  std::size_t joints = 0;
+  for (const JointIndices& j : mesh_.joints) joints = std::max<std::size_t>(joints, 1u + std::max(std::max(j.x, j.y), std::max(j.z, j.w)));
+  std::vector<vec3> lo(joints, vec3(std::numeric_limits<float>::max())), hi(joints, vec3(-std::numeric_limits<float>::max()));
+  auto each_influence = [&](auto&& visit) {
+    for (std::size_t v = 0; v < mesh_.vertex_count(); ++v)
+      for (int k = 0; k < 4; ++k)
+        if (mesh_.weights[v][k] != 0.0f) visit(static_cast<std::size_t>(mesh_.joints[v][k]), mesh_.positions[v]);
+  };
+  each_influence([&](std::size_t j, const vec3& p) { lo[j] = glm::min(lo[j], p), hi[j] = glm::max(hi[j], p); });
+  joint_spheres_.assign(joints, vec4(0.0f, 0.0f, 0.0f, -1.0f));
+  for (std::size_t j = 0; j < joints; ++j)
+    if (lo[j].x <= hi[j].x) joint_spheres_[j] = vec4((lo[j] + hi[j]) * 0.5f, 0.0f);
+  each_influence([&](std::size_t j, const vec3& p) {
+    joint_spheres_[j].w = std::max(joint_spheres_[j].w, glm::length(p - vec3(joint_spheres_[j])));
+  });
+  morph_reach_.assign(mesh_.morphs.size(), 0.0f);
+  for (std::size_t m = 0; m < mesh_.morphs.size(); ++m)
+    for (const vec3& d : mesh_.morphs[m].position_deltas) morph_reach_[m] = std::max(morph_reach_[m], glm::length(d));
+}
+
 void Renderer::resize(int width, int height) {
   if (width == width_ && height == height_) return;
   GLint max_size = 0;
@@ -352,6 +378,8 @@ void Renderer::resize(int width, int height) {
   if (msaa_status != GL_FRAMEBUFFER_COMPLETE || resolve_status != GL_FRAMEBUFFER_COMPLETE)
     throw Error("renderer: the " + std::to_string(width) + "x" + std::to_string(height) + " render target is incomplete");
   width_ = width, height_ = height;
+  resolved_background_ = vec3(-1.0f);  // the new resolve texture holds nothing yet
+  resolved_rect_ = {};
 }
 
 void Renderer::render(std::span<const View> views, std::span<const mat4> skinning, std::span<const float> morph_weights,
@@ -409,17 +437,27 @@ void Renderer::render(std::span<const View> views, std::span<const mat4> skinnin
   }
   glUniform4fv(g.u_surface, kMaterialCount, &surfaces[0].x);
 
+  // The MSAA target is cleared whole (llvmpipe's fast path; scissored clears draw quads), but only
+  // the part of the image the posed mesh can cover — plus what the previous frame covered, to wipe
+  // it — is resolved: the resolve blit costs more than drawing the figure on llvmpipe.
+  const PixelRect covered = covered_rect(views, skinning, morph_weights);
+  PixelRect resolve = covered;
+  if (look_.background != resolved_background_) resolve = {0, 0, width_, height_};
+  else if (!resolved_rect_.empty()) resolve = resolve.empty() ? resolved_rect_ : resolve.unite(resolved_rect_);
+  resolved_background_ = look_.background;
+  resolved_rect_ = covered;
+
   glBindFramebuffer(GL_FRAMEBUFFER, g.msaa_fbo);
-  glViewport(0, 0, width_, height_);
   glDisable(GL_SCISSOR_TEST);
   glClearColor(look_.background.x, look_.background.y, look_.background.z, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_SCISSOR_TEST);
   for (const View& view : views) {
     const Viewport& vp = view.viewport;
-    const GLint y = height_ - vp.y - vp.height;
-    glViewport(vp.x, y, vp.width, vp.height);
-    glScissor(vp.x, y, vp.width, vp.height);
+    const PixelRect pane = PixelRect::of(vp, height_).intersect(covered);
+    if (pane.empty()) continue;
+    glViewport(vp.x, height_ - vp.y - vp.height, vp.width, vp.height);
+    glScissor(pane.x0, pane.y0, pane.width(), pane.height());
     const mat4 view_projection = view.camera.projection * view.camera.view;
     glUniformMatrix4fv(g.u_view_projection, 1, GL_FALSE, &view_projection[0][0]);
     glUniform3fv(g.u_eye, 1, &view.camera.eye.x);
@@ -429,12 +467,84 @@ void Renderer::render(std::span<const View> views, std::span<const mat4> skinnin
     glDrawElements(GL_TRIANGLES, g.index_count, GL_UNSIGNED_INT, nullptr);
   }
   glDisable(GL_SCISSOR_TEST);
+  if (!resolve.empty()) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, g.msaa_fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, g.resolve_fbo);
+    glBlitFramebuffer(resolve.x0, resolve.y0, resolve.x1, resolve.y1, resolve.x0, resolve.y0, resolve.x1, resolve.y1,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(0);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, g.msaa_fbo);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, g.resolve_fbo);
-  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   check_gl("drawing");
+}
+
+PixelRect PixelRect::of(const Viewport& vp, int image_height) {
+  return {vp.x, image_height - vp.y - vp.height, vp.x + vp.width, image_height - vp.y};
+}
+
+PixelRect PixelRect::unite(const PixelRect& o) const {
+  return {std::min(x0, o.x0), std::min(y0, o.y0), std::max(x1, o.x1), std::max(y1, o.y1)};
+}
+
+PixelRect PixelRect::intersect(const PixelRect& o) const {
+  PixelRect r{std::max(x0, o.x0), std::max(y0, o.y0), std::min(x1, o.x1), std::min(y1, o.y1)};
+  if (r.empty()) r = {};
+  return r;
+}
+
+// A bound of the skinned, morphed mesh: every vertex lies in the sphere of each joint influencing
+// it (at bind), a skinned vertex is a convex blend of its rigidly moved copies, so the boxes of the
+// moved spheres (radii scaled by the matrices' largest axis, grown by the largest morph offsets)
+// contain it. Projected per view into a pixel rectangle (the whole pane when anything is behind
+// the eye), with a 2-pixel margin for MSAA edges.
+PixelRect Renderer::covered_rect(std::span<const View> views, std::span<const mat4> skinning,
+                                 std::span<const float> morph_weights) const {
+  float morph_reach = 0.0f;
+  for (std::size_t m = 0; m < morph_weights.size(); ++m) morph_reach += std::abs(morph_weights[m]) * morph_reach_[m];
+  vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (std::size_t j = 0; j < joint_spheres_.size(); ++j) {
+    const vec4 sphere = joint_spheres_[j];
+    if (sphere.w < 0.0f) continue;
+    const mat4& m = skinning[j];
+    const float scale = std::max({glm::length(vec3(m[0])), glm::length(vec3(m[1])), glm::length(vec3(m[2]))});
+    const vec3 centre = vec3(m * vec4(vec3(sphere), 1.0f));
+    const float radius = (sphere.w + morph_reach) * scale;
+    lo = glm::min(lo, centre - radius);
+    hi = glm::max(hi, centre + radius);
+  }
+  PixelRect all{};
+  for (const View& view : views) {
+    const PixelRect pane = PixelRect::of(view.viewport, height_).intersect({0, 0, width_, height_});
+    const mat4 view_projection = view.camera.projection * view.camera.view;
+    float x0 = std::numeric_limits<float>::max(), y0 = x0, x1 = -x0, y1 = -x0;
+    bool behind = !(lo.x <= hi.x) || !is_finite(lo) || !is_finite(hi);
+    for (int corner = 0; corner < 8 && !behind; ++corner) {
+      const vec4 clip = view_projection * vec4((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z, 1.0f);
+      if (clip.w <= 1e-6f) {
+        behind = true;
+        break;
+      }
+      const float nx = clip.x / clip.w, ny = clip.y / clip.w;
+      x0 = std::min(x0, nx), x1 = std::max(x1, nx), y0 = std::min(y0, ny), y1 = std::max(y1, ny);
+    }
+    PixelRect r = pane;
+    if (!behind) {
+      const auto px = [&](float ndc, int origin, float size) {
+        return static_cast<float>(origin) + (std::clamp(ndc, -2.0f, 2.0f) * 0.5f + 0.5f) * size;
+      };
+      const Viewport& vp = view.viewport;
+      const PixelRect full = PixelRect::of(vp, height_);
+      r = PixelRect{static_cast<int>(std::floor(px(x0, full.x0, static_cast<float>(vp.width)))) - 2,
+                    static_cast<int>(std::floor(px(y0, full.y0, static_cast<float>(vp.height)))) - 2,
+                    static_cast<int>(std::ceil(px(x1, full.x0, static_cast<float>(vp.width)))) + 2,
+                    static_cast<int>(std::ceil(px(y1, full.y0, static_cast<float>(vp.height)))) + 2}
+              .intersect(pane);
+    }
+    if (r.empty()) continue;
+    all = all.empty() ? r : all.unite(r);
+  }
+  return all;
 }
 
 void Renderer::read_pixels(Image& out) { read_framebuffer(gl_->resolve_fbo, width_, height_, out); }

@@ -24,6 +24,17 @@ namespace gestura {
 
 enum class SkinningPath : std::uint8_t { Gpu, Cpu };
 
+// A pixel rectangle in GL's convention (origin bottom-left), half-open [x0, x1) × [y0, y1).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int width() const { return x1 - x0; }
+  int height() const { return y1 - y0; }
+  bool empty() const { return x1 <= x0 || y1 <= y0; }
+  static PixelRect of(const Viewport& viewport, int image_height);
+  PixelRect intersect(const PixelRect& other) const;  // empty rect when they do not overlap
+  PixelRect unite(const PixelRect& other) const;      // bounding rectangle of both
+};
+
 struct View {
   Camera camera;
   Viewport viewport;  // pixels in the render target, origin top-left
@@ -64,13 +75,20 @@ class Renderer {
  private:
   struct Gl;
   void read_framebuffer(unsigned framebuffer, int width, int height, Image& out);
+  void compute_bounds();
+  PixelRect covered_rect(std::span<const View> views, std::span<const mat4> skinning,
+                         std::span<const float> morph_weights) const;
   std::unique_ptr<Gl> gl_;
   Look look_;
   Mesh mesh_;
   int samples_;
   int width_ = 0, height_ = 0;
   std::size_t joint_limit_ = 0;
-  std::size_t max_gpu_joints_ = 0;  // 1 + the largest joint index any vertex uses
+  std::size_t max_gpu_joints_ = 0;
+  std::vector<vec4> joint_spheres_;  // per joint: bind-pose sphere (centre, radius) of its vertices; radius < 0 = none
+  std::vector<float> morph_reach_;   // per morph: its largest position offset
+  vec3 resolved_background_{-1.0f};  // the colour the resolved image's untouched area holds
+  PixelRect resolved_rect_;          // where the last frame drew in the resolved image  // 1 + the largest joint index any vertex uses
   std::vector<vec3> scratch_positions_, scratch_normals_, skinned_positions_, skinned_normals_;
 };
 
