@@ -26,7 +26,10 @@ HandState sample_hand(const HandTimeline& timeline, float t) {
   const float s = seg.linear_blend ? u : profile_progress(VelocityProfile::MinimumJerk, u);
   HandState out;
   out.active = seg.to.active || seg.from.active;
-  out.position = glm::mix(seg.from.position, seg.to.position, s);
+  // `to.position` includes where the paths end; the blend carries the rest of the change.
+  vec3 path_end(0.0f);
+  for (const Movement& m : seg.paths) path_end += sample(m, m.duration).position;
+  out.position = glm::mix(seg.from.position, seg.to.position - path_end, s);
   out.orientation = glm::slerp(seg.from.orientation, seg.to.orientation, s);
   out.shape = mix(seg.from.shape, seg.to.shape, s);
   for (const Movement& m : seg.paths) out.position += sample(m, u * m.duration).position;

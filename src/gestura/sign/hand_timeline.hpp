@@ -25,7 +25,8 @@ enum class Oscillation : std::uint8_t { None, Nod, Swing, Twist, FingerPlay };
 struct HandSegment {
   float start = 0.0f, end = 0.0f;  // seconds
   HandState from, to;
-  std::vector<Movement> paths;     // displacements summed on top of the from→to blend (fused motions)
+  std::vector<Movement> paths;     // displacements summed on top of the from→to blend (fused motions);
+                                   // `to.position` already includes where they end
   Oscillation oscillation = Oscillation::None;
   float oscillation_cycles = 0.0f;
   FingerSet oscillating_fingers = 0;

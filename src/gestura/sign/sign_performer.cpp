@@ -71,22 +71,30 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
       settings.position_tolerance = 5e-4f;
       settings.orientation_tolerance = deg(1.0f);
       settings.preferred_angles = h.preferred_angles;
+      // Hand orientation carries meaning; a centimetre of position matters less: weight a radian
+      // of orientation like a quarter metre of position.
+      settings.orientation_scale = 0.25f;
       const mat4 base = parent_model_matrix(s, pose, h.arm.joints.front());
       IkResult r = solve_combined(s, h.arm, base, target, settings, workspace[side], pose, f == 0 ? 8 : 2);
 
-      // Keep the hand out of the body: push the whole hand along the body's outward normal.
-      local_to_model(s, pose, model);
-      hand_surface_points(rig, h.hand, model, points);
-      float deepest = 0.0f;
-      vec3 outward(0, 0, 1);
-      for (const vec3& p : points) {
-        vec3 n;
-        const float d = body_signed_distance(rig, model, p, &n) - options.body_margin;
-        if (d < deepest) deepest = d, outward = n;
-      }
-      if (deepest < -1e-4f) {
+      // Keep the hand out of the body: push the whole hand along the body's outward normal at its
+      // deepest point, a few times (leaving one part of the body can enter another).
+      for (int pass = 0; pass < 3; ++pass) {
+        local_to_model(s, pose, model);
+        hand_surface_points(rig, h.hand, model, points);
+        float deepest = 0.0f;
+        vec3 outward(0, 0, 1);
+        for (const vec3& p : points) {
+          vec3 n;
+          const float d = body_signed_distance(rig, model, p, &n) - options.body_margin;
+          if (d < deepest) deepest = d, outward = n;
+        }
+        if (deepest >= -1e-4f) break;
         target.position += outward * (-deepest);
-        r = solve_combined(s, h.arm, base, target, settings, workspace[side], pose, 2);
+        // Getting out of the body comes before the exact hand orientation.
+        IkSettings escape = settings;
+        escape.orientation_scale = 0.08f;
+        r = solve_combined(s, h.arm, base, target, escape, workspace[side], pose, 4);
       }
       st.max_position_error = std::max(st.max_position_error, r.position_error);
       st.max_orientation_error = std::max(st.max_orientation_error, r.orientation_error);

@@ -22,6 +22,7 @@ constexpr float kCloseGap = 0.025f;
 constexpr float kNearGap = 0.07f;
 constexpr float kFarGap = 0.25f;
 constexpr float kBesideOffset = 0.07f;  // hamlrbeside: beside the site, on the hand's side
+constexpr float kBodyClearance = 0.005f;  // planned hand surfaces stay this far off the body
 
 // Durations of actions without a path (seconds, normal speed).
 constexpr float kReplacementTime = 0.35f;
@@ -93,7 +94,7 @@ class Planner {
   SignPlan run(const sign::HamSign& sign) {
     for (std::size_t i = 0; i < sign.segments.size(); ++i) perform_segment(sign.segments[i], i == 0);
     // Final hold, then back to rest.
-    hold_both(options_.final_hold);
+    hold_both(scaled(options_.final_hold));
     plan_.sign_end = now();
     if (options_.to_rest)
       for (int h = 0; h < 2; ++h) {
@@ -114,7 +115,26 @@ class Planner {
   // ---- timeline primitives ------------------------------------------------------------------
 
   // `seg` comes with its duration in [start, end] (start usually 0); it is placed at the hand's clock.
+  // Moves a planned state out of the body: notation may ask for a movement towards the body from a
+  // place already close to it; a signer stops at the surface.
+  void keep_out(int h, HandState& s) {
+    if (!s.active) return;
+    const auto pts = hand_points(h, s);
+    for (int pass = 0; pass < 3; ++pass) {
+      float deepest = 0.0f;
+      vec3 outward(0, 0, 1);
+      for (const vec3& p : pts) {
+        vec3 n;
+        const float d = body_signed_distance(rig_, rig_.bind_model, s.position + p, &n) - kBodyClearance;
+        if (d < deepest) deepest = d, outward = n;
+      }
+      if (deepest >= 0.0f) return;
+      s.position += outward * (-deepest);
+    }
+  }
+
   void add_segment(int h, HandSegment seg) {
+    keep_out(h, seg.to);
     const float duration = std::max(seg.end - seg.start, 1e-3f);
     seg.start = clock_[h];
     seg.end = clock_[h] + duration;
@@ -179,6 +199,7 @@ class Planner {
   std::array<vec3, 11> hand_points(int h, const HandState& s) {
     const HandRig& hr = rig_.hand(hand_of(h));
     apply_hand_posture(rig_, hand_of(h), s.shape, scratch_);
+    clamp_to_limits(rig_.skeleton(), scratch_);  // as the performer will
     const HandGeometry g = hand_geometry(rig_, hand_of(h), scratch_);
     const quat wrist = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), s.orientation}, hr.rest_frame.rotation,
                                           hr.rest_wrist_rotation);
@@ -191,12 +212,20 @@ class Planner {
     return pts;
   }
 
-  // Palm-centre position that puts the hand's nearest surface `gap` metres out from the site.
+  // Palm-centre position that puts the part of the hand facing the site `gap` metres out from the
+  // site point: the hand points nearest the body along the site's normal (averaged when several
+  // are about as near, like a flat palm) land on the site.
   vec3 place_at(int h, const HandState& s, const SitePlace& site, float gap) {
     const auto pts = hand_points(h, s);
-    float nearest = 0.0f;
+    float nearest = 1e9f;
     for (const vec3& p : pts) nearest = std::min(nearest, glm::dot(p, site.normal));
-    return site.point + site.normal * (gap - nearest);
+    vec3 contact(0.0f);
+    int count = 0;
+    for (const vec3& p : pts)
+      if (glm::dot(p, site.normal) < nearest + 0.004f) contact += p, ++count;
+    contact /= static_cast<float>(count);
+    contact -= site.normal * (glm::dot(contact, site.normal) - nearest);  // on the nearest plane
+    return site.point + site.normal * gap - contact;
   }
 
   SitePlace body_site(const std::string& name) const {
@@ -373,6 +402,17 @@ class Planner {
         if (h == 1) state_[1] = target[1];
       }
     }
+    // Two hands at one central site stand side by side, each on its own side of the midline.
+    if (both_hands() && target[0].active && target[1].active && p.location.dominant && !p.location.nondominant &&
+        !p.hands_contact && p.location.dominant->side == sign::Side::centre &&
+        sign::site_region(p.location.dominant->site) != sign::SiteRegion::hand &&
+        sign::site_region(p.location.dominant->site) != sign::SiteRegion::finger) {
+      const float half_gap = sign::site_region(p.location.dominant->site) == sign::SiteRegion::trunk ||
+                                     p.location.dominant->site == sign::Site::neutral_space ? 0.11f : 0.07f;
+      target[0].position.x = std::min(target[0].position.x, -half_gap);
+      target[1].position.x = -target[0].position.x;
+      state_[1] = target[1];
+    }
     if (p.hands_contact && target[0].active && target[1].active) {
       // The hands touch: bring the dominant hand's palm to the other hand.
       SitePlace other = other_hand_site(0, sign::Site::palm);
@@ -518,8 +558,12 @@ class Planner {
       }
     }
     seg.end = std::max(duration, 0.05f);
-    // Paths are timed by their own duration; stretch them to the segment's.
-    for (Movement& mv : seg.paths) mv.duration = seg.end;
+    // Paths are timed by their own duration; stretch them to the segment's. The hand ends where
+    // the paths take it.
+    for (Movement& mv : seg.paths) {
+      mv.duration = seg.end;
+      seg.to.position += sample(mv, mv.duration).position;
+    }
     last_hand_action_[h] = leaves.empty() ? nullptr : leaves.front();
     add_segment(h, std::move(seg));
   }

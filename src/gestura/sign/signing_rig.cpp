@@ -127,13 +127,15 @@ void apply_hand_posture(const SigningRig& rig, Hand hand, const HandPosture& pos
     pose.rotations[static_cast<std::size_t>(j[1])] = s.rest_rotations[static_cast<std::size_t>(j[1])] * (to_wrist * r.pip * from_wrist);
     pose.rotations[static_cast<std::size_t>(j[2])] = s.rest_rotations[static_cast<std::size_t>(j[2])] * (to_wrist * r.dip * from_wrist);
   }
-  // Thumb: the avatar's CMC turns about the palm normal (flexion toward the fingers), across the
-  // palm (palmar abduction) and about its own axis (opposition); the right side mirrors the left.
+  // Thumb: on the avatar's CMC (left hand; the right mirrors y and z) +x flexes the thumb across
+  // the palm toward the little finger, −y turns it about its own axis (opposition, the thumb hangs
+  // along the hand at rest) and −z lifts it out of the palm plane toward the palm (palmar
+  // abduction) — measured on the rig, see the avatar skeleton's axis table.
   const float mirror = hand == Hand::Right ? -1.0f : 1.0f;
   const ThumbPose& t = posture.thumb;
   const auto& tj = h.fingers[0];
   pose.rotations[static_cast<std::size_t>(tj[0])] =
-      joint_rotation(s, tj[0], vec3(t.cmc_flexion, mirror * -t.cmc_abduction, mirror * -t.cmc_opposition));
+      joint_rotation(s, tj[0], vec3(t.cmc_flexion, mirror * -t.cmc_opposition, mirror * -t.cmc_abduction));
   pose.rotations[static_cast<std::size_t>(tj[1])] = joint_rotation(s, tj[1], vec3(t.mcp, 0, 0));
   pose.rotations[static_cast<std::size_t>(tj[2])] = joint_rotation(s, tj[2], vec3(t.ip, 0, 0));
 }

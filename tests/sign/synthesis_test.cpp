@@ -1,0 +1,190 @@
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "gestura/anim/sampler.hpp"
+#include "gestura/core/error.hpp"
+#include "gestura/sign/hamnosys_parser.hpp"
+#include "gestura/sign/sigml.hpp"
+#include "gestura/sign/sign_synthesis.hpp"
+
+using namespace gestura;
+
+namespace {
+
+struct Fixture {
+  Avatar avatar = build_avatar();
+  SigningRig rig = make_signing_rig(avatar);
+};
+const Fixture& fx() {
+  static const Fixture f;
+  return f;
+}
+
+std::string shared_data() {
+  const char* env = std::getenv("GESTURA_SHARED_DATA");
+  return env && std::filesystem::exists(env) ? env : GESTURA_SHARED_DATA;
+}
+
+// The avatar's joint model matrices in the middle of the sign's held posture.
+std::vector<mat4> held_pose(const SignSynthesis& r, float at = -1.0f) {
+  const Skeleton& s = fx().avatar.skeleton;
+  Pose pose;
+  const float t = at >= 0 ? at : r.plan.sign_start + 0.05f;
+  sample_clip(r.clip, t, WrapMode::Clamp, fx().rig.rest, pose);
+  std::vector<mat4> model(s.size());
+  local_to_model(s, pose, model);
+  return model;
+}
+
+vec3 joint(const std::vector<mat4>& model, const char* name) {
+  return vec3(model[static_cast<std::size_t>(fx().avatar.skeleton.find(name))][3]);
+}
+
+float angle_between(vec3 a, vec3 b) { return std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0f, 1.0f)); }
+
+SignSynthesis synth(const std::string& names) { return synthesize_sign(sign::parse_hamnosys_names(names), fx().rig); }
+
+}  // namespace
+
+// Extended-finger direction and palm orientation of single-posture signs, measured on the
+// performed skeleton (wrist → middle knuckle; the palm normal from the knuckle line).
+TEST(Synthesis, HandOrientationFollowsTheNotation) {
+  struct Case { const char* finger; const char* palm; vec3 finger_dir; vec3 palm_dir; };
+  // Expected vectors from the notation's definition (signer's frame: u = +Y, o = +Z, l = +X).
+  const Case cases[] = {
+      {"u", "l", {0, 1, 0}, {1, 0, 0}},      // fingers up, palm to the signer's left
+      {"o", "d", {0, 0, 1}, {0, -1, 0}},     // fingers forward, palm down
+      {"l", "d", {1, 0, 0}, {0, -1, 0}},     // fingers to the left (across the body), palm down
+      {"uo", "d", glm::normalize(vec3(0, 1, 1)), glm::normalize(vec3(0, 1, -1) * -1.0f)},
+      {"o", "l", {0, 0, 1}, {1, 0, 0}},
+  };
+  for (const Case& c : cases) {
+    const std::string names = std::string("hamflathand,hamextfinger") + c.finger + ",hampalm" + c.palm + ",hamchest";
+    const SignSynthesis r = synth(names);
+    const auto m = held_pose(r);
+    const HandFrame f = hand_frame_from_joints(joint(m, "r_wrist"), joint(m, "r_index1"), joint(m, "r_middle1"),
+                                               joint(m, "r_pinky1"), Hand::Right);
+    EXPECT_LT(to_degrees(angle_between(f.finger, c.finger_dir)), 15.0f) << names;
+    // The palm normal expected for this finger direction (projection rule of the phonology).
+    const vec3 palm_expected = palm_normal(c.finger_dir, *parse_palm_orientation(c.palm));
+    EXPECT_LT(to_degrees(angle_between(f.palm, palm_expected)), 20.0f) << names;
+    (void)c.palm_dir;
+  }
+}
+
+TEST(Synthesis, TouchingSignsReachTheirSiteWithin3cm) {
+  struct Case { const char* names; const char* site; };
+  const Case cases[] = {
+      {"hamfinger2345,hamthumboutmod,hamextfingeru,hampalml,hamchin,hamtouch", "chin"},
+      {"hamfinger2345,hamthumboutmod,hamextfingeru,hampalml,hamforehead,hamtouch", "forehead"},
+      {"hamflathand,hamextfingerl,hampalml,hamchest,hamtouch", "chest"},  // fingers across, palm toward the signer
+      {"hamfinger2,hamextfingeru,hampalml,hamnose,hamclose", "nose"},
+      {"hamflathand,hamextfingeru,hampalml,hamlrat,hamcheek,hamtouch", "r_cheek"},
+  };
+  for (const Case& c : cases) {
+    const SignSynthesis r = synth(c.names);
+    const auto m = held_pose(r);
+    std::vector<vec3> pts;
+    hand_surface_points(fx().rig, Hand::Right, m, pts);
+    const BodySite* site = find_site(fx().rig.sites, c.site);
+    ASSERT_NE(site, nullptr) << c.site;
+    const vec3 target = site_position(*site, fx().rig.bind_model);
+    float nearest = 1e9f;
+    for (const vec3& p : pts) nearest = std::min(nearest, glm::distance(p, target));
+    EXPECT_LT(nearest, 0.03f) << c.names;
+  }
+}
+
+TEST(Synthesis, HandshapesCurlTheFingersAsNotated) {
+  auto tip_to_palm = [](const std::string& shape) {
+    const SignSynthesis r = synth(shape + ",hamextfingeru,hampalml,hamshoulders");
+    const auto m = held_pose(r);
+    const HandRig& h = fx().rig.hand(Hand::Right);
+    const vec3 palm = vec3(m[static_cast<std::size_t>(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
+    return std::array<float, 2>{glm::distance(joint(m, "r_index_tip"), palm), glm::distance(joint(m, "r_pinky_tip"), palm)};
+  };
+  const auto flat = tip_to_palm("hamflathand");
+  const auto fist = tip_to_palm("hamfist");
+  const auto point = tip_to_palm("hamfinger2");
+  EXPECT_GT(flat[0], 0.10f);  // straight fingers: the tips are a finger's length from the palm
+  EXPECT_LT(fist[0], 0.07f);  // curled into the palm
+  EXPECT_LT(fist[1], 0.06f);
+  EXPECT_GT(point[0], 0.10f);  // index extended
+  EXPECT_LT(point[1], 0.07f);  // the others curled
+}
+
+TEST(Synthesis, ASingleMovementSignLastsHalfASecondToAbout1point2) {
+  for (const char* names : {"hamflathand,hamextfingeru,hampalml,hamchest,hammoveo",
+                            "hamfist,hamextfingero,hampalmd,hamshoulders,hammovel",
+                            "hamfinger2,hamextfingeru,hampalmd,hamchest,hamcircleo"}) {
+    const SignSynthesis r = synth(names);
+    const float sign = r.plan.sign_end - r.plan.sign_start;
+    EXPECT_GE(sign, 0.5f) << names;
+    EXPECT_LE(sign, 1.2f) << names;
+  }
+  // Faster and slower tempo scale the sign.
+  const auto parsed = sign::parse_hamnosys_names("hamflathand,hamextfingeru,hampalml,hamchest,hammoveo");
+  PlanOptions fast;
+  fast.speed = 2.0f;
+  const SignSynthesis quick = synthesize_sign(parsed, fx().rig, fast);
+  const SignSynthesis normal = synthesize_sign(parsed, fx().rig);
+  EXPECT_LT(quick.plan.sign_end - quick.plan.sign_start, 0.6f * (normal.plan.sign_end - normal.plan.sign_start));
+}
+
+TEST(Synthesis, AMovementMovesTheHandTheNotatedWay) {
+  const SignSynthesis r = synth("hamflathand,hamextfingeru,hampalml,hamchest,hammoveo");
+  const auto start = held_pose(r, r.plan.sign_start + 0.05f);
+  const auto end = held_pose(r, r.plan.sign_end - 0.05f);
+  const vec3 d = joint(end, "r_wrist") - joint(start, "r_wrist");
+  EXPECT_GT(d.z, 0.10f);  // out, away from the body
+  EXPECT_LT(std::abs(d.x), 0.05f);
+  EXPECT_LT(std::abs(d.y), 0.05f);
+}
+
+TEST(Synthesis, SymmetricSignsMirrorTheOtherHand) {
+  const SignSynthesis r = synth("hamsymmlr,hamflathand,hamextfingeru,hampalml,hamshoulders,hammover");
+  const auto m = held_pose(r);
+  const vec3 right = joint(m, "r_wrist"), left = joint(m, "l_wrist");
+  EXPECT_NEAR(right.x, -left.x, 0.03f);
+  EXPECT_NEAR(right.y, left.y, 0.03f);
+  EXPECT_LT(right.x, 0.0f);  // the dominant (right) hand on the signer's right
+}
+
+TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
+  const std::string dir = shared_data() + "/sigml-isl";
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared data at " << dir;
+  int signs = 0, deep = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string path = entry.path().string();
+    for (const sign::SigmlSign& s : sign::read_sigml(sign::read_text_file(path), path)) {
+      const SignSynthesis r = synthesize_sign(s.manual, fx().rig);
+      ++signs;
+      const auto problem = synthesis_problem(r, fx().rig, 1e9f);  // NaN and limits only
+      EXPECT_FALSE(problem.has_value()) << path << ": " << *problem;
+      if (r.stats.max_penetration > 0.01f) ++deep;
+    }
+  }
+  EXPECT_EQ(signs, 100);
+  std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body\n", signs, deep);
+  EXPECT_LE(deep, 5);  // ratchet: the crude neck/shoulder capsules flag a few near-contact signs
+}
+
+TEST(Synthesis, BadRequestsGiveClearErrors) {
+  const auto parsed = sign::parse_hamnosys_names("hamflathand,hamextfingeru,hampalml,hamchest");
+  PlanOptions silly;
+  silly.speed = 0.0f;
+  EXPECT_THROW(synthesize_sign(parsed, fx().rig, silly), Error);
+  silly.speed = std::nanf("");
+  EXPECT_THROW(synthesize_sign(parsed, fx().rig, silly), Error);
+  PerformOptions bad_fps;
+  bad_fps.fps = 0.0f;
+  EXPECT_THROW(synthesize_sign(parsed, fx().rig, {}, bad_fps), Error);
+  sign::ParseOptions strict;
+  strict.strict = true;
+  EXPECT_THROW(sign::parse_hamnosys_names("hamflathand,hamparbegin,hamextfingeru", strict), Error);
+  EXPECT_THROW(sign::parse_hamnosys_names("hamchest,hamextfingeru,hamflathand,hamparend"), Error);
+}
