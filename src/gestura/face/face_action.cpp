@@ -67,7 +67,7 @@ void write_face_channels(std::span<const FaceAction> actions, Clip& clip) {
     if (std::find(channels.begin(), channels.end(), a.channel) == channels.end()) channels.push_back(a.channel);
 
   std::vector<FaceAction> mine;
-  std::vector<float> times;
+  std::vector<float> times, sums;
   for (std::string_view name : channels) {
     mine.clear();
     times.clear();
@@ -84,10 +84,19 @@ void write_face_channels(std::span<const FaceAction> actions, Clip& clip) {
     times.erase(std::unique(times.begin(), times.end(), [](float x, float y) { return y - x < 1e-5f; }),
                 times.end());
 
+    // Each action adds itself to the keys inside its own span only: cost is the keys each action
+    // covers, not keys × actions.
+    sums.assign(times.size(), 0.0f);
+    for (const FaceAction& a : mine) {
+      const auto lo = std::lower_bound(times.begin(), times.end(), a.start) - times.begin();
+      const auto hi = std::upper_bound(times.begin(), times.end(), a.end) - times.begin();
+      for (auto k = lo; k < hi; ++k) sums[static_cast<std::size_t>(k)] += action_weight(a, times[static_cast<std::size_t>(k)]);
+    }
+
     FloatTrack track;
     track.interpolation = Interpolation::Linear;
-    for (float t : times) {
-      const float w = channel_weight(mine, name, t);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      const float t = times[k], w = std::clamp(sums[k], 0.0f, 1.0f);
       // Drop keys in the middle of a flat stretch: linear interpolation reproduces them.
       const std::size_t n = track.size();
       if (n >= 2 && track.values[n - 1] == w && track.values[n - 2] == w) {

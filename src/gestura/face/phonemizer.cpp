@@ -3,6 +3,7 @@
 #include <espeak-ng/speak_lib.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <mutex>
 #include <string>
 
@@ -23,6 +24,13 @@ const std::string& engine_status() {
   static const std::string status = [] {
     const char* path = std::getenv("GESTURA_ESPEAK_DATA");
     if (path && !*path) path = nullptr;
+    // eSpeak reads a missing data directory by crashing later, so look before it does.
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (path && !fs::exists(fs::path(path) / "phontab", ec) &&
+        !fs::exists(fs::path(path) / "espeak-ng-data" / "phontab", ec))
+      return std::string("eSpeak NG data not found in '") + path +
+             "' (GESTURA_ESPEAK_DATA must name espeak-ng-data or the directory that contains it)";
     const int rate = espeak_Initialize(AUDIO_OUTPUT_SYNCHRONOUS, 0, path, espeakINITIALIZE_DONT_EXIT);
     if (rate <= 0)
       return std::string("eSpeak NG could not be initialised (data directory ") +

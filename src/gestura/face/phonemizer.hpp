@@ -7,7 +7,7 @@
 // UTF-8 parsing for the same information.
 //
 // The engine is global in eSpeak: it is initialised once, on first use, from its default data path
-// (or $GESTURA_ESPEAK_DATA, the directory that contains espeak-ng-data), and every call is
+// (or $GESTURA_ESPEAK_DATA: espeak-ng-data or the directory that contains it), and every call is
 // serialised by a mutex, so phonemize() is safe to call from any thread.
 #include <string_view>
 #include <vector>
