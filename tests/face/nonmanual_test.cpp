@@ -118,6 +118,7 @@ TEST(FaceNonManual, OverlappingMarkersComposeWithinZeroOne) {
     }
   EXPECT_NEAR(at(clip, kBrowInnerUpL, 1.25f), 1.0f, 1e-5f);
   EXPECT_NEAR(at(clip, kEyeWideL, 3.0f), 1.0f, 1e-5f);  // 0.3 + 0.9 clamped
+  EXPECT_NO_THROW(validate(clip, sk));
   // Head pitch adds: topic −3° and question +8° overlap over [1, 1.5].
   EXPECT_NEAR(head(clip, sk, 1.3f).x, 5.0f * kDeg, 0.3f * kDeg);
 }
@@ -177,5 +178,8 @@ TEST(FaceNonManual, BadPlansNameTheCulprit) {
   }
   plan = plan_of(3);
   plan.spans.push_back({NonManualKind::topic, 2, 2});
+  EXPECT_THROW(plan_nonmanual(plan), Error);
+  plan = plan_of(3);
+  plan.glosses[2].end = 1e9f;  // would mean millions of idle blinks
   EXPECT_THROW(plan_nonmanual(plan), Error);
 }

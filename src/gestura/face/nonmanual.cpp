@@ -12,12 +12,15 @@ namespace {
 
 constexpr float kDegree = 3.14159265358979f / 180.0f;
 constexpr float kMinBlinkGap = 0.5f;  // seconds between two blinks at least
+constexpr float kMaxPlanSeconds = 3600.0f;
 
 void check(const NonManualPlan& plan) {
   for (std::size_t i = 0; i < plan.glosses.size(); ++i) {
     const TimedGloss& g = plan.glosses[i];
     if (!std::isfinite(g.start) || !std::isfinite(g.end) || g.end < g.start)
       throw Error("non-manual plan: gloss " + std::to_string(i) + " has non-finite or reversed times");
+    if (std::abs(g.start) > kMaxPlanSeconds || std::abs(g.end) > kMaxPlanSeconds)
+      throw Error("non-manual plan: gloss " + std::to_string(i) + " lies beyond an hour");
   }
   for (std::size_t i = 0; i < plan.spans.size(); ++i) {
     const NonManualSpan& s = plan.spans[i];

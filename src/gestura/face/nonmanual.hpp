@@ -36,8 +36,8 @@ struct NonManualActions {
   std::vector<HeadAction> head;
 };
 
-// Throws gestura::Error naming the gloss or span index for non-finite or reversed gloss times, and
-// spans that are empty or reach past the glosses.
+// Throws gestura::Error naming the gloss or span index for non-finite, reversed or beyond-an-hour
+// gloss times, and spans that are empty or reach past the glosses.
 NonManualActions plan_nonmanual(const NonManualPlan& plan);
 
 // plan_nonmanual, then write_face_channels and write_head_rotations into the clip.
