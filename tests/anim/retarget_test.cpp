@@ -2,6 +2,8 @@
 // avatar (A-pose, metres): bone directions agree, the sitting pose sits, end effectors follow when
 // asked, and a clip played on its own skeleton comes out unchanged.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -168,6 +170,40 @@ TEST(Retarget, BadMappingIsAnError) {
   Skeleton other;
   other.add_joint("tail", -1, vec3(0.0f));
   EXPECT_THROW(retarget(src.skeleton, src.clip, other), Error);
+}
+
+struct CliRun {
+  int exit_code = -1;
+  std::string output;
+};
+
+CliRun run_cli(const std::string& args) {
+  CliRun run;
+  FILE* pipe = popen((std::string(GESTURA_CLI) + " " + args + " 2>&1").c_str(), "r");
+  if (!pipe) return run;
+  char buffer[4096];
+  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) run.output.append(buffer, n);
+  const int status = pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+TEST(RetargetCli, WritesTheAvatarSkeletonWithThePose) {
+  const std::string out =
+      (std::filesystem::temp_directory_path() / ("gestura_retarget_" + std::to_string(getpid()) + ".bvh")).string();
+  const std::string in = shared_data() + "/makehuman/poses/sit01.bvh";
+  const CliRun run = run_cli("retarget '" + in + "' -o '" + out + "' --scale 0.1 --z-up --end-effectors");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const BvhFile written = load_bvh(out);
+  std::filesystem::remove(out);
+  const Skeleton avatar = build_avatar_skeleton();
+  for (std::size_t j = 0; j < avatar.size(); ++j) EXPECT_GE(written.skeleton.find(avatar.names[j]), 0) << avatar.names[j];
+  const auto p = positions_at(written.skeleton, written.clip, 0.0f);
+  EXPECT_GT(bone(written.skeleton, p, "r_hip", "r_knee").z, 0.6f);
+
+  EXPECT_EQ(run_cli("retarget '" + in + "' -o '" + out + "' --scale nope").exit_code, 1);
+  EXPECT_EQ(run_cli("retarget '" + in + "'").exit_code, 1);
+  EXPECT_EQ(run_cli("retarget /nonexistent.bvh -o '" + out + "'").exit_code, 1);
 }
 
 }  // namespace
