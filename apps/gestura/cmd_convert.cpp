@@ -13,6 +13,8 @@
 #include "command.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
+#include "gestura/io/openpose_json.hpp"
+#include "gestura/io/pose_format.hpp"
 
 namespace {
 
@@ -31,7 +33,17 @@ const std::map<std::string, Reader>& readers() {
 }
 
 const std::map<std::string, Writer>& writers() {
-  static const std::map<std::string, Writer> table{{".bvh", gestura::save_bvh}};
+  static const std::map<std::string, Writer> table{
+      {".bvh", gestura::save_bvh},
+      // Joint positions in model space (metres) for the pose-format toolkit.
+      {".pose", [](const std::string& path, const BvhFile& motion) {
+         gestura::save_pose(path, gestura::pose_from_clip(motion.skeleton, motion.clip, 1.0f / motion.frame_time,
+                                                          gestura::PoseLayout::Skeleton3D));
+       }},
+      // OpenPose keypoints seen by the default front camera, one file per frame (needs --openpose).
+      {".json", [](const std::string& path, const BvhFile& motion) {
+         gestura::save_openpose_json(path, motion.skeleton, motion.clip, 1.0f / motion.frame_time);
+       }}};
   return table;
 }
 
@@ -59,6 +71,7 @@ int run_convert(const std::vector<std::string>& args) {
   std::vector<std::string> paths;
   gestura::BvhReadOptions options;
   float& scale = options.scale;
+  bool openpose = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--scale") {
       const std::string value = gestura::cli::flag_value(args, i);
@@ -72,13 +85,17 @@ int run_convert(const std::vector<std::string>& args) {
         throw Error("--scale needs a positive number, got '" + value + "'");
     } else if (args[i] == "--z-up") {
       options.z_up = true;
+    } else if (args[i] == "--openpose") {
+      openpose = true;
     } else if (args[i].starts_with("--")) {
       throw Error("unknown flag " + args[i]);
     } else {
       paths.push_back(args[i]);
     }
   }
-  if (paths.size() != 2) throw Error("usage: gestura convert IN OUT [--scale S] [--z-up]");
+  if (paths.size() != 2) throw Error("usage: gestura convert IN OUT [--scale S] [--z-up] [--openpose]");
+  if ((extension_of(paths[1]) == ".json") != openpose)
+    throw Error(openpose ? "--openpose writes .json files" : paths[1] + ": JSON output is OpenPose keypoints; say --openpose");
   const Reader& read = pick(readers(), paths[0], "read");
   const Writer& write = pick(writers(), paths[1], "write");
   const BvhFile motion = read(paths[0], options);
@@ -89,8 +106,11 @@ int run_convert(const std::vector<std::string>& args) {
 }
 
 gestura::cli::Registration reg{{"convert", "convert motion files (BVH → BVH; unit scale, Z-up → Y-up)",
-                                "usage: gestura convert IN OUT [--scale S] [--z-up]\n\n"
-                                "Reads IN and writes OUT, formats chosen by extension (now: .bvh).\n"
+                                "usage: gestura convert IN OUT [--scale S] [--z-up] [--openpose]\n\n"
+                                "Reads IN and writes OUT, formats chosen by extension (.bvh; written also\n"
+                                ".pose: joint positions for the pose-format toolkit, and with --openpose\n"
+                                ".json: OpenPose BODY_25 + hand keypoints from a front camera, written as\n"
+                                "OUT_<frame>_keypoints.json per frame).\n"
                                 "--scale S  multiplies all lengths (offsets, positions), e.g. 0.1 to turn\n"
                                 "           the decimetres of MakeHuman BVH files into metres.\n"
                                 "--z-up     IN is Z-up facing -Y (MakeHuman, Blender): write it +Y up,\n"

@@ -168,6 +168,10 @@ const Index& index() {
       }
     }
     for (const auto& [alias, hanim] : kAliases) ix.exact.emplace(alias, hanim);
+    // H-Anim sites (fingertips, toe tips, skull top) are names of their own.
+    ix.exact.emplace("skull_tip", "skull_tip");
+    for (const auto& [joint, site] : kSites)
+      for (const char* side : {"l_", "r_"}) ix.exact.emplace(side + std::string(site), side + std::string(site));
     return ix;
   }();
   return built;
