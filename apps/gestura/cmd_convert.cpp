@@ -13,6 +13,7 @@
 #include "command.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
+#include "gestura/io/gltf_animation.hpp"
 #include "gestura/io/openpose_json.hpp"
 #include "gestura/io/pose_format.hpp"
 
@@ -24,17 +25,28 @@ using gestura::Error;
 using Reader = std::function<BvhFile(const std::string& path, const gestura::BvhReadOptions& options)>;
 using Writer = std::function<void(const std::string& path, const BvhFile& motion)>;
 
+BvhFile read_gltf(const std::string& path, const gestura::BvhReadOptions& options) {
+  if (options.scale != 1.0f || options.z_up) throw Error(path + ": --scale and --z-up apply to BVH input only");
+  const gestura::GltfAnimation gltf = gestura::load_gltf_animation(path);
+  return gestura::make_bvh(gltf.skeleton, gltf.clip, 1.0f / 30.0f);
+}
+
 const std::map<std::string, Reader>& readers() {
   static const std::map<std::string, Reader> table{
       {".bvh", [](const std::string& path, const gestura::BvhReadOptions& options) {
          return gestura::load_bvh(path, options);
-       }}};
+       }},
+      // glTF animation: nodes become joints; BVH output samples it at 30 frames per second.
+      {".glb", read_gltf},
+      {".gltf", read_gltf}};
   return table;
 }
 
 const std::map<std::string, Writer>& writers() {
   static const std::map<std::string, Writer> table{
       {".bvh", gestura::save_bvh},
+      {".glb", [](const std::string& path, const BvhFile& motion) { gestura::save_gltf(path, motion.skeleton, motion.clip); }},
+      {".gltf", [](const std::string& path, const BvhFile& motion) { gestura::save_gltf(path, motion.skeleton, motion.clip); }},
       // Joint positions in model space (metres) for the pose-format toolkit.
       {".pose", [](const std::string& path, const BvhFile& motion) {
          gestura::save_pose(path, gestura::pose_from_clip(motion.skeleton, motion.clip, 1.0f / motion.frame_time,
@@ -107,7 +119,7 @@ int run_convert(const std::vector<std::string>& args) {
 
 gestura::cli::Registration reg{{"convert", "convert motion files (BVH → BVH; unit scale, Z-up → Y-up)",
                                 "usage: gestura convert IN OUT [--scale S] [--z-up] [--openpose]\n\n"
-                                "Reads IN and writes OUT, formats chosen by extension (.bvh; written also\n"
+                                "Reads IN and writes OUT, formats chosen by extension (.bvh, .glb, .gltf; written also\n"
                                 ".pose: joint positions for the pose-format toolkit, and with --openpose\n"
                                 ".json: OpenPose BODY_25 + hand keypoints from a front camera, written as\n"
                                 "OUT_<frame>_keypoints.json per frame).\n"
