@@ -26,6 +26,7 @@
 
 #include "gestura/anim/clip.hpp"
 #include "gestura/body/mesh.hpp"
+#include "gestura/io/gltf_reader.hpp"
 #include "gestura/skeleton/skeleton.hpp"
 
 namespace gestura {
@@ -59,13 +60,5 @@ struct GltfAnimation {
 // read). `source` names it in errors.
 GltfAnimation read_gltf_animation(const std::string& bytes, const std::string& source);
 GltfAnimation load_gltf_animation(const std::string& path);
-
-// The pieces of a glTF container shared with other glTF-based formats (VRM): the parsed JSON
-// text and the binary chunk (empty for .gltf). Throws gestura::Error for a malformed container.
-struct GltfContainer {
-  std::string json;
-  std::string bin;
-};
-GltfContainer unpack_gltf(const std::string& bytes, const std::string& source);
 
 }  // namespace gestura
