@@ -2,6 +2,11 @@
 // VRoid-style node names), read back into H-Anim joints, a skinned mesh, morphs and face channels;
 // malformed VRMs give errors naming the place.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -167,6 +172,28 @@ TEST(Vrm, MalformedVrmIsAnErrorNamingThePlace) {
     } catch (const Error&) {
     }
   }
+}
+
+TEST(Vrm, TestFileIsValidGltf) {
+  // The VRM written for these tests is itself checked by the Khronos validator (VRMC_vrm is an
+  // extension it does not know: reported as info/warning, not as an error).
+  if (!std::filesystem::exists(std::string(GESTURA_SOURCE_DIR) + "/tools/node_modules/gltf-validator"))
+    GTEST_SKIP() << "tools/node_modules/gltf-validator missing (cd tools && npm install)";
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("gestura_vrm_" + std::to_string(getpid()) + ".vrm")).string();
+  {
+    const std::string bytes = build_vrm().bytes();
+    std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  }
+  FILE* pipe = popen(("node '" + std::string(GESTURA_SOURCE_DIR) + "/tools/validate-gltf.mjs' '" + path + "' 2>&1").c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buffer[4096];
+  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
+  const int status = pclose(pipe);
+  std::filesystem::remove(path);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << output;
+  EXPECT_NE(output.find("\"numErrors\": 0"), std::string::npos) << output;
 }
 
 }  // namespace
