@@ -197,6 +197,7 @@ TEST(GltfAnimation, KhronosValidatorFindsNoErrors) {
     std::filesystem::remove(path);
     EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.output;
     EXPECT_NE(r.output.find("\"numErrors\": 0"), std::string::npos) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find("\"numWarnings\": 0"), std::string::npos) << name << "\n" << r.output;
   }
 }
 
