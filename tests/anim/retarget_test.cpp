@@ -14,6 +14,7 @@
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
+#include "gestura/skeleton/joint_names.hpp"
 
 namespace {
 
@@ -130,9 +131,8 @@ TEST(Retarget, EndEffectorsFollowTheSourceScaledToTheBody) {
   EXPECT_GE(checked, 8) << "most end effectors are within reach";
 }
 
-TEST(Retarget, ClipOnItsOwnSkeletonIsUnchanged) {
-  // A moving clip: the MakeHuman sitting pose blended in from rest over one second, root moving.
-  const BvhFile src = load_pose("sit01");
+// A moving clip: a MakeHuman pose blended in from rest over one second, root moving.
+Clip blend_in(const BvhFile& src) {
   Clip clip = src.clip;
   const Pose rest = rest_pose(src.skeleton);
   for (std::size_t j = 0; j < clip.joint_count(); ++j) {
@@ -145,6 +145,12 @@ TEST(Retarget, ClipOnItsOwnSkeletonIsUnchanged) {
   clip.translations[0].times = {0.0f, 1.0f};
   clip.translations[0].values = {rest.translations[0], rest.translations[0] + vec3(0.3f, -0.2f, 0.5f)};
   clip.duration = 1.0f;
+  return clip;
+}
+
+TEST(Retarget, ClipOnItsOwnSkeletonIsUnchanged) {
+  const BvhFile src = load_pose("sit01");
+  const Clip clip = blend_in(src);
   const Clip out = retarget(src.skeleton, clip, src.skeleton, {0.1f, false, {}});
   float worst = 0.0f;
   for (float t : {0.0f, 0.3f, 0.5f, 1.0f}) {
@@ -154,6 +160,33 @@ TEST(Retarget, ClipOnItsOwnSkeletonIsUnchanged) {
   // Keys every 0.1 s sample the source exactly at 0, 0.3, 0.5, 1.0 (nlerp vs slerp between keys aside).
   EXPECT_LT(worst, 1e-3f);
   RecordProperty("self_retarget_worst_m", std::to_string(worst));
+}
+
+TEST(Retarget, EndEffectorPathsFollowOverTime) {
+  // Wrists and ankles along a moving clip: at every output key the avatar's end effector sits
+  // where the source's is relative to the root, scaled by the leg-length ratio.
+  const Skeleton avatar = build_avatar_skeleton();
+  const BvhFile src = load_pose("standing02");
+  const Clip clip = blend_in(src);
+  RetargetOptions options;
+  options.preserve_end_effectors = true;
+  options.frame_time = 0.05f;
+  const Clip out = retarget(src.skeleton, clip, avatar, options);
+  const float k = retarget_scale(src.skeleton, avatar, match_joints(src.skeleton, avatar));
+  float worst = 0.0f;
+  for (int f = 0; f <= 20; ++f) {
+    const float t = 0.05f * float(f);
+    const auto sp = positions_at(src.skeleton, clip, t), tp = positions_at(avatar, out, t);
+    const vec3 src_root = sp[static_cast<std::size_t>(src.skeleton.find("root"))];
+    const vec3 tgt_root = tp[static_cast<std::size_t>(avatar.find("humanoid_root"))];
+    for (const auto& [s, tj] : {std::pair{"wrist.L", "l_wrist"}, std::pair{"wrist.R", "r_wrist"},
+                                std::pair{"foot.L", "l_ankle"}, std::pair{"foot.R", "r_ankle"}}) {
+      const vec3 goal = tgt_root + k * (sp[static_cast<std::size_t>(src.skeleton.find(s))] - src_root);
+      worst = std::max(worst, glm::length(tp[static_cast<std::size_t>(avatar.find(tj))] - goal));
+    }
+  }
+  EXPECT_LT(worst, 0.002f);
+  RecordProperty("end_effector_path_worst_m", std::to_string(worst));
 }
 
 TEST(Retarget, BadMappingIsAnError) {
