@@ -9,6 +9,7 @@
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
+#include "gestura/io/gltf_animation.hpp"
 
 namespace {
 
@@ -43,27 +44,32 @@ int run_retarget(const std::vector<std::string>& args) {
     else throw Error("more than one input file: " + a);
   }
   if (in.empty() || out.empty())
-    throw Error("usage: gestura retarget IN.bvh -o OUT.bvh [--to avatar|FILE.bvh] [--scale S] [--z-up] [--end-effectors]");
+    throw Error("usage: gestura retarget IN.bvh -o OUT.bvh|OUT.glb|OUT.gltf [--to avatar|FILE.bvh] [--scale S] [--z-up] [--end-effectors]");
   const gestura::BvhFile source = gestura::load_bvh(in, options);
   const gestura::Skeleton target =
       to == "avatar" ? gestura::build_avatar_skeleton() : gestura::load_bvh(to, options).skeleton;
   retarget_options.frame_time = source.frame_time;
   const gestura::Clip clip = gestura::retarget(source.skeleton, source.clip, target, retarget_options);
-  const gestura::BvhFile result = gestura::make_bvh(target, clip, source.frame_time);
-  gestura::save_bvh(out, result);
+  if (out.ends_with(".glb") || out.ends_with(".gltf")) {
+    gestura::save_gltf(out, target, clip);
+  } else {
+    if (!out.ends_with(".bvh")) throw Error(out + ": output must be .bvh, .glb or .gltf");
+    gestura::save_bvh(out, gestura::make_bvh(target, clip, source.frame_time));
+  }
   int paired = 0;
   for (const auto& track : clip.rotations) paired += !track.empty();
   std::cout << "wrote " << out << ": " << target.size() << " joints (" << paired << " driven), "
-            << result.frame_count << " frames\n";
+            << std::lround(clip.duration / source.frame_time) + 1 << " frames\n";
   return 0;
 }
 
 gestura::cli::Registration reg{
     {"retarget", "play a BVH motion on another skeleton (the avatar by default)",
-     "usage: gestura retarget IN.bvh -o OUT.bvh [--to avatar|FILE.bvh] [--scale S] [--z-up] [--end-effectors]\n\n"
+     "usage: gestura retarget IN.bvh -o OUT.bvh|OUT.glb|OUT.gltf [--to avatar|FILE.bvh] [--scale S] [--z-up] [--end-effectors]\n\n"
      "Joints are paired by name (H-Anim, VRM, MakeHuman, CMU spellings are recognised); each paired\n"
      "joint copies the source bone's model-space rotation change from its rest pose, so different rest\n"
      "poses (T-pose vs A-pose) line up. Root motion is scaled by the ratio of leg lengths.\n"
+     "OUT is written as BVH, or as a glTF animation when it ends in .glb / .gltf.\n"
      "--to T           avatar (default) or a BVH file whose skeleton receives the motion\n"
      "--scale S        multiplies lengths of IN (and of a --to file), e.g. 0.1 for MakeHuman decimetres\n"
      "--z-up           IN (and a --to file) is Z-up facing -Y (MakeHuman, Blender)\n"

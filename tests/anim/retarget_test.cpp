@@ -14,6 +14,7 @@
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
+#include "gestura/io/gltf_animation.hpp"
 #include "gestura/skeleton/joint_names.hpp"
 
 namespace {
@@ -234,6 +235,16 @@ TEST(RetargetCli, WritesTheAvatarSkeletonWithThePose) {
   const auto p = positions_at(written.skeleton, written.clip, 0.0f);
   EXPECT_GT(bone(written.skeleton, p, "r_hip", "r_knee").z, 0.6f);
 
+  const std::string glb = out + ".glb";
+  const CliRun to_gltf = run_cli("retarget '" + in + "' -o '" + glb + "' --scale 0.1 --z-up");
+  ASSERT_EQ(to_gltf.exit_code, 0) << to_gltf.output;
+  const GltfAnimation gltf = load_gltf_animation(glb);
+  std::filesystem::remove(glb);
+  EXPECT_EQ(gltf.skeleton.names, avatar.names);
+  const auto gp = positions_at(gltf.skeleton, gltf.clip, 0.0f);
+  EXPECT_GT(bone(gltf.skeleton, gp, "r_hip", "r_knee").z, 0.6f);
+
+  EXPECT_EQ(run_cli("retarget '" + in + "' -o '" + out + ".fbx'").exit_code, 1);
   EXPECT_EQ(run_cli("retarget '" + in + "' -o '" + out + "' --scale nope").exit_code, 1);
   EXPECT_EQ(run_cli("retarget '" + in + "'").exit_code, 1);
   EXPECT_EQ(run_cli("retarget /nonexistent.bvh -o '" + out + "'").exit_code, 1);
