@@ -190,6 +190,37 @@ TEST(Retarget, EndEffectorPathsFollowOverTime) {
   RecordProperty("end_effector_path_worst_m", std::to_string(worst));
 }
 
+TEST(Retarget, NonIdentityRestRotationsGiveTheSameMotion) {
+  // The avatar re-expressed with arbitrary joint frames (same rest positions, rest rotations far
+  // from identity) must receive the same model-space motion as the plain avatar.
+  const Skeleton plain = build_avatar_skeleton();
+  Skeleton turned = plain;
+  std::vector<quat> frame(plain.size());
+  for (std::size_t j = 0; j < plain.size(); ++j) {
+    const float a = 0.7f * float(j % 5) + 0.3f;
+    frame[j] = glm::angleAxis(a, glm::normalize(vec3(std::sin(float(j)), 1.0f, std::cos(float(j) * 0.7f))));
+    const int p = plain.parents[j];
+    const quat parent = p < 0 ? quat(1, 0, 0, 0) : frame[static_cast<std::size_t>(p)];
+    turned.rest_rotations[j] = glm::inverse(parent) * frame[j];
+    turned.rest_translations[j] = glm::inverse(parent) * plain.rest_translations[j];
+  }
+  const auto rest_a = rest_joint_positions(plain), rest_b = rest_joint_positions(turned);
+  for (std::size_t j = 0; j < plain.size(); ++j) ASSERT_LT(glm::length(rest_a[j] - rest_b[j]), 1e-5f);
+  float worst = 0.0f;
+  for (const char* name : {"sit01", "run01"}) {
+    const BvhFile src = load_pose(name);
+    for (bool ends : {false, true}) {
+      RetargetOptions options;
+      options.preserve_end_effectors = ends;
+      const auto a = positions_at(plain, retarget(src.skeleton, src.clip, plain, options), 0.0f);
+      const auto b = positions_at(turned, retarget(src.skeleton, src.clip, turned, options), 0.0f);
+      for (std::size_t j = 0; j < a.size(); ++j) worst = std::max(worst, glm::length(a[j] - b[j]));
+    }
+  }
+  EXPECT_LT(worst, 1e-4f);
+  RecordProperty("turned_frames_worst_m", std::to_string(worst));
+}
+
 TEST(Retarget, BadMappingIsAnError) {
   const Skeleton avatar = build_avatar_skeleton();
   const BvhFile src = load_pose("sit01");
