@@ -46,6 +46,7 @@ std::vector<int> paired_ancestors(const Skeleton& target, const std::vector<int>
 
 struct Chain {
   int upper = -1, middle = -1, end = -1;  // target joints, all paired
+  bool leg = false;                       // hip-knee-ankle (else shoulder-elbow-wrist)
 };
 
 std::vector<Chain> limb_chains(const Skeleton& target, const std::vector<int>& map) {
@@ -60,7 +61,7 @@ std::vector<Chain> limb_chains(const Skeleton& target, const std::vector<int>& m
     const std::string p = side;
     static constexpr const char* kLimbs[2][3] = {{"shoulder", "elbow", "wrist"}, {"hip", "knee", "ankle"}};
     for (const auto& limb : kLimbs) {
-      const Chain c{find(p + limb[0]), find(p + limb[1]), find(p + limb[2])};
+      const Chain c{find(p + limb[0]), find(p + limb[1]), find(p + limb[2]), &limb == &kLimbs[1]};
       if (c.upper >= 0 && c.middle >= 0 && c.end >= 0 && is_descendant(target, c.end, c.middle) &&
           is_descendant(target, c.middle, c.upper))
         chains.push_back(c);
@@ -114,8 +115,7 @@ float retarget_scale(const Skeleton& source, const Skeleton& target, const std::
   const std::vector<vec3> src_rest = positions_of(source, rest_pose(source));
   const std::vector<vec3> tgt_rest = positions_of(target, rest_pose(target));
   for (const Chain& c : limb_chains(target, map)) {
-    const std::string n = guess_hanim_names(target)[static_cast<std::size_t>(c.upper)];
-    if (!n.ends_with("hip")) continue;
+    if (!c.leg) continue;
     const auto s = [&](int t) { return map[static_cast<std::size_t>(t)]; };
     const float src = chain_length(src_rest, {s(c.upper), s(c.middle), s(c.end)});
     const float tgt = chain_length(tgt_rest, {c.upper, c.middle, c.end});
