@@ -13,6 +13,9 @@
 #include "command.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
+#include "gestura/io/gltf_animation.hpp"
+#include "gestura/io/openpose_json.hpp"
+#include "gestura/io/pose_format.hpp"
 
 namespace {
 
@@ -22,16 +25,37 @@ using gestura::Error;
 using Reader = std::function<BvhFile(const std::string& path, const gestura::BvhReadOptions& options)>;
 using Writer = std::function<void(const std::string& path, const BvhFile& motion)>;
 
+BvhFile read_gltf(const std::string& path, const gestura::BvhReadOptions& options) {
+  if (options.scale != 1.0f || options.z_up) throw Error(path + ": --scale and --z-up apply to BVH input only");
+  const gestura::GltfAnimation gltf = gestura::load_gltf_animation(path);
+  return gestura::make_bvh(gltf.skeleton, gltf.clip, 1.0f / 30.0f);
+}
+
 const std::map<std::string, Reader>& readers() {
   static const std::map<std::string, Reader> table{
       {".bvh", [](const std::string& path, const gestura::BvhReadOptions& options) {
          return gestura::load_bvh(path, options);
-       }}};
+       }},
+      // glTF animation: nodes become joints; BVH output samples it at 30 frames per second.
+      {".glb", read_gltf},
+      {".gltf", read_gltf}};
   return table;
 }
 
 const std::map<std::string, Writer>& writers() {
-  static const std::map<std::string, Writer> table{{".bvh", gestura::save_bvh}};
+  static const std::map<std::string, Writer> table{
+      {".bvh", gestura::save_bvh},
+      {".glb", [](const std::string& path, const BvhFile& motion) { gestura::save_gltf(path, motion.skeleton, motion.clip); }},
+      {".gltf", [](const std::string& path, const BvhFile& motion) { gestura::save_gltf(path, motion.skeleton, motion.clip); }},
+      // Joint positions in model space (metres) for the pose-format toolkit.
+      {".pose", [](const std::string& path, const BvhFile& motion) {
+         gestura::save_pose(path, gestura::pose_from_clip(motion.skeleton, motion.clip, 1.0f / motion.frame_time,
+                                                          gestura::PoseLayout::Skeleton3D));
+       }},
+      // OpenPose keypoints seen by the default front camera, one file per frame (needs --openpose).
+      {".json", [](const std::string& path, const BvhFile& motion) {
+         gestura::save_openpose_json(path, motion.skeleton, motion.clip, 1.0f / motion.frame_time);
+       }}};
   return table;
 }
 
@@ -59,6 +83,7 @@ int run_convert(const std::vector<std::string>& args) {
   std::vector<std::string> paths;
   gestura::BvhReadOptions options;
   float& scale = options.scale;
+  bool openpose = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--scale") {
       const std::string value = gestura::cli::flag_value(args, i);
@@ -72,13 +97,17 @@ int run_convert(const std::vector<std::string>& args) {
         throw Error("--scale needs a positive number, got '" + value + "'");
     } else if (args[i] == "--z-up") {
       options.z_up = true;
+    } else if (args[i] == "--openpose") {
+      openpose = true;
     } else if (args[i].starts_with("--")) {
       throw Error("unknown flag " + args[i]);
     } else {
       paths.push_back(args[i]);
     }
   }
-  if (paths.size() != 2) throw Error("usage: gestura convert IN OUT [--scale S] [--z-up]");
+  if (paths.size() != 2) throw Error("usage: gestura convert IN OUT [--scale S] [--z-up] [--openpose]");
+  if ((extension_of(paths[1]) == ".json") != openpose)
+    throw Error(openpose ? "--openpose writes .json files" : paths[1] + ": JSON output is OpenPose keypoints; say --openpose");
   const Reader& read = pick(readers(), paths[0], "read");
   const Writer& write = pick(writers(), paths[1], "write");
   const BvhFile motion = read(paths[0], options);
@@ -89,8 +118,11 @@ int run_convert(const std::vector<std::string>& args) {
 }
 
 gestura::cli::Registration reg{{"convert", "convert motion files (BVH → BVH; unit scale, Z-up → Y-up)",
-                                "usage: gestura convert IN OUT [--scale S] [--z-up]\n\n"
-                                "Reads IN and writes OUT, formats chosen by extension (now: .bvh).\n"
+                                "usage: gestura convert IN OUT [--scale S] [--z-up] [--openpose]\n\n"
+                                "Reads IN and writes OUT, formats chosen by extension (.bvh, .glb, .gltf; written also\n"
+                                ".pose: joint positions for the pose-format toolkit, and with --openpose\n"
+                                ".json: OpenPose BODY_25 + hand keypoints from a front camera, written as\n"
+                                "OUT_<frame>_keypoints.json per frame).\n"
                                 "--scale S  multiplies all lengths (offsets, positions), e.g. 0.1 to turn\n"
                                 "           the decimetres of MakeHuman BVH files into metres.\n"
                                 "--z-up     IN is Z-up facing -Y (MakeHuman, Blender): write it +Y up,\n"
