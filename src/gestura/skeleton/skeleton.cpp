@@ -156,10 +156,14 @@ int clamp_to_limits(const Skeleton& skeleton, Pose& pose) {
     const int ji = static_cast<int>(j);
     const vec3 a = joint_angles(skeleton, ji, pose.rotations[j]);
     const vec3 c = clamp_angles(d, a);
-    if (c != a) {
-      pose.rotations[j] = joint_rotation(skeleton, ji, c);
-      ++changed;
-    }
+    if (c == a) continue;
+    // Joints whose range spans more than 180° (the shoulder) have rotations with two Euler readings;
+    // the clamped rotation can read back through the other one. Clamp again until it reads inside.
+    quat q = joint_rotation(skeleton, ji, c);
+    for (int pass = 0; pass < 3 && !within_limits(skeleton, ji, q, 1e-4f); ++pass)
+      q = joint_rotation(skeleton, ji, clamp_angles(d, joint_angles(skeleton, ji, q)));
+    pose.rotations[j] = q;
+    ++changed;
   }
   return changed;
 }
