@@ -265,3 +265,44 @@ TEST(JointNamesMakeHuman, TableFirstThenSideSuffixBecomesPrefix) {
   EXPECT_EQ(joint_name_from_makehuman("upperarm02.R"), "r_upperarm02");
   EXPECT_EQ(joint_name_from_makehuman("tongue00"), "tongue00");
 }
+
+TEST_F(MakeHuman, BendingTheElbowMovesTheForearmRigidlyAndNothingElse) {
+  const MakeHumanRig& rig = body_->rig;
+  const Mesh& m = body_->mesh.mesh;
+  const Skeleton& s = rig.skeleton;
+  const int elbow = s.find("l_elbow");
+  ASSERT_GE(elbow, 0);
+  // Joints below the elbow (parents come first, so one forward pass marks the subtree).
+  std::vector<bool> below(s.size(), false);
+  below[static_cast<std::size_t>(elbow)] = true;
+  for (std::size_t j = 0; j < s.size(); ++j)
+    if (s.parents[j] >= 0 && below[static_cast<std::size_t>(s.parents[j])]) below[j] = true;
+  Pose pose = rest_pose(s);
+  const quat bend = glm::angleAxis(deg(90.0f), vec3(0, 1, 0));
+  pose.rotations[static_cast<std::size_t>(elbow)] = bend;
+  std::vector<mat4> model(s.size()), skin(s.size());
+  local_to_model(s, pose, model);
+  skinning_matrices(model, rig.inverse_bind, skin);
+  std::vector<vec3> out(m.vertex_count());
+  skin_positions(skin, m.joints, m.weights, m.positions, out);
+  const vec3 pivot = rig.heads[static_cast<std::size_t>(elbow)];
+  std::size_t moved = 0, still = 0;
+  for (std::size_t v = 0; v < m.vertex_count(); ++v) {
+    bool all_below = true, none_below = true;
+    for (int k = 0; k < 4; ++k) {
+      if (m.weights[v][k] == 0.0f) continue;
+      const bool b = below[m.joints[v][k]];
+      all_below = all_below && b;
+      none_below = none_below && !b;
+    }
+    if (all_below) {
+      ASSERT_NEAR(glm::distance(out[v], pivot + bend * (m.positions[v] - pivot)), 0.0f, 1e-5f) << v;
+      ++moved;
+    } else if (none_below) {
+      ASSERT_NEAR(glm::distance(out[v], m.positions[v]), 0.0f, 1e-5f) << v;
+      ++still;
+    }
+  }
+  EXPECT_GT(moved, 500u);   // forearm and hand
+  EXPECT_GT(still, 10000u);  // the rest of the body
+}

@@ -40,7 +40,7 @@ GESTURA_AVX2 [[gnu::always_inline]] inline __m128 transform(__m256 lo, __m256 hi
   return _mm_add_ps(_mm256_castps256_ps128(r), _mm256_extractf128_ps(r, 1));
 }
 
-// 1/√x to about 1 ulp: the 12-bit estimate refined by one Newton step (much cheaper than sqrt + div).
+// 1/√x to about 1e-7 relative: the 12-bit estimate refined by one Newton step (cheaper than sqrt + div).
 GESTURA_AVX2 [[gnu::always_inline]] inline __m128 inverse_sqrt(__m128 x) {
   const __m128 y = _mm_rsqrt_ps(x);
   return _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), y), _mm_fnmadd_ps(_mm_mul_ps(x, y), y, _mm_set1_ps(3.0f)));

@@ -1,0 +1,59 @@
+#include "gestura/sign/hand_timeline.hpp"
+
+#include <algorithm>
+
+#include "gestura/sign/movement_timing.hpp"
+
+namespace gestura {
+
+namespace {
+
+// Oscillation amplitudes: small, as a signer's wrist and fingers move in these signs.
+constexpr float kNodAmplitude = 0.35f;    // radians, wrist flexion
+constexpr float kSwingAmplitude = 0.30f;  // radians, side to side
+constexpr float kTwistAmplitude = 0.55f;  // radians, forearm rotation
+constexpr float kPlayAmplitude = 0.45f;   // radians, finger flexion
+
+}  // namespace
+
+HandState sample_hand(const HandTimeline& timeline, float t) {
+  const auto& segs = timeline.segments;
+  auto it = std::upper_bound(segs.begin(), segs.end(), t, [](float v, const HandSegment& s) { return v < s.end; });
+  if (it == segs.end()) return segs.back().to;
+  const HandSegment& seg = *it;
+  const float span = seg.end - seg.start;
+  const float u = span > 0 ? std::clamp((t - seg.start) / span, 0.0f, 1.0f) : 1.0f;
+  const float s = seg.linear_blend ? u : profile_progress(VelocityProfile::MinimumJerk, u);
+  HandState out;
+  out.active = seg.to.active || seg.from.active;
+  out.position = glm::mix(seg.from.position, seg.to.position, s);
+  out.orientation = glm::slerp(seg.from.orientation, seg.to.orientation, s);
+  out.shape = mix(seg.from.shape, seg.to.shape, s);
+  for (const Movement& m : seg.paths) out.position += sample(m, u * m.duration).position;
+  if (seg.oscillation != Oscillation::None && seg.oscillation_cycles > 0) {
+    // Envelope so the oscillation starts and ends at rest.
+    const float envelope = std::sin(kPi * u);
+    const float wave = std::sin(2 * kPi * seg.oscillation_cycles * u) * envelope;
+    const vec3 local_axis = seg.oscillation == Oscillation::Nod     ? vec3(1, 0, 0)
+                            : seg.oscillation == Oscillation::Swing ? vec3(0, 0, 1)
+                                                                    : vec3(0, 1, 0);
+    const float amp = seg.oscillation == Oscillation::Nod     ? kNodAmplitude
+                      : seg.oscillation == Oscillation::Swing ? kSwingAmplitude
+                                                              : kTwistAmplitude;
+    if (seg.oscillation == Oscillation::FingerPlay) {
+      for (int f = 0; f < 4; ++f) {
+        if (!(seg.oscillating_fingers & finger_bit(static_cast<Finger>(f + 1)))) continue;
+        // Neighbouring fingers out of phase, as in a wiggle.
+        const float w = std::sin(2 * kPi * seg.oscillation_cycles * u + 1.3f * static_cast<float>(f)) * envelope;
+        FingerFlexion& ff = out.shape.fingers[static_cast<std::size_t>(f)];
+        ff.mcp = std::clamp(ff.mcp + kPlayAmplitude * 0.5f * (1 + w), 0.0f, deg(90));
+        ff.pip = std::clamp(ff.pip + kPlayAmplitude * 0.5f * (1 + w), 0.0f, deg(110));
+      }
+    } else {
+      out.orientation = glm::normalize(out.orientation * glm::angleAxis(amp * wave, local_axis));
+    }
+  }
+  return out;
+}
+
+}  // namespace gestura

@@ -1,0 +1,44 @@
+#pragma once
+// What one hand does over time, in the signer's space: a sequence of segments, each taking the hand
+// from one state to the next with a minimum-jerk profile, optionally along a movement path
+// (displacement added to the straight blend) and with oscillations of the wrist or fingers on top.
+#include <optional>
+#include <vector>
+
+#include "gestura/sign/movement_path.hpp"
+#include "gestura/sign/phonology_direction.hpp"
+#include "gestura/sign/phonology_handshape.hpp"
+
+namespace gestura {
+
+// Where the hand is, how it is turned and what shape it has.
+struct HandState {
+  vec3 position{0.0f};        // the palm centre, model space (metres)
+  quat orientation{1, 0, 0, 0};  // hand frame: local +Y fingers, +Z palm normal (HandFrame::rotation)
+  HandPosture shape;
+  bool active = false;        // false: the hand rests at the side
+};
+
+// Oscillations performed on top of a segment.
+enum class Oscillation : std::uint8_t { None, Nod, Swing, Twist, FingerPlay };
+
+struct HandSegment {
+  float start = 0.0f, end = 0.0f;  // seconds
+  HandState from, to;
+  std::vector<Movement> paths;     // displacements summed on top of the from→to blend (fused motions)
+  Oscillation oscillation = Oscillation::None;
+  float oscillation_cycles = 0.0f;
+  FingerSet oscillating_fingers = 0;
+  bool linear_blend = false;       // blend from→to at constant speed (paths drive the timing instead)
+};
+
+struct HandTimeline {
+  std::vector<HandSegment> segments;  // contiguous, increasing in time
+  float end_time() const { return segments.empty() ? 0.0f : segments.back().end; }
+  const HandState& final_state() const { return segments.back().to; }
+};
+
+// The hand's state at time t (clamped to the timeline). Contract: the timeline is not empty.
+HandState sample_hand(const HandTimeline& timeline, float t);
+
+}  // namespace gestura

@@ -1,0 +1,107 @@
+#include "gestura/sign/sign_performer.hpp"
+
+#include <algorithm>
+
+#include "gestura/core/error.hpp"
+#include "gestura/ik/combined.hpp"
+
+namespace gestura {
+
+void hand_surface_points(const SigningRig& rig, Hand hand, std::span<const mat4> model, std::vector<vec3>& out) {
+  const HandRig& h = rig.hand(hand);
+  const mat4& w = model[static_cast<std::size_t>(h.wrist)];
+  const vec3 centre = vec3(w * vec4(h.palm_centre_local, 1.0f));
+  // The palm normal at bind pose, carried by the wrist.
+  const vec3 rest_palm_in_wrist = glm::inverse(h.rest_wrist_rotation) * (h.rest_frame.rotation * vec3(0, 0, 1));
+  const vec3 palm = glm::normalize(vec3(w * vec4(rest_palm_in_wrist, 0.0f)));
+  out.clear();
+  out.push_back(centre + palm * h.palm_half_thickness);
+  out.push_back(centre - palm * h.palm_half_thickness);
+  for (int f = 0; f < 5; ++f) out.push_back(vec3(model[static_cast<std::size_t>(h.tips[static_cast<std::size_t>(f)])][3]));
+  for (int f = 1; f < 5; ++f) out.push_back(vec3(model[static_cast<std::size_t>(h.fingers[static_cast<std::size_t>(f)][0])][3]));
+  for (int f = 0; f < 5; ++f) out.push_back(vec3(model[static_cast<std::size_t>(h.fingers[static_cast<std::size_t>(f)][1])][3]));
+}
+
+Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOptions& options, PerformanceStats* stats) {
+  if (!(options.fps >= 1.0f && options.fps <= 240.0f)) throw Error("fps must be between 1 and 240");
+  const Skeleton& s = rig.skeleton();
+  const float duration = plan.duration();
+  const int frames = std::max(2, static_cast<int>(std::ceil(duration * options.fps)) + 1);
+
+  // Joints this clip drives: both arms from the clavicle down, and the fingers.
+  std::vector<int> driven;
+  for (const HandRig& h : rig.hands) {
+    driven.insert(driven.end(), h.arm.joints.begin(), h.arm.joints.end());
+    for (const auto& f : h.fingers) driven.insert(driven.end(), f.begin(), f.end());
+  }
+
+  Clip clip;
+  clip.name = "sign";
+  clip.duration = static_cast<float>(frames - 1) / options.fps;
+  clip.resize_joints(s.size());
+  for (int j : driven) {
+    QuatTrack& tr = clip.rotations[static_cast<std::size_t>(j)];
+    tr.interpolation = Interpolation::Linear;
+    tr.times.reserve(static_cast<std::size_t>(frames));
+    tr.values.reserve(static_cast<std::size_t>(frames));
+  }
+
+  Pose pose = rig.neutral;
+  std::vector<mat4> model(s.size());
+  IkWorkspace workspace[2] = {IkWorkspace(rig.hands[0].arm), IkWorkspace(rig.hands[1].arm)};
+  std::vector<vec3> points;
+  PerformanceStats st;
+  st.frames = frames;
+
+  for (int f = 0; f < frames; ++f) {
+    const float t = static_cast<float>(f) / options.fps;
+    for (int side = 0; side < 2; ++side) {
+      const HandRig& h = rig.hands[static_cast<std::size_t>(side)];
+      const HandTimeline& tl = side == 0 ? plan.right : plan.left;
+      const HandState state = tl.segments.empty() ? rest_hand_state(rig, h.hand) : sample_hand(tl, t);
+      apply_hand_posture(rig, h.hand, state.shape, pose);
+      const quat wrist_rotation = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), state.orientation},
+                                                     h.rest_frame.rotation, h.rest_wrist_rotation);
+      IkTarget target;
+      target.position = state.position - wrist_rotation * h.palm_centre_local;
+      target.orientation = wrist_rotation;
+      target.has_orientation = true;
+      IkSettings settings;
+      settings.max_iterations = 60;
+      settings.position_tolerance = 5e-4f;
+      settings.orientation_tolerance = deg(1.0f);
+      settings.preferred_angles = h.preferred_angles;
+      const mat4 base = parent_model_matrix(s, pose, h.arm.joints.front());
+      IkResult r = solve_combined(s, h.arm, base, target, settings, workspace[side], pose, f == 0 ? 8 : 2);
+
+      // Keep the hand out of the body: push the whole hand along the body's outward normal.
+      local_to_model(s, pose, model);
+      hand_surface_points(rig, h.hand, model, points);
+      float deepest = 0.0f;
+      vec3 outward(0, 0, 1);
+      for (const vec3& p : points) {
+        vec3 n;
+        const float d = body_signed_distance(rig, model, p, &n) - options.body_margin;
+        if (d < deepest) deepest = d, outward = n;
+      }
+      if (deepest < -1e-4f) {
+        target.position += outward * (-deepest);
+        r = solve_combined(s, h.arm, base, target, settings, workspace[side], pose, 2);
+      }
+      st.max_position_error = std::max(st.max_position_error, r.position_error);
+      st.max_orientation_error = std::max(st.max_orientation_error, r.orientation_error);
+    }
+    clamp_to_limits(s, pose);
+    local_to_model(s, pose, model);
+    for (const HandRig& h : rig.hands) {
+      hand_surface_points(rig, h.hand, model, points);
+      for (const vec3& p : points) st.max_penetration = std::max(st.max_penetration, -body_signed_distance(rig, model, p));
+    }
+    for (int j : driven) clip.rotations[static_cast<std::size_t>(j)].add(t, pose.rotations[static_cast<std::size_t>(j)]);
+  }
+  for (int j : driven) make_continuous(clip.rotations[static_cast<std::size_t>(j)]);
+  if (stats) *stats = st;
+  return clip;
+}
+
+}  // namespace gestura

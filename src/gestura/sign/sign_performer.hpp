@@ -1,0 +1,30 @@
+#pragma once
+// From a plan to motion: every frame, each hand's planned state (palm position, hand frame, shape)
+// becomes joint rotations — the arm by inverse kinematics from the clavicle to the wrist (position
+// and orientation, joint limits, a pull toward a relaxed posture that gives the elbow its natural
+// swivel), the fingers from the hand posture — with the hand kept out of the body.
+#include "gestura/anim/clip.hpp"
+#include "gestura/sign/sign_planner.hpp"
+
+namespace gestura {
+
+struct PerformOptions {
+  float fps = 30.0f;
+  float body_margin = 0.004f;  // metres the hand is kept off the collision body
+};
+
+struct PerformanceStats {
+  int frames = 0;
+  float max_position_error = 0.0f;     // metres, IK residual of the wrist
+  float max_orientation_error = 0.0f;  // radians
+  float max_penetration = 0.0f;        // metres, hand points inside the collision body after solving
+};
+
+// A clip on the rig's skeleton, keyed every frame on the arms and fingers.
+Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOptions& options = {},
+                  PerformanceStats* stats = nullptr);
+
+// Model-space positions of the hand's surface points (palm faces, fingertips, knuckles) for a pose.
+void hand_surface_points(const SigningRig& rig, Hand hand, std::span<const mat4> model, std::vector<vec3>& out);
+
+}  // namespace gestura

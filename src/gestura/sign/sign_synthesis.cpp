@@ -1,0 +1,48 @@
+#include "gestura/sign/sign_synthesis.hpp"
+
+#include <cmath>
+#include <memory>
+
+#include "gestura/anim/sampler.hpp"
+#include "gestura/sign/sign_check.hpp"
+
+namespace gestura {
+
+SignSynthesis synthesize_sign(const sign::HamSign& sign, const SigningRig& rig, const PlanOptions& plan_options,
+                              const PerformOptions& perform_options) {
+  SignSynthesis out;
+  out.plan = plan_sign(sign, rig, plan_options);
+  out.clip = perform_plan(out.plan, rig, perform_options, &out.stats);
+  return out;
+}
+
+std::optional<std::string> synthesis_problem(const SignSynthesis& result, const SigningRig& rig, float max_penetration) {
+  const Skeleton& s = rig.skeleton();
+  for (std::size_t j = 0; j < result.clip.rotations.size(); ++j) {
+    const QuatTrack& tr = result.clip.rotations[j];
+    for (std::size_t k = 0; k < tr.values.size(); ++k) {
+      if (!is_finite(tr.values[k])) return "NaN in joint '" + s.names[j] + "' at " + std::to_string(tr.times[k]) + " s";
+      if (!within_limits(s, static_cast<int>(j), tr.values[k]))
+        return "joint '" + s.names[j] + "' outside its limits at " + std::to_string(tr.times[k]) + " s";
+    }
+  }
+  if (result.stats.max_penetration > max_penetration)
+    return "hand inside the body by " + std::to_string(result.stats.max_penetration * 100.0f) + " cm";
+  return std::nullopt;
+}
+
+void connect_synthesis_to_check() {
+  sign::set_synthesis_hook([](const sign::HamSign& sign) -> std::optional<std::string> {
+    // One avatar and rig for the whole check run.
+    static const Avatar avatar = build_avatar();
+    static const SigningRig rig = make_signing_rig(avatar);
+    try {
+      const SignSynthesis result = synthesize_sign(sign, rig);
+      return synthesis_problem(result, rig);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+  });
+}
+
+}  // namespace gestura

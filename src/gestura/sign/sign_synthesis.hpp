@@ -1,0 +1,24 @@
+#pragma once
+// Sign synthesis in one call: notation → plan → performed clip on the avatar.
+#include "gestura/sign/sign_performer.hpp"
+
+namespace gestura {
+
+struct SignSynthesis {
+  Clip clip;
+  SignPlan plan;
+  PerformanceStats stats;
+};
+
+SignSynthesis synthesize_sign(const sign::HamSign& sign, const SigningRig& rig, const PlanOptions& plan_options = {},
+                              const PerformOptions& perform_options = {});
+
+// Why a synthesized sign is not acceptable (NaN, joint limits broken, hand inside the body deeper
+// than `max_penetration`), or nullopt when it is.
+std::optional<std::string> synthesis_problem(const SignSynthesis& result, const SigningRig& rig,
+                                             float max_penetration = 0.01f);
+
+// Connects `gestura check` (sign_check.hpp) to synthesis on the default avatar.
+void connect_synthesis_to_check();
+
+}  // namespace gestura
