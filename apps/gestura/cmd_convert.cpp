@@ -12,6 +12,7 @@
 
 #include "command.hpp"
 #include "gestura/core/error.hpp"
+#include "gestura/io/bap_bvh.hpp"
 #include "gestura/io/bvh.hpp"
 
 namespace {
@@ -26,12 +27,20 @@ const std::map<std::string, Reader>& readers() {
   static const std::map<std::string, Reader> table{
       {".bvh", [](const std::string& path, const gestura::BvhReadOptions& options) {
          return gestura::load_bvh(path, options);
+       }},
+      // BAP angles are on the default avatar's skeleton (io/bap_bvh.hpp); length options do not apply.
+      {".bap", [](const std::string& path, const gestura::BvhReadOptions&) {
+         return gestura::bap_to_bvh(gestura::load_bap(path));
        }}};
   return table;
 }
 
 const std::map<std::string, Writer>& writers() {
-  static const std::map<std::string, Writer> table{{".bvh", gestura::save_bvh}};
+  static const std::map<std::string, Writer> table{
+      {".bvh", gestura::save_bvh},
+      {".bap", [](const std::string& path, const BvhFile& motion) {
+         gestura::save_bap(path, gestura::bvh_to_bap(motion, "gestura"));
+       }}};
   return table;
 }
 
@@ -90,7 +99,9 @@ int run_convert(const std::vector<std::string>& args) {
 
 gestura::cli::Registration reg{{"convert", "convert motion files (BVH → BVH; unit scale, Z-up → Y-up)",
                                 "usage: gestura convert IN OUT [--scale S] [--z-up]\n\n"
-                                "Reads IN and writes OUT, formats chosen by extension (now: .bvh).\n"
+                                "Reads IN and writes OUT, formats chosen by extension (now: .bvh, .bap).\n"
+                                ".bap       MPEG-4 BAP text, angles on the default avatar skeleton (joints\n"
+                                "           matched by H-Anim name; 1e-5 rad resolution).\n"
                                 "--scale S  multiplies all lengths (offsets, positions), e.g. 0.1 to turn\n"
                                 "           the decimetres of MakeHuman BVH files into metres.\n"
                                 "--z-up     IN is Z-up facing -Y (MakeHuman, Blender): write it +Y up,\n"
