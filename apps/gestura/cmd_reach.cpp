@@ -15,6 +15,7 @@
 #include "gestura/ik/ccd.hpp"
 #include "gestura/ik/combined.hpp"
 #include "gestura/ik/dls.hpp"
+#include "gestura/ik/limb.hpp"
 #include "gestura/ik/reference_arm.hpp"
 #include "gestura/io/bvh.hpp"
 
@@ -76,8 +77,8 @@ int run_reach(const std::vector<std::string>& args) {
     } else throw Error("unknown argument '" + args[i] + "' (see gestura reach --help)");
   }
   if (!has_target) throw Error("--target x,y,z is required");
-  if (solver != "ccd" && solver != "dls" && solver != "combined")
-    throw Error("--solver: expected ccd, dls or combined, got '" + solver + "'");
+  if (solver != "ccd" && solver != "dls" && solver != "combined" && solver != "two-bone")
+    throw Error("--solver: expected ccd, dls, combined or two-bone, got '" + solver + "'");
   if (side != "l" && side != "r") throw Error("--arm: expected l or r, got '" + side + "'");
 
   const Skeleton skeleton = build_avatar_skeleton();
@@ -93,16 +94,32 @@ int run_reach(const std::vector<std::string>& args) {
     return vec3(model[static_cast<std::size_t>(wrist)] * vec4(chain.effector_offset, 1.0f));
   };
 
+  IkResult result;
   const auto t0 = std::chrono::steady_clock::now();
-  const IkResult result = solver == "ccd"   ? solve_ccd(skeleton, chain, base, IkTarget{target}, IkSettings{}, ws, pose)
-                 : solver == "dls" ? solve_dls(skeleton, chain, base, IkTarget{target}, IkSettings{}, ws, pose)
-                                   : solve_combined(skeleton, chain, base, IkTarget{target}, IkSettings{}, ws, pose);
+  if (solver == "two-bone") {
+    // The two-bone solver places the wrist: aim it a hand's length short of the goal along the
+    // ready posture's wrist → effector direction. Right arm: the pole point mirrors in X.
+    const vec3 effector_at_ready = effector();
+    const vec3 hand = effector_at_ready - vec3(model[static_cast<std::size_t>(wrist)][3]);
+    const vec3 shoulder_at = vec3(model[static_cast<std::size_t>(shoulder)][3]);
+    const vec3 pole = shoulder_at + vec3(side == "l" ? 0.4f : -0.4f, -0.5f, -0.6f);  // out, down, behind
+    const int elbow = skeleton.parents[static_cast<std::size_t>(wrist)];
+    const LimbIkResult r = solve_limb(skeleton, pose, shoulder, elbow, wrist, vec3(-1, 0, 0), target - hand, pole);
+    result = IkResult{1, r.position_error, 0.0f, r.position_error < 1e-4f};
+    if (r.clamped) std::printf("two-bone: the analytic solution was clamped to the joint limits\n");
+  } else {
+    result = solver == "ccd"   ? solve_ccd(skeleton, chain, base, IkTarget{target}, IkSettings{}, ws, pose)
+             : solver == "dls" ? solve_dls(skeleton, chain, base, IkTarget{target}, IkSettings{}, ws, pose)
+                               : solve_combined(skeleton, chain, base, IkTarget{target}, IkSettings{}, ws, pose);
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const float residual = glm::length(effector() - target);
   std::printf("avatar %s arm, solver %s, target (%.3f, %.3f, %.3f)\n", side == "l" ? "left" : "right", solver.c_str(),
               target.x, target.y, target.z);
   std::printf("solve: %d iterations, residual %.6f m, %.1f us%s\n", result.iterations, residual, seconds * 1e6,
-              residual < 1e-4f ? "" : " (out of reach or blocked by joint limits: closest reach)");
+              residual < 1e-4f      ? ""
+              : solver == "two-bone" ? " (two-bone aims the wrist with the ready hand offset; the turned forearm moves the hand)"
+                                     : " (out of reach or blocked by joint limits: closest reach)");
   if (!output.empty()) {
     const float frame_time = 1.0f / 30.0f;
     const Clip clip = interpolate_motion(skeleton, ready, pose, frames, frame_time);
@@ -112,12 +129,14 @@ int run_reach(const std::vector<std::string>& args) {
   return 0;
 }
 
-const cli::Registration reg{{"reach", "the avatar reaches for a point with one arm (IK: ccd, dls or combined)",
-                             "usage: gestura reach --target x,y,z [--arm l|r] [--solver ccd|dls|combined]\n"
+const cli::Registration reg{{"reach", "the avatar reaches for a point with one arm (IK: ccd, dls, combined or two-bone)",
+                             "usage: gestura reach --target x,y,z [--arm l|r] [--solver ccd|dls|combined|two-bone]\n"
                              "                     [--frames N] [-o out.bvh]\n"
                              "  The default avatar (metres, +Y up, facing +Z, its left is +X) puts the middle knuckle\n"
                              "  of its left (default) or right hand on the target: one IK solve (default: combined)\n"
-                             "  from the ready posture, within the joints' limits. -o writes N+1 frames at 30 fps\n"
+                             "  from the ready posture, within the joints' limits (two-bone: shoulder\n"
+                             "  and elbow only, the hand kept as in the ready posture, so it lands near, not on, the\n"
+                             "  target). -o writes N+1 frames at 30 fps\n"
                              "  (default N = 30) moving from the ready posture to the reach on a minimum-jerk profile.",
                              run_reach}};
 
