@@ -122,6 +122,26 @@ TEST(CompressCli, GclInputNeedsAMatchingSkeleton) {
   std::remove(gcl.c_str());
 }
 
+TEST(CompressCli, DecompressRejectsJunkAndMissingArguments) {
+  const std::string junk = ::testing::TempDir() + "junk.gcl";
+  {
+    std::FILE* f = std::fopen(junk.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fputs("GCL\x01 not a clip", f);
+    std::fclose(f);
+  }
+  const std::string ref = kData + "/makehuman/poses/tpose.bvh";
+  const CliRun bad = run("decompress " + junk + " --skeleton " + ref + " -o /dev/null");
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.output.find(junk + ": byte"), std::string::npos) << bad.output;
+  for (const std::string& args : std::vector<std::string>{"decompress", "decompress " + junk, "decompress " + junk + " -o x.bvh --bogus"}) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.status, 1) << args;
+    EXPECT_NE(r.output.find("gestura decompress: "), std::string::npos) << args << "\n" << r.output;
+  }
+  std::remove(junk.c_str());
+}
+
 TEST(CompressCli, BadInputIsAClearError) {
   for (const char* args : {"compress", "compress synthetic --error-cm 0", "compress synthetic --error-cm x",
                            "compress synthetic:-1", "compress synthetic --bogus", "compress a b", "compress synthetic -o",

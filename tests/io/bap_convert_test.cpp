@@ -114,5 +114,19 @@ TEST(BapConvert, BvhWithoutHanimJointsIsAClearError) {
   EXPECT_NE(r.output.find("H-Anim"), std::string::npos) << r.output;
 }
 
+TEST(BapConvert, MalformedBapNamesTheLine) {
+  const std::string bad = ::testing::TempDir() + "bad.bap", out = ::testing::TempDir() + "bad_out.bvh";
+  {
+    std::FILE* f = std::fopen(bad.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs("2.1 broken 30 1\n0 1 0\n", f);
+    std::fclose(f);
+  }
+  const CliRun r = run("convert " + bad + " " + out);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find(bad + ":2:"), std::string::npos) << r.output;
+  std::remove(bad.c_str());
+}
+
 }  // namespace
 }  // namespace gestura
