@@ -1,4 +1,5 @@
-// W1–W3: the per-frame animation core. Numbers are per character-frame.
+// W1–W3: the per-frame animation core on the shared 67-joint, 15 s test clip (anim/synthetic_motion.hpp,
+// the same subject as W7/W8). Numbers are per character-frame.
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -6,15 +7,15 @@
 
 #include "gestura/anim/blend.hpp"
 #include "gestura/anim/sampler.hpp"
-#include "workload.hpp"
+#include "gestura/anim/synthetic_motion.hpp"
 
 using namespace gestura;
 
 namespace {
 
 struct Fixture {
-  Skeleton skeleton = bench::workload_skeleton();
-  Clip clip = bench::workload_clip(skeleton);
+  Skeleton skeleton = synthetic_humanoid();
+  Clip clip = synthetic_clip(skeleton, 15.0f, 30.0f);
   Pose rest = rest_pose(skeleton);
 };
 

@@ -1,28 +1,27 @@
-// gestura reach: the arm reaches for a point (alias-movement-through-environments.txt §6.2). The hand
-// travels on a straight line from the ready posture to the target; every frame is one IK solve
-// seeded with the previous frame, so the motion is continuous. Prints iterations, residual and time.
+// gestura reach: an arm of the default avatar reaches for a point (alias-movement-through-environments.txt
+// §6.2). One IK solve from the signer's ready posture finds the reaching posture (printed: iterations,
+// residual, time); the motion then moves every joint from the ready posture to it on a minimum-jerk
+// profile (Flash & Hogan: s = 10τ³ − 15τ⁴ + 6τ⁵, zero velocity and acceleration at both ends), Euler
+// angles interpolated per joint, so every frame stays inside the joints' limit boxes.
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "command.hpp"
+#include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/ik/ccd.hpp"
 #include "gestura/ik/combined.hpp"
 #include "gestura/ik/dls.hpp"
 #include "gestura/ik/limb.hpp"
 #include "gestura/ik/reference_arm.hpp"
+#include "gestura/io/bvh.hpp"
 
 namespace {
 
 using namespace gestura;
-
-// The skeleton the arm belongs to. Swap this for the default avatar once it is wired in: everything
-// below only needs l_shoulder, l_elbow, l_wrist and l_hand_site.
-Skeleton reach_skeleton() { return reference_arm_skeleton(); }
 
 vec3 parse_point(const std::string& text) {
   vec3 v(0.0f);
@@ -34,52 +33,37 @@ vec3 parse_point(const std::string& text) {
   return v;
 }
 
-// Minimal BVH export of the arm motion (ZXY Euler channels, root with positions). To be replaced by
-// io/bvh's make_bvh/save_bvh when that module is on this branch.
-void write_bvh(const std::string& path, const Skeleton& skeleton, const std::vector<Pose>& frames, float frame_time) {
-  std::ofstream out(path);
-  if (!out) throw Error(SourceLocation{path}, "cannot write file");
-  std::vector<int> children(skeleton.size(), 0);
-  for (std::size_t j = 1; j < skeleton.size(); ++j) children[skeleton.parents[j]]++;
-  out << "HIERARCHY\n";
-  std::vector<int> order;  // joints with channels, in file order
-  auto emit = [&](auto&& self, int j, int depth) -> void {
-    const std::string pad(static_cast<std::size_t>(2 * depth), ' ');
-    const vec3 o = skeleton.rest_translations[j];
-    if (children[j] == 0 && depth > 0) {
-      out << pad << "End Site\n" << pad << "{\n" << pad << "  OFFSET " << o.x << " " << o.y << " " << o.z << "\n" << pad << "}\n";
-      return;
+// Minimum jerk: position fraction at time fraction τ for a point-to-point move from rest to rest.
+float minimum_jerk(float tau) { return tau * tau * tau * (10.0f + tau * (-15.0f + 6.0f * tau)); }
+
+// The motion as a clip with one key per frame on every joint that moves (and the root's translation).
+Clip interpolate_motion(const Skeleton& skeleton, const Pose& from, const Pose& to, int frames, float frame_time) {
+  Clip clip;
+  clip.name = "reach";
+  clip.resize_joints(skeleton.size());
+  clip.duration = static_cast<float>(frames) * frame_time;
+  for (std::size_t j = 0; j < skeleton.size(); ++j) {
+    const RotationOrder order = skeleton.dofs[j].order;
+    const vec3 a = quat_to_euler(from.rotations[j], order);
+    const vec3 b = quat_to_euler_near(to.rotations[j], order, a);
+    for (int f = 0; f <= frames; ++f) {
+      const float t = static_cast<float>(f) * frame_time;
+      clip.rotations[j].add(t, euler_to_quat(glm::mix(a, b, minimum_jerk(static_cast<float>(f) / static_cast<float>(frames))), order));
     }
-    out << pad << (depth == 0 ? "ROOT " : "JOINT ") << skeleton.names[j] << "\n" << pad << "{\n";
-    out << pad << "  OFFSET " << o.x << " " << o.y << " " << o.z << "\n";
-    out << pad << "  CHANNELS " << (depth == 0 ? "6 Xposition Yposition Zposition " : "3 ") << "Zrotation Xrotation Yrotation\n";
-    order.push_back(j);
-    for (std::size_t c = 0; c < skeleton.size(); ++c)
-      if (skeleton.parents[c] == j) self(self, static_cast<int>(c), depth + 1);
-    out << pad << "}\n";
-  };
-  emit(emit, 0, 0);
-  out << "MOTION\nFrames: " << frames.size() << "\nFrame Time: " << frame_time << "\n";
-  std::vector<vec3> previous(skeleton.size(), vec3(0.0f));
-  for (const Pose& pose : frames) {
-    const vec3 t = pose.translations[0];
-    out << t.x << " " << t.y << " " << t.z;
-    for (int j : order) {
-      previous[j] = quat_to_euler_near(pose.rotations[j], RotationOrder::ZXY, previous[j]);
-      out << " " << to_degrees(previous[j].z) << " " << to_degrees(previous[j].x) << " " << to_degrees(previous[j].y);
-    }
-    out << "\n";
   }
+  clip.translations[0].add(0.0f, from.translations[0]);
+  return clip;
 }
 
 int run_reach(const std::vector<std::string>& args) {
-  std::string solver = "dls", output;
+  std::string solver = "combined", output, side = "l";
   vec3 target(0.0f);
   bool has_target = false;
   int frames = 30;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--target") target = parse_point(cli::flag_value(args, i)), has_target = true;
     else if (args[i] == "--solver") solver = cli::flag_value(args, i);
+    else if (args[i] == "--arm") side = cli::flag_value(args, i);
     else if (args[i] == "-o") output = cli::flag_value(args, i);
     else if (args[i] == "--frames") {
       const std::string v = cli::flag_value(args, i);
@@ -95,63 +79,65 @@ int run_reach(const std::vector<std::string>& args) {
   if (!has_target) throw Error("--target x,y,z is required");
   if (solver != "ccd" && solver != "dls" && solver != "combined" && solver != "two-bone")
     throw Error("--solver: expected ccd, dls, combined or two-bone, got '" + solver + "'");
+  if (side != "l" && side != "r") throw Error("--arm: expected l or r, got '" + side + "'");
 
-  const Skeleton skeleton = reach_skeleton();
-  const IkChain chain = arm_chain(skeleton);
+  const Skeleton skeleton = build_avatar_skeleton();
+  const IkChain chain = arm_chain(skeleton, side);
   IkWorkspace ws(chain);
-  const int shoulder = skeleton.find("l_shoulder"), elbow = skeleton.find("l_elbow"), wrist = skeleton.find("l_wrist"),
-            site = skeleton.find("l_hand_site");
-  Pose pose = arm_ready_pose(skeleton);
+  const int shoulder = chain.joints.front(), wrist = chain.joints.back();
+  const Pose ready = arm_ready_pose(skeleton, side);
+  Pose pose = ready;
   std::vector<mat4> model(skeleton.size());
-  local_to_model(skeleton, pose, model);
-  const vec3 start(model[site][3]);
   const mat4 base = parent_model_matrix(skeleton, pose, shoulder);
+  auto effector = [&] {
+    local_to_model(skeleton, pose, model);
+    return vec3(model[static_cast<std::size_t>(wrist)] * vec4(chain.effector_offset, 1.0f));
+  };
 
-  std::vector<Pose> motion{pose};
-  IkResult last;
-  long long total_iterations = 0;
-  double seconds = 0.0;
-  for (int f = 1; f <= frames; ++f) {
-    const float s = static_cast<float>(f) / static_cast<float>(frames);
-    const float ease = s * s * (3.0f - 2.0f * s);  // slow in, slow out
-    const vec3 goal = glm::mix(start, target, ease);
-    const auto t0 = std::chrono::steady_clock::now();
-    if (solver == "two-bone") {
-      // The two-bone solver places the wrist; aim the hand site by targeting the wrist a hand's
-      // length short of the goal along the forearm's current direction.
-      local_to_model(skeleton, pose, model);
-      const vec3 hand = vec3(model[site][3]) - vec3(model[wrist][3]);
-      const LimbIkResult r = solve_limb(skeleton, pose, shoulder, elbow, wrist, vec3(-1, 0, 0), goal - hand,
-                                        vec3(0.6f, 0.9f, -0.6f), 0.98f);
-      last = IkResult{1, r.position_error, 0.0f, r.position_error < 1e-4f};
-    } else {
-      last = solver == "ccd"   ? solve_ccd(skeleton, chain, base, IkTarget{goal}, IkSettings{}, ws, pose)
-             : solver == "dls" ? solve_dls(skeleton, chain, base, IkTarget{goal}, IkSettings{}, ws, pose)
-                               : solve_combined(skeleton, chain, base, IkTarget{goal}, IkSettings{}, ws, pose);
-    }
-    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    total_iterations += last.iterations;
-    motion.push_back(pose);
+  IkResult result;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (solver == "two-bone") {
+    // The two-bone solver places the wrist: aim it a hand's length short of the goal along the
+    // ready posture's wrist → effector direction. Right arm: the pole point mirrors in X.
+    const vec3 effector_at_ready = effector();
+    const vec3 hand = effector_at_ready - vec3(model[static_cast<std::size_t>(wrist)][3]);
+    const vec3 shoulder_at = vec3(model[static_cast<std::size_t>(shoulder)][3]);
+    const vec3 pole = shoulder_at + vec3(side == "l" ? 0.4f : -0.4f, -0.5f, -0.6f);  // out, down, behind
+    const int elbow = skeleton.parents[static_cast<std::size_t>(wrist)];
+    const LimbIkResult r = solve_limb(skeleton, pose, shoulder, elbow, wrist, vec3(-1, 0, 0), target - hand, pole);
+    result = IkResult{1, r.position_error, 0.0f, r.position_error < 1e-4f};
+    if (r.clamped) std::printf("two-bone: the analytic solution was clamped to the joint limits\n");
+  } else {
+    result = solver == "ccd"   ? solve_ccd(skeleton, chain, base, IkTarget{target}, IkSettings{}, ws, pose)
+             : solver == "dls" ? solve_dls(skeleton, chain, base, IkTarget{target}, IkSettings{}, ws, pose)
+                               : solve_combined(skeleton, chain, base, IkTarget{target}, IkSettings{}, ws, pose);
   }
-  local_to_model(skeleton, pose, model);
-  const float residual = glm::length(vec3(model[site][3]) - target);
-  std::printf("solver %s, %d frames toward (%.3f, %.3f, %.3f)\n", solver.c_str(), frames, target.x, target.y, target.z);
-  std::printf("last frame: %d iterations, residual %.6f m%s\n", last.iterations, residual,
-              residual < 1e-4f ? "" : " (target out of reach or blocked by joint limits: closest reach)");
-  std::printf("all frames: %lld iterations, %.1f us solving (%.2f us per frame)\n", total_iterations, seconds * 1e6,
-              seconds * 1e6 / frames);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const float residual = glm::length(effector() - target);
+  std::printf("avatar %s arm, solver %s, target (%.3f, %.3f, %.3f)\n", side == "l" ? "left" : "right", solver.c_str(),
+              target.x, target.y, target.z);
+  std::printf("solve: %d iterations, residual %.6f m, %.1f us%s\n", result.iterations, residual, seconds * 1e6,
+              residual < 1e-4f      ? ""
+              : solver == "two-bone" ? " (two-bone aims the wrist with the ready hand offset; the turned forearm moves the hand)"
+                                     : " (out of reach or blocked by joint limits: closest reach)");
   if (!output.empty()) {
-    write_bvh(output, skeleton, motion, 1.0f / 30.0f);
-    std::printf("wrote %s\n", output.c_str());
+    const float frame_time = 1.0f / 30.0f;
+    const Clip clip = interpolate_motion(skeleton, ready, pose, frames, frame_time);
+    save_bvh(output, make_bvh(skeleton, clip, frame_time));
+    std::printf("wrote %s: %d frames, ready posture to reach on a minimum-jerk profile\n", output.c_str(), frames + 1);
   }
   return 0;
 }
 
-const cli::Registration reg{{"reach", "reach for a point with the arm (IK demo: ccd, dls, combined or two-bone)",
-                             "usage: gestura reach --target x,y,z [--solver ccd|dls|combined|two-bone] [--frames N] [-o out.bvh]\n"
-                             "  Moves the left hand of the 7-DoF reference arm (shoulder at 0.18,1.40,0; reach\n"
-                             "  0.65 m; metres, +Y up, facing +Z) from the ready posture to the target over N frames\n"
-                             "  (default 30, 30 fps), solving IK per frame within the joints' limits.",
+const cli::Registration reg{{"reach", "the avatar reaches for a point with one arm (IK: ccd, dls, combined or two-bone)",
+                             "usage: gestura reach --target x,y,z [--arm l|r] [--solver ccd|dls|combined|two-bone]\n"
+                             "                     [--frames N] [-o out.bvh]\n"
+                             "  The default avatar (metres, +Y up, facing +Z, its left is +X) puts the middle knuckle\n"
+                             "  of its left (default) or right hand on the target: one IK solve (default: combined)\n"
+                             "  from the ready posture, within the joints' limits (two-bone: shoulder\n"
+                             "  and elbow only, the hand kept as in the ready posture, so it lands near, not on, the\n"
+                             "  target). -o writes N+1 frames at 30 fps\n"
+                             "  (default N = 30) moving from the ready posture to the reach on a minimum-jerk profile.",
                              run_reach}};
 
 }  // namespace

@@ -1,0 +1,45 @@
+#pragma once
+// The interpreter of sign-language-interpreter.txt: written text in, a signing performance out.
+//
+//   Signer signer(avatar, lexicon);                // once
+//   SentencePerformance p = signer.say("Hello! How are you?", {});
+//   p.clip                                         // body, hands, face channels on avatar.skeleton
+//
+// Pipeline: English → ASL glosses (text/translator) → lexicon entries (lexicon/, built-in ASL from
+// data/lexicon/ase.jsonl plus user lexicons) → each sign planned on the avatar (sign/sign_planner)
+// without returning to rest, joined by coarticulated transitions, with prosody (phrase-final
+// lengthening, pauses, holds) → performed once for the whole utterance (sign/sign_performer) →
+// non-manual markers and mouthing added as face channels and head rotations (face/).
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gestura/anim/clip.hpp"
+#include "gestura/body/avatar.hpp"
+
+namespace gestura {
+
+struct SayOptions {
+  float speed = 1.0f;        // global tempo 0.25–2
+  std::string lang = "ase";  // sign language (ISO 639-3); only ASL has a built-in lexicon
+  bool mouthing = true;
+  bool nonmanuals = true;
+  float fps = 30.0f;
+};
+
+// One gloss of the utterance as performed.
+struct PerformedGloss {
+  std::string gloss;         // e.g. "MOTHER", "FS-JOHN", "47"
+  std::string source;        // the English words it came from
+  float start = 0.0f;        // seconds: when the hands reach the sign's first posture
+  float end = 0.0f;          // when its last hold ends
+};
+
+struct SentencePerformance {
+  Clip clip;                            // on the Signer's avatar skeleton, with face channels
+  std::vector<PerformedGloss> glosses;
+  float duration = 0.0f;                // seconds, including the return to rest
+  std::vector<std::string> notes;       // e.g. "'zyx' fingerspelled: not in the lexicon"
+};
+
+}  // namespace gestura
