@@ -37,23 +37,19 @@ const std::map<std::string, Reader>& readers() {
       {".bvh", [](const std::string& path, const gestura::BvhReadOptions& options) {
          return gestura::load_bvh(path, options);
        }},
-<<<<<<< HEAD
       // glTF animation: nodes become joints; BVH output samples it at 30 frames per second.
       {".glb", read_gltf},
-      {".gltf", read_gltf}};
-=======
+      {".gltf", read_gltf},
       // BAP angles are on the default avatar's skeleton (io/bap_bvh.hpp); length options do not apply.
       {".bap", [](const std::string& path, const gestura::BvhReadOptions&) {
          return gestura::bap_to_bvh(gestura::load_bap(path));
        }}};
->>>>>>> toolkit
   return table;
 }
 
 const std::map<std::string, Writer>& writers() {
   static const std::map<std::string, Writer> table{
       {".bvh", gestura::save_bvh},
-<<<<<<< HEAD
       {".glb", [](const std::string& path, const BvhFile& motion) { gestura::save_gltf(path, motion.skeleton, motion.clip); }},
       {".gltf", [](const std::string& path, const BvhFile& motion) { gestura::save_gltf(path, motion.skeleton, motion.clip); }},
       // Joint positions in model space (metres) for the pose-format toolkit.
@@ -64,10 +60,9 @@ const std::map<std::string, Writer>& writers() {
       // OpenPose keypoints seen by the default front camera, one file per frame (needs --openpose).
       {".json", [](const std::string& path, const BvhFile& motion) {
          gestura::save_openpose_json(path, motion.skeleton, motion.clip, 1.0f / motion.frame_time);
-=======
+       }},
       {".bap", [](const std::string& path, const BvhFile& motion) {
          gestura::save_bap(path, gestura::bvh_to_bap(motion, "gestura"));
->>>>>>> toolkit
        }}};
   return table;
 }
@@ -131,18 +126,13 @@ int run_convert(const std::vector<std::string>& args) {
 }
 
 gestura::cli::Registration reg{{"convert", "convert motion files (BVH → BVH; unit scale, Z-up → Y-up)",
-<<<<<<< HEAD
                                 "usage: gestura convert IN OUT [--scale S] [--z-up] [--openpose]\n\n"
-                                "Reads IN and writes OUT, formats chosen by extension (.bvh, .glb, .gltf; written also\n"
-                                ".pose: joint positions for the pose-format toolkit, and with --openpose\n"
+                                "Reads IN and writes OUT, formats chosen by extension (.bvh, .glb, .gltf, .bap; written\n"
+                                "also .pose: joint positions for the pose-format toolkit, and with --openpose\n"
                                 ".json: OpenPose BODY_25 + hand keypoints from a front camera, written as\n"
                                 "OUT_<frame>_keypoints.json per frame).\n"
-=======
-                                "usage: gestura convert IN OUT [--scale S] [--z-up]\n\n"
-                                "Reads IN and writes OUT, formats chosen by extension (now: .bvh, .bap).\n"
                                 ".bap       MPEG-4 BAP text, angles on the default avatar skeleton (joints\n"
                                 "           matched by H-Anim name; 1e-5 rad resolution).\n"
->>>>>>> toolkit
                                 "--scale S  multiplies all lengths (offsets, positions), e.g. 0.1 to turn\n"
                                 "           the decimetres of MakeHuman BVH files into metres.\n"
                                 "--z-up     IN is Z-up facing -Y (MakeHuman, Blender): write it +Y up,\n"
