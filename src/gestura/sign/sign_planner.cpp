@@ -381,8 +381,24 @@ class Planner {
       const sign::Orientation& o = own_o ? *own_o : (p.orientation.dominant && h == 1 ? *p.orientation.dominant : default_o);
       s.orientation = orientation_of(h, o, s.orientation, copy_o || (h == 1 && !own_o && both_hands()));
     }
+    // A hand constellation names a part of each hand (the dominant hand's pinky side on the other
+    // hand's palm): the non-dominant hand waits in front, near the midline, and the dominant hand
+    // brings its part to the named part of the other hand.
+    auto on_hand = [](const std::optional<sign::Location>& l) {
+      return l && (sign::site_region(l->site) == sign::SiteRegion::hand || sign::site_region(l->site) == sign::SiteRegion::finger);
+    };
+    const bool constellation = on_hand(p.location.dominant) && on_hand(p.location.nondominant);
+    if (constellation) {
+      target[1].active = true;
+      target[1].position = neutral_space(1).point + vec3(-0.06f, -0.02f, -0.03f);
+      state_[1] = target[1];
+      const SitePlace other = other_hand_site(0, p.location.nondominant->site);
+      const auto proximity = p.hands_contact ? p.hands_contact : p.location.dominant->proximity;
+      target[0].position = place_at(0, target[0], other, gap_of(proximity, sign::SiteRegion::hand));
+    }
     // Locations: the non-dominant hand first, as the dominant hand may be placed on it.
     for (int h : {1, 0}) {
+      if (constellation) break;
       if (!target[h].active) continue;
       const auto& own_l = h == 0 ? p.location.dominant : p.location.nondominant;
       if (own_l) {
@@ -413,7 +429,7 @@ class Planner {
       target[1].position.x = -target[0].position.x;
       state_[1] = target[1];
     }
-    if (p.hands_contact && target[0].active && target[1].active) {
+    if (p.hands_contact && target[0].active && target[1].active && !constellation) {
       // The hands touch: bring the dominant hand's palm to the other hand.
       SitePlace other = other_hand_site(0, sign::Site::palm);
       target[0].position = place_at(0, target[0], other, gap_of(p.hands_contact, sign::SiteRegion::hand));
