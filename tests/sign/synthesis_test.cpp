@@ -174,6 +174,21 @@ TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   EXPECT_LE(deep, 5);  // ratchet: the crude neck/shoulder capsules flag a few near-contact signs
 }
 
+TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
+  // The dominant fist's little-finger side on the other hand's palm, in front of the body.
+  const SignSynthesis r = synth("hamfist,hamthumboutmod,hamextfingero,hampalml,hamparbegin,hampinkyside,hamplus,hampalm,hamparend,hamtouch");
+  const auto m = held_pose(r);
+  std::vector<vec3> right, left;
+  hand_surface_points(fx().rig, Hand::Right, m, right);
+  hand_surface_points(fx().rig, Hand::Left, m, left);
+  float nearest = 1e9f;
+  for (const vec3& a : right)
+    for (const vec3& b : left) nearest = std::min(nearest, glm::distance(a, b));
+  EXPECT_LT(nearest, 0.03f);
+  EXPECT_GT(joint(m, "l_wrist").z, 0.15f);  // the other hand is up in front, not resting
+  EXPECT_GT(joint(m, "r_wrist").z, 0.15f);
+}
+
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits; the count of
 // signs whose hand enters the (capsule) collision body by more than 1 cm is held by a ratchet.
 TEST(Synthesis, EveryLexiconSignIsPerformedWithinLimitsAndWithoutNaN) {

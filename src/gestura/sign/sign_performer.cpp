@@ -74,8 +74,11 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
       // Hand orientation carries meaning; a centimetre of position matters less: weight a radian
       // of orientation like a quarter metre of position.
       settings.orientation_scale = 0.25f;
+      settings.null_space_gain = 0.5f;  // a firmer pull toward the relaxed posture: elbows stay down
       const mat4 base = parent_model_matrix(s, pose, h.arm.joints.front());
-      IkResult r = solve_combined(s, h.arm, base, target, settings, workspace[side], pose, f == 0 ? 8 : 2);
+      // The first frame may need CCD's large steps; after that the previous frame is a good start and
+      // damped least squares alone keeps the arm on one continuous solution (no elbow flips).
+      IkResult r = solve_combined(s, h.arm, base, target, settings, workspace[side], pose, f == 0 ? 8 : 0);
 
       // Keep the hand out of the body: push the whole hand along the body's outward normal at its
       // deepest point, a few times (leaving one part of the body can enter another).
@@ -94,7 +97,7 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
         // Getting out of the body comes before the exact hand orientation.
         IkSettings escape = settings;
         escape.orientation_scale = 0.08f;
-        r = solve_combined(s, h.arm, base, target, escape, workspace[side], pose, 4);
+        r = solve_combined(s, h.arm, base, target, escape, workspace[side], pose, 0);
       }
       st.max_position_error = std::max(st.max_position_error, r.position_error);
       st.max_orientation_error = std::max(st.max_orientation_error, r.orientation_error);
