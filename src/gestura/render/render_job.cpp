@@ -5,6 +5,7 @@
 #include <regex>
 
 #include "gestura/core/error.hpp"
+#include "gestura/render/encoder_thread.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/progress.hpp"
@@ -135,14 +136,15 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) 
   }
   const int frames = frame_count(duration, job.fps);
   Progress progress("rendering " + job.output, frames);
+  EncoderThread encoder(*video);  // frame i is encoded while frame i+1 is drawn
   for (int i = 0; i < frames; ++i) {
     animator.pose_at(static_cast<float>(i) / static_cast<float>(job.fps));
     renderer.render(views, animator.skinning(), animator.morph_weights(), job.skinning);
     renderer.read_pixels(frame);
-    video->write(frame);
+    encoder.submit(frame);
     progress.update(i + 1);
   }
-  video->finish();
+  encoder.finish();
   report.frames = frames;
   return report;
 }

@@ -40,7 +40,7 @@ struct RenderJob {
   bool sheet = false;                          // PNG only: 4×4 contact sheet over the clip
   float still_time = 0.0f;                     // the time a single PNG shows
   float rest_seconds = 2.0f;                   // animation length when the subject has no clip
-  SkinningPath skinning = SkinningPath::Gpu;
+  SkinningDevice skinning = SkinningDevice::Gpu;
 };
 
 // Throws gestura::Error for a bad combination (sheet with a video, unknown extension, sizes out of
