@@ -32,6 +32,7 @@ The file appears only when complete.
   --sheet                 PNG contact sheet (16 frames, 4x4)
   --time S                the time a single PNG shows             [0]
   --seconds S             animation length with --rest            [2]
+  --msaa N                samples per pixel for edge smoothing: 1, 2 or 4       [2]
   --cpu-skinning          skin on the CPU and upload (comparison path)
   --rest                  the rest pose, no clip (the default)
   --test-motion           the built-in test motion (the right hand waves, 2 s)
@@ -84,6 +85,7 @@ int run(const std::vector<std::string>& args) {
     else if (a == "--sheet") job.sheet = true;
     else if (a == "--time") job.still_time = parse_seconds(flag_value(args, i), "--time");
     else if (a == "--seconds") job.rest_seconds = parse_seconds(flag_value(args, i), "--seconds");
+    else if (a == "--msaa") job.msaa_samples = parse_msaa(flag_value(args, i));
     else if (a == "--cpu-skinning") job.skinning = SkinningDevice::Cpu;
     else if (a == "--rest") set_motion(Motion::Rest);
     else if (a == "--test-motion") set_motion(Motion::TestMotion);
