@@ -32,7 +32,7 @@ The file appears only when complete.
   --sheet                 PNG contact sheet (16 frames, 4x4)
   --time S                the time a single PNG shows             [0]
   --seconds S             animation length with --rest            [2]
-  --msaa N                samples per pixel for edge smoothing: 1, 2 or 4       [2]
+  --msaa N                samples per pixel for edge smoothing: 1, 2 or 4       [4]
   --cpu-skinning          skin on the CPU and upload (comparison path)
   --rest                  the rest pose, no clip (the default)
   --test-motion           the built-in test motion (the right hand waves, 2 s)
