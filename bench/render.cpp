@@ -109,6 +109,31 @@ void BM_R1_Draw(benchmark::State& state) {
   state.SetLabel(std::string(device == SkinningDevice::Gpu ? "gpu skinning" : "cpu skinning + upload") + ", " +
                  std::to_string(state.range(1)) + " sample(s); " + s.context.description());
 }
+// Draw at a quarter of the pixels (640×360, 4× MSAA): how much of a frame scales with pixels and
+// how much with vertices and triangles.
+void BM_R1_DrawQuarterPixels(benchmark::State& state) {
+  Scene& s = scene();
+  static Renderer small{Look{}, 4};
+  static const bool ready = [&] {
+    small.upload(s.figure.mesh);
+    small.resize(kWidth / 2, kHeight / 2);
+    return true;
+  }();
+  benchmark::DoNotOptimize(ready);
+  const std::vector<View> views{{preset_camera(CameraPreset::Front, framing_box(s.figure.mesh, s.figure.skeleton),
+                                               float(kWidth) / kHeight), {0, 0, kWidth / 2, kHeight / 2}}};
+  int frame = 0;
+  const CpuMeter meter;
+  for (auto _ : state) {
+    s.animator.pose_at(static_cast<float>(frame++ % 60) / 30.0f);
+    small.render(views, s.animator.skinning(), s.animator.morph_weights());
+    small.finish();
+  }
+  meter.report(state);
+  set_counters(state);
+}
+BENCHMARK(BM_R1_DrawQuarterPixels)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 BENCHMARK(BM_R1_Draw)->Args({0, 4})->Args({0, 2})->Args({1, 2})->Args({0, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A full headless frame: draw + glReadPixels into an Image.
