@@ -1,6 +1,8 @@
-// R1: headless rendering speed of a ~25k-triangle skinned figure at 1280×720 on llvmpipe — GPU vs
-// CPU skinning, where a frame's time goes (draw, readback, encode) and export speed. The fps
-// counter is frames per second; `x_realtime_30fps` is that divided by 30.
+// R1: headless rendering speed of the default avatar (build_avatar(): ~38k triangles, 36 morphs)
+// doing the test wave at 1280×720 on llvmpipe — GPU vs CPU skinning, MSAA samples, where a frame's
+// time goes (draw, readback, encode) and export speed, serial and with the encoder thread. The fps
+// counter is frames per second; `x_realtime_30fps` is that divided by 30 (export: multiple of real
+// time for a 30 fps video).
 #include <benchmark/benchmark.h>
 
 #include <sys/resource.h>
@@ -9,11 +11,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
-#include "gestura/render/cpu_skinning.hpp"
+#include "gestura/body/avatar.hpp"
+#include "gestura/render/encoder_thread.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/renderer.hpp"
-#include "gestura/render/test_figure.hpp"
+#include "gestura/render/subject.hpp"
+#include "gestura/render/test_motion.hpp"
 #include "gestura/render/video_writer.hpp"
 
 namespace gestura {
@@ -21,29 +26,39 @@ namespace {
 
 constexpr int kWidth = 1280, kHeight = 720;
 
+RenderSubject avatar_subject() {
+  Avatar avatar = build_avatar();
+  RenderSubject subject{std::move(avatar.skeleton), std::move(avatar.mesh), std::nullopt};
+  subject.clip = make_wave_clip(subject.skeleton);
+  return subject;
+}
+
 struct Scene {
   HeadlessGlContext context;
-  RenderSubject figure = make_test_figure(2);
+  RenderSubject figure = avatar_subject();
   Animator animator{figure};
-  Renderer renderer{Look{}, 4};
+  Renderer renderer{Look{}, 4};  // RenderJob's default
+  Renderer two_samples{Look{}, 2};
   Renderer single_sample{Look{}, 1};
   std::vector<View> views;
   Scene() {
-    for (Renderer* r : {&renderer, &single_sample}) {
-      r->upload(figure.mesh);
-      r->resize(kWidth, kHeight);
-    }
-    for (Renderer* r : {&renderer, &single_sample})  // compile shaders, fill caches
-      for (SkinningPath path : {SkinningPath::Gpu, SkinningPath::Cpu}) {
-        r->render(views, animator.skinning(), animator.morph_weights(), path);
-        r->finish();
-      }
     views.push_back({preset_camera(CameraPreset::Front, framing_box(figure.mesh, figure.skeleton),
                                    float(kWidth) / kHeight), {0, 0, kWidth, kHeight}});
+    for (Renderer* r : {&renderer, &two_samples, &single_sample}) {
+      r->upload(figure.mesh);
+      r->resize(kWidth, kHeight);
+      for (SkinningDevice device : {SkinningDevice::Gpu, SkinningDevice::Cpu}) {  // compile shaders, fill caches
+        r->render(views, animator.skinning(), animator.morph_weights(), device);
+        r->finish();
+      }
+    }
   }
-  void draw(int frame, SkinningPath path) {
+  Renderer& with_samples(std::int64_t samples) {
+    return samples == 4 ? renderer : samples == 2 ? two_samples : single_sample;
+  }
+  void draw(int frame, SkinningDevice device) {
     animator.pose_at(static_cast<float>(frame % 60) / 30.0f);
-    renderer.render(views, animator.skinning(), animator.morph_weights(), path);
+    renderer.render(views, animator.skinning(), animator.morph_weights(), device);
   }
 };
 
@@ -76,62 +91,72 @@ void set_counters(benchmark::State& state) {
   state.counters["triangles"] = static_cast<double>(scene().figure.mesh.triangle_count());
 }
 
-// Draw only (pose, skin, draw, MSAA resolve), waiting for the GL to finish. Args: skinning path
-// (0 GPU, 1 CPU), MSAA samples (4 or 1).
+// Draw only (pose, skin, draw, MSAA resolve), waiting for the GL to finish. Args: skinning device
+// (0 GPU, 1 CPU), MSAA samples (4, 2 or 1).
 void BM_R1_Draw(benchmark::State& state) {
   Scene& s = scene();
-  const auto path = static_cast<SkinningPath>(state.range(0));
-  Renderer& renderer = state.range(1) == 4 ? s.renderer : s.single_sample;
+  const auto device = static_cast<SkinningDevice>(state.range(0));
+  Renderer& renderer = s.with_samples(state.range(1));
   int frame = 0;
   const CpuMeter meter;
   for (auto _ : state) {
     s.animator.pose_at(static_cast<float>(frame++ % 60) / 30.0f);
-    renderer.render(s.views, s.animator.skinning(), s.animator.morph_weights(), path);
+    renderer.render(s.views, s.animator.skinning(), s.animator.morph_weights(), device);
     renderer.finish();
   }
   meter.report(state);
   set_counters(state);
-  state.SetLabel(std::string(path == SkinningPath::Gpu ? "gpu skinning" : "cpu skinning + upload") +
-                 (state.range(1) == 4 ? ", 4x msaa" : ", no msaa") + "; " + s.context.description());
+  state.SetLabel(std::string(device == SkinningDevice::Gpu ? "gpu skinning" : "cpu skinning + upload") + ", " +
+                 std::to_string(state.range(1)) + " sample(s); " + s.context.description());
 }
-BENCHMARK(BM_R1_Draw)->Args({0, 4})->Args({1, 4})->Args({0, 1})->Args({1, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
-
-// The renderer's CPU linear-blend skinning loop alone (what the CPU path adds before its upload).
-void BM_R1_CpuSkinningLoop(benchmark::State& state) {
+// Draw at a quarter of the pixels (640×360, 4× MSAA): how much of a frame scales with pixels and
+// how much with vertices and triangles.
+void BM_R1_DrawQuarterPixels(benchmark::State& state) {
   Scene& s = scene();
-  const Mesh& mesh = s.figure.mesh;
-  std::vector<vec3> scratch_p(mesh.vertex_count()), scratch_n(mesh.vertex_count()), out_p(mesh.vertex_count()),
-      out_n(mesh.vertex_count());
-  s.animator.pose_at(1.0f);
+  static Renderer small{Look{}, 4};
+  static const bool ready = [&] {
+    small.upload(s.figure.mesh);
+    small.resize(kWidth / 2, kHeight / 2);
+    return true;
+  }();
+  benchmark::DoNotOptimize(ready);
+  const std::vector<View> views{{preset_camera(CameraPreset::Front, framing_box(s.figure.mesh, s.figure.skeleton),
+                                               float(kWidth) / kHeight), {0, 0, kWidth / 2, kHeight / 2}}};
+  int frame = 0;
+  const CpuMeter meter;
   for (auto _ : state) {
-    cpu_skin_for_render(mesh, s.animator.skinning(), s.animator.morph_weights(), scratch_p, scratch_n, out_p, out_n);
-    benchmark::DoNotOptimize(out_p.data());
+    s.animator.pose_at(static_cast<float>(frame++ % 60) / 30.0f);
+    small.render(views, s.animator.skinning(), s.animator.morph_weights());
+    small.finish();
   }
-  state.counters["vertices"] = static_cast<double>(mesh.vertex_count());
+  meter.report(state);
+  set_counters(state);
 }
-BENCHMARK(BM_R1_CpuSkinningLoop)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_R1_DrawQuarterPixels)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+BENCHMARK(BM_R1_Draw)->Args({0, 4})->Args({0, 2})->Args({1, 2})->Args({0, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A full headless frame: draw + glReadPixels into an Image.
 void BM_R1_DrawAndReadback(benchmark::State& state) {
   Scene& s = scene();
-  const auto path = static_cast<SkinningPath>(state.range(0));
+  const auto device = static_cast<SkinningDevice>(state.range(0));
   Image image;
   int frame = 0;
   const CpuMeter meter;
   for (auto _ : state) {
-    s.draw(frame++, path);
+    s.draw(frame++, device);
     s.renderer.read_pixels(image);
   }
   meter.report(state);
   set_counters(state);
-  state.SetLabel(path == SkinningPath::Gpu ? "gpu skinning" : "cpu skinning + upload");
+  state.SetLabel(device == SkinningDevice::Gpu ? "gpu skinning" : "cpu skinning + upload");
 }
 BENCHMARK(BM_R1_DrawAndReadback)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Readback alone (the frame is already drawn).
 void BM_R1_Readback(benchmark::State& state) {
   Scene& s = scene();
-  s.draw(0, SkinningPath::Gpu);
+  s.draw(0, SkinningDevice::Gpu);
   s.renderer.finish();
   Image image;
   const CpuMeter meter;
@@ -148,7 +173,7 @@ void BM_R1_Encode(benchmark::State& state) {
   Scene& s = scene();
   std::vector<Image> frames(30);
   for (int i = 0; i < 30; ++i) {
-    s.draw(i * 2, SkinningPath::Gpu);
+    s.draw(i * 2, SkinningDevice::Gpu);
     s.renderer.read_pixels(frames[static_cast<std::size_t>(i)]);
   }
   const std::string path = (std::filesystem::temp_directory_path() / "gestura_bench_encode.").string() +
@@ -167,29 +192,35 @@ void BM_R1_Encode(benchmark::State& state) {
 }
 BENCHMARK(BM_R1_Encode)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// Export end to end: pose, draw, read back, encode — frames per second of video written.
+// Export end to end (4x MSAA, as `gestura render`): pose, draw, read back, encode — frames per second of video written. Args:
+// format (0 mp4, 1 webm, 2 gif), encoder on its own thread (1, as render_to_file does) or inline (0).
 void BM_R1_Export(benchmark::State& state) {
   Scene& s = scene();
   const std::string path = (std::filesystem::temp_directory_path() / "gestura_bench_export.").string() +
                            kExtensions[state.range(0)];
+  const bool threaded = state.range(1) == 1;
   Image image;
   {
     VideoWriter writer(path, kWidth, kHeight, 30);
+    std::optional<EncoderThread> encoder;
+    if (threaded) encoder.emplace(writer);
     int frame = 0;
     const CpuMeter meter;
     for (auto _ : state) {
-      s.draw(frame++, SkinningPath::Gpu);
+      s.draw(frame++, SkinningDevice::Gpu);
       s.renderer.read_pixels(image);
-      writer.write(image);
+      if (encoder) encoder->submit(image);
+      else writer.write(image);
     }
-    writer.finish();
+    if (encoder) encoder->finish();
+    else writer.finish();
     meter.report(state);
   }
   std::remove(path.c_str());
   set_counters(state);
-  state.SetLabel(kExtensions[state.range(0)]);
+  state.SetLabel(std::string(kExtensions[state.range(0)]) + (threaded ? ", encoder thread" : ", inline encode"));
 }
-BENCHMARK(BM_R1_Export)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_R1_Export)->Args({0, 0})->Args({0, 1})->Args({1, 1})->Args({2, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace gestura

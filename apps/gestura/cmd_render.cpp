@@ -13,7 +13,9 @@ namespace {
 
 constexpr const char* kUsage = R"(usage: gestura render [CLIP.bvh | --rest | --test-motion] -o OUT.png|.gif|.mp4|.webm [options]
 
-Renders headless (EGL, no display needed). A .png is one frame (at --time), or with --sheet a
+Renders the default avatar headless (EGL, no display needed). CLIP.bvh must be a motion on the
+avatar's skeleton (H-Anim joint names, e.g. written by gestura convert or gestura reach -o);
+its joints keep the avatar's proportions. A .png is one frame (at --time), or with --sheet a
 4x4 contact sheet of 16 frames spread over the clip; .gif/.mp4/.webm get every frame at --fps.
 The file appears only when complete.
 
@@ -30,9 +32,11 @@ The file appears only when complete.
   --sheet                 PNG contact sheet (16 frames, 4x4)
   --time S                the time a single PNG shows             [0]
   --seconds S             animation length with --rest            [2]
+  --msaa N                samples per pixel for edge smoothing: 1, 2 or 4       [4]
   --cpu-skinning          skin on the CPU and upload (comparison path)
-  --rest                  the rest pose, no clip
-  --test-motion           the built-in test motion (a wave))";
+  --rest                  the rest pose, no clip (the default)
+  --test-motion           the built-in test motion (the right hand waves, 2 s)
+  --height M, --build X, --sex S   the avatar, as in gestura avatar export)";
 
 // Fills job.orbit (and whether it aims at the body) from "YAW,PITCH,DIST[,X,Y,Z]".
 void parse_orbit(const std::string& text, RenderJob& job) {
@@ -61,7 +65,8 @@ void parse_orbit(const std::string& text, RenderJob& job) {
 
 int run(const std::vector<std::string>& args) {
   RenderJob job;
-  Motion motion = Motion::TestMotion;
+  Motion motion = Motion::Rest;
+  AvatarParams avatar;
   std::string clip_path;
   bool motion_given = false;
   auto set_motion = [&](Motion m) {
@@ -80,14 +85,16 @@ int run(const std::vector<std::string>& args) {
     else if (a == "--sheet") job.sheet = true;
     else if (a == "--time") job.still_time = parse_seconds(flag_value(args, i), "--time");
     else if (a == "--seconds") job.rest_seconds = parse_seconds(flag_value(args, i), "--seconds");
-    else if (a == "--cpu-skinning") job.skinning = SkinningPath::Cpu;
+    else if (a == "--msaa") job.msaa_samples = parse_msaa(flag_value(args, i));
+    else if (a == "--cpu-skinning") job.skinning = SkinningDevice::Cpu;
     else if (a == "--rest") set_motion(Motion::Rest);
     else if (a == "--test-motion") set_motion(Motion::TestMotion);
+    else if (parse_avatar_flag(args, i, avatar)) continue;
     else if (!a.empty() && a[0] == '-') throw Error("unknown flag " + a + " (see gestura render --help)");
     else clip_path = a, set_motion(Motion::ClipFile);
   }
   validate(job);
-  const RenderSubject subject = load_render_subject(motion, clip_path);
+  const RenderSubject subject = load_render_subject(motion, clip_path, avatar);
   render_to_file(subject, job);
   return 0;
 }

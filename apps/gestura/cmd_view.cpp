@@ -21,13 +21,16 @@ namespace {
 
 constexpr const char* kUsage = R"(usage: gestura view [CLIP.bvh | --rest | --test-motion] [options]
 
-Opens a window (needs a display; under no display use xvfb-run -a gestura view ...).
+Shows the default avatar at rest (the default), doing the test wave, or playing CLIP.bvh (a motion
+on the avatar's skeleton). Opens a window (needs a display; under no display use
+xvfb-run -a gestura view ...).
 
   --camera PRESET        start camera: front, side, three-quarter, top, side-section  [front]
   --size WxH             window size                                        [1280x720]
   --background #rrggbb   background colour
   --screenshot PATH.png  save the window after --frames frames and quit (for scripts, Xvfb)
   --frames N             frames before the screenshot                       [30]
+  --height M, --build X, --sex S   the avatar, as in gestura avatar export
 
 keys:  space play/pause   , . step one frame back/forward   1 2 3 speed 0.25x 0.5x 1x
        l loop on/off   F1..F5 (or f s t p x) front, side, three-quarter, top (plan), side-section
@@ -87,7 +90,8 @@ void on_move(GLFWwindow* window, double x, double y) {
 void on_scroll(GLFWwindow* window, double, double dy) { viewer_of(window).controls.zoom(static_cast<float>(dy)); }
 
 int run(const std::vector<std::string>& args) {
-  Motion motion = Motion::TestMotion;
+  Motion motion = Motion::Rest;
+  AvatarParams avatar;
   std::string clip_path, screenshot;
   ImageSize size{1280, 720};
   CameraPreset start = CameraPreset::Front;
@@ -106,10 +110,11 @@ int run(const std::vector<std::string>& args) {
         throw Error("bad --frames '" + n + "' (a whole number 1..100000)");
     } else if (a == "--rest") motion = Motion::Rest;
     else if (a == "--test-motion") motion = Motion::TestMotion;
+    else if (parse_avatar_flag(args, i, avatar)) continue;
     else if (!a.empty() && a[0] == '-') throw Error("unknown flag " + a + " (see gestura view --help)");
     else clip_path = a, motion = Motion::ClipFile;
   }
-  const RenderSubject subject = load_render_subject(motion, clip_path);
+  const RenderSubject subject = load_render_subject(motion, clip_path, avatar);
   Animator animator(subject);
   std::optional<StagedFile> screenshot_file;
   if (!screenshot.empty()) screenshot_file.emplace(screenshot);

@@ -1,18 +1,25 @@
 #pragma once
-// The one place that decides what `gestura render` and `gestura view` show. Until the avatar
-// module and the BVH importer are on main this is the renderer's procedural TEST FIGURE; point
-// load_render_subject at the real avatar (and BVH clips) when they land.
-#include <optional>
+// The one place that decides what `gestura render` and `gestura view` show: the default avatar
+// (build_avatar, with --height/--build/--sex as in `gestura avatar export`) at rest, doing the
+// built-in test wave, or playing a motion file whose joints are the avatar's own (H-Anim names).
 #include <string>
+#include <vector>
 
+#include "gestura/body/avatar_params.hpp"
 #include "gestura/render/subject.hpp"
 
 namespace gestura::cli {
 
 enum class Motion { Rest, TestMotion, ClipFile };
 
-// Throws gestura::Error for a clip that cannot be read (or, for now, any clip file: BVH import is
-// not wired into this build yet).
-RenderSubject load_render_subject(Motion motion, const std::string& clip_path);
+// Avatar flags shared by render and view. When args[i] is --height, --build or --sex, reads its
+// value into `params` (advancing i) and returns true; a bad value throws gestura::Error naming
+// the flag. Call params.validate() after the loop.
+bool parse_avatar_flag(const std::vector<std::string>& args, std::size_t& i, AvatarParams& params);
+
+// Builds the avatar once and attaches the motion. Throws gestura::Error for invalid params, a
+// clip file that cannot be read (file:line:col from the reader) or one whose joints are not the
+// avatar's (a few of the unmatched names are listed).
+RenderSubject load_render_subject(Motion motion, const std::string& clip_path, const AvatarParams& params);
 
 }  // namespace gestura::cli

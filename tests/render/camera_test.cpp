@@ -4,7 +4,7 @@
 #include "gestura/core/error.hpp"
 #include "gestura/render/camera.hpp"
 #include "gestura/render/look.hpp"
-#include "gestura/render/test_figure.hpp"
+#include "support/test_figure.hpp"
 
 namespace gestura {
 namespace {

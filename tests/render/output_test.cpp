@@ -13,7 +13,7 @@ extern "C" {
 #include "gestura/core/error.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/render_job.hpp"
-#include "gestura/render/test_figure.hpp"
+#include "support/test_figure.hpp"
 #include "gestura/render/video_writer.hpp"
 
 #define STB_IMAGE_IMPLEMENTATION

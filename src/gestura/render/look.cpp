@@ -12,11 +12,14 @@ Look::Look() {
     surfaces[static_cast<std::size_t>(m)] = surface;
   };
   set(MaterialId::Skin, {0.88f, 0.68f, 0.57f}, {0.5f, 0.35f, 0.10f, 24.0f});
-  set(MaterialId::Cloth, {0.11f, 0.12f, 0.15f}, {0.2f, 0.0f, 0.04f, 8.0f});
+  // A dark slate shirt: dark enough for skin-coloured hands to stand out, light enough to show
+  // the body's form (near-black read as one flat blob on the real avatar).
+  set(MaterialId::Cloth, {0.17f, 0.20f, 0.26f}, {0.2f, 0.0f, 0.04f, 8.0f});
   set(MaterialId::Hair, {0.20f, 0.13f, 0.08f}, {0.3f, 0.0f, 0.15f, 30.0f});
   set(MaterialId::EyeWhite, {0.90f, 0.88f, 0.85f}, {0.3f, 0.1f, 0.9f, 200.0f});
   set(MaterialId::Iris, {0.28f, 0.40f, 0.52f}, {0.2f, 0.0f, 1.2f, 300.0f});
-  set(MaterialId::Lips, {0.74f, 0.42f, 0.42f}, {0.5f, 0.4f, 0.25f, 40.0f});
+  // Lips close to the skin tone with a soft sheen: saturated, glossy lips looked swollen.
+  set(MaterialId::Lips, {0.76f, 0.50f, 0.47f}, {0.5f, 0.35f, 0.10f, 30.0f});
   set(MaterialId::Teeth, {0.94f, 0.92f, 0.86f}, {0.3f, 0.1f, 0.3f, 60.0f});
   set(MaterialId::Tongue, {0.78f, 0.38f, 0.40f}, {0.5f, 0.4f, 0.3f, 40.0f});
   set(MaterialId::Brow, {0.18f, 0.12f, 0.08f}, {0.3f, 0.0f, 0.05f, 10.0f});

@@ -5,6 +5,7 @@
 #include <regex>
 
 #include "gestura/core/error.hpp"
+#include "gestura/render/encoder_thread.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/progress.hpp"
@@ -52,6 +53,11 @@ float parse_seconds(const std::string& text, const std::string& flag) {
   return value;
 }
 
+int parse_msaa(const std::string& text) {
+  if (text == "1" || text == "2" || text == "4") return text[0] - '0';
+  throw Error("bad --msaa '" + text + "' (1, 2 or 4 samples per pixel)");
+}
+
 void validate(const RenderJob& job) {
   if (job.output.empty()) throw Error("no output file (-o OUT.png|.gif|.mp4|.webm)");
   const bool png = ends_with_png(job.output);
@@ -60,6 +66,7 @@ void validate(const RenderJob& job) {
   parse_image_size(std::to_string(job.size.width) + "x" + std::to_string(job.size.height));
   if (job.fps < 1 || job.fps > kMaxFps) throw Error("bad fps " + std::to_string(job.fps));
   if (job.cameras.empty() && !job.orbit) throw Error("no camera");
+  parse_msaa(std::to_string(job.msaa_samples));
   if (!png && video_format_of(job.output) != VideoFormat::Gif && (job.size.width % 2 || job.size.height % 2))
     throw Error("cannot write " + job.output + ": MP4/WebM need an even width and height");
 }
@@ -97,7 +104,7 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) 
   else video.emplace(job.output, job.size.width, job.size.height, job.fps);
 
   HeadlessGlContext context;
-  Renderer renderer(job.look);
+  Renderer renderer(job.look, job.msaa_samples);
   renderer.upload(subject.mesh);
   RenderReport report;
   report.renderer = context.description();
@@ -135,14 +142,15 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) 
   }
   const int frames = frame_count(duration, job.fps);
   Progress progress("rendering " + job.output, frames);
+  EncoderThread encoder(*video);  // frame i is encoded while frame i+1 is drawn
   for (int i = 0; i < frames; ++i) {
     animator.pose_at(static_cast<float>(i) / static_cast<float>(job.fps));
     renderer.render(views, animator.skinning(), animator.morph_weights(), job.skinning);
     renderer.read_pixels(frame);
-    video->write(frame);
+    encoder.submit(frame);
     progress.update(i + 1);
   }
-  video->finish();
+  encoder.finish();
   report.frames = frames;
   return report;
 }

@@ -40,8 +40,12 @@ struct RenderJob {
   bool sheet = false;                          // PNG only: 4×4 contact sheet over the clip
   float still_time = 0.0f;                     // the time a single PNG shows
   float rest_seconds = 2.0f;                   // animation length when the subject has no clip
-  SkinningPath skinning = SkinningPath::Gpu;
+  SkinningDevice skinning = SkinningDevice::Gpu;
+  int msaa_samples = 4;                        // 1, 2 or 4: on llvmpipe 4 costs no more CPU than 1 (bench R1)
 };
+
+// 1, 2 or 4; throws gestura::Error quoting the text otherwise.
+int parse_msaa(const std::string& text);
 
 // Throws gestura::Error for a bad combination (sheet with a video, unknown extension, sizes out of
 // range, odd sizes for MP4/WebM) before anything is rendered.

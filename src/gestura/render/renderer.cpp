@@ -8,7 +8,8 @@
 #include <string>
 
 #include "gestura/core/error.hpp"
-#include "gestura/render/cpu_skinning.hpp"
+#include "gestura/body/morph.hpp"
+#include "gestura/body/skinning.hpp"
 
 namespace gestura {
 namespace {
@@ -383,7 +384,7 @@ void Renderer::resize(int width, int height) {
 }
 
 void Renderer::render(std::span<const View> views, std::span<const mat4> skinning, std::span<const float> morph_weights,
-                      SkinningPath path) {
+                      SkinningDevice device) {
   if (width_ == 0) throw Error("renderer: resize() before render()");
   if (gl_->index_count == 0) throw Error("renderer: upload() a mesh before render()");
   if (skinning.size() < joint_limit_)
@@ -395,7 +396,7 @@ void Renderer::render(std::span<const View> views, std::span<const mat4> skinnin
   Gl& g = *gl_;
   glUseProgram(g.program);
   const bool morphs_active = std::any_of(morph_weights.begin(), morph_weights.end(), [](float w) { return w != 0.0f; });
-  if (path == SkinningPath::Gpu) {
+  if (device == SkinningDevice::Gpu) {
     if (joint_limit_ > max_gpu_joints_)
       throw Error("renderer: the mesh uses " + std::to_string(joint_limit_) + " joints; GPU skinning here holds " +
                   std::to_string(max_gpu_joints_) + " (use the CPU skinning path)");
@@ -416,8 +417,16 @@ void Renderer::render(std::span<const View> views, std::span<const mat4> skinnin
     glUniform1i(g.u_morphs_active, morphs_active ? 1 : 0);
     glBindVertexArray(g.gpu_vao);
   } else {
-    cpu_skin_for_render(mesh_, skinning, morph_weights, scratch_positions_, scratch_normals_, skinned_positions_,
-                        skinned_normals_);
+    morph_scratch_.assign(mesh_.morphs.size(), 0.0f);
+    std::copy(morph_weights.begin(), morph_weights.end(), morph_scratch_.begin());
+    std::span<const vec3> rest_positions = mesh_.positions, rest_normals = mesh_.normals;
+    if (morphs_active) {
+      apply_morphs(mesh_.positions, mesh_.morphs, morph_scratch_, scratch_positions_);
+      apply_morph_normals(mesh_.normals, mesh_.morphs, morph_scratch_, scratch_normals_);
+      rest_positions = scratch_positions_, rest_normals = scratch_normals_;
+    }
+    skin_positions_normals(skinning, mesh_.joints, mesh_.weights, rest_positions, rest_normals, skinned_positions_,
+                           skinned_normals_);
     const auto bytes = static_cast<GLsizeiptr>(skinned_positions_.size() * sizeof(vec3));
     glBindBuffer(GL_ARRAY_BUFFER, g.skinned_positions);
     glBufferData(GL_ARRAY_BUFFER, bytes, skinned_positions_.data(), GL_STREAM_DRAW);

@@ -8,7 +8,8 @@
 //   Gpu — bind-pose vertices stay on the GPU; the vertex shader blends four joint matrices
 //         (from a uniform block, up to max_gpu_joints()) after adding the sparse morph deltas (a texture buffer
 //         of (delta, morph index) entries per vertex, weights in another texture buffer).
-//   Cpu — the vertices are skinned on the CPU and streamed to the GPU every frame (comparison).
+//   Cpu — morphs and linear blend skinning on the CPU (body/morph, body/skinning), the result
+//         streamed to the GPU every frame (comparison and fallback beyond max_gpu_joints()).
 // Frames go to a 4× MSAA offscreen target, resolved to a texture; read_pixels() reads it back,
 // present() blits it into the window.
 #include <cstdint>
@@ -22,7 +23,8 @@
 
 namespace gestura {
 
-enum class SkinningPath : std::uint8_t { Gpu, Cpu };
+// Where the vertices are skinned (body/skinning.hpp's SkinningPath picks the CPU kernel).
+enum class SkinningDevice : std::uint8_t { Gpu, Cpu };
 
 // A pixel rectangle in GL's convention (origin bottom-left), half-open [x0, x1) × [y0, y1).
 struct PixelRect {
@@ -61,7 +63,7 @@ class Renderer {
   // Draws all views into the offscreen target and resolves it. Throws gestura::Error when a
   // vertex refers to a joint beyond skinning.size() or more weights than morphs are given.
   void render(std::span<const View> views, std::span<const mat4> skinning, std::span<const float> morph_weights,
-              SkinningPath path = SkinningPath::Gpu);
+              SkinningDevice device = SkinningDevice::Gpu);
   // Waits for the GPU and copies the resolved frame into `out` (resized), rows top to bottom.
   void read_pixels(Image& out);
   // Reads what present() put into the window's back buffer (a screenshot of the window itself).
@@ -90,6 +92,7 @@ class Renderer {
   vec3 resolved_background_{-1.0f};  // the colour the resolved image's untouched area holds
   PixelRect resolved_rect_;          // where the last frame drew in the resolved image  // 1 + the largest joint index any vertex uses
   std::vector<vec3> scratch_positions_, scratch_normals_, skinned_positions_, skinned_normals_;
+  std::vector<float> morph_scratch_;  // the caller's weights padded to one per morph target
 };
 
 }  // namespace gestura

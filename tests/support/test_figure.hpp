@@ -3,7 +3,8 @@
 // small H-Anim-named skeleton (spine, head, arms, five two-segment fingers per hand, legs), a dark
 // long-sleeved shirt, skin-coloured hands and head, eyes with iris and pupil, a hair cap, and one
 // morph target ("test_jaw_open"). Its clip waves the right hand in the signing space for 2 s.
-// Used by the render tests, the benchmark and, until the avatar is wired, the render/view CLI.
+// Test code only: small and quick to build, for the renderer's output and camera tests (the CLI,
+// the benchmark and the avatar tests use the real avatar).
 #include "gestura/render/subject.hpp"
 
 namespace gestura {

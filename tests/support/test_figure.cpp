@@ -1,4 +1,4 @@
-#include "gestura/render/test_figure.hpp"
+#include "support/test_figure.hpp"
 
 #include <algorithm>
 #include <cmath>
