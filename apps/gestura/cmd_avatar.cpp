@@ -7,6 +7,7 @@
 #include "gestura/body/avatar.hpp"
 #include "gestura/body/face_morphs.hpp"
 #include "gestura/core/error.hpp"
+#include "gestura/body/body_sites.hpp"
 #include "gestura/io/gltf_export.hpp"
 
 namespace {
@@ -16,6 +17,7 @@ using gestura::Error;
 const char* kUsage =
     "usage: gestura avatar export -o FILE.glb [PARAMS]\n"
     "       gestura avatar info [PARAMS]\n"
+    "       gestura avatar sites [-o FILE.json] [PARAMS]   (sign locations: name → position in metres)\n"
     "\n"
     "Builds the default avatar from parameters (no asset files) and writes it as binary glTF 2.0\n"
     "(skin, joints, inverse bind matrices, named morph targets, materials), or prints its joints,\n"
@@ -89,7 +91,7 @@ void print_info(const gestura::Avatar& a, gestura::SkinWeightMethod weights) {
 }
 
 int run(const std::vector<std::string>& args) {
-  if (args.empty()) throw Error("avatar: missing subcommand (export or info)");
+  if (args.empty()) throw Error("avatar: missing subcommand (export, info or sites)");
   if (args[0] == "export") {
     const Request r = parse(args, 1);
     if (r.output.empty()) throw Error("avatar export: missing -o FILE.glb");
@@ -105,7 +107,22 @@ int run(const std::vector<std::string>& args) {
     print_info(gestura::build_avatar(r.params, r.options), r.options.weights);
     return 0;
   }
-  throw Error("avatar: unknown subcommand '" + args[0] + "' (export or info)");
+  if (args[0] == "sites") {
+    const Request r = parse(args, 1);
+    const gestura::Avatar a = gestura::build_avatar(r.params, r.options);
+    const std::string json = gestura::body_sites_json(a.skeleton, gestura::find_body_sites(a.skeleton, a.mesh));
+    if (r.output.empty()) {
+      std::fputs(json.c_str(), stdout);
+    } else {
+      std::FILE* f = std::fopen(r.output.c_str(), "wb");
+      if (!f) throw Error(r.output + ": cannot write here");
+      const bool ok = std::fwrite(json.data(), 1, json.size(), f) == json.size();
+      if (std::fclose(f) != 0 || !ok) throw Error(r.output + ": write failed");
+      std::printf("wrote %s\n", r.output.c_str());
+    }
+    return 0;
+  }
+  throw Error("avatar: unknown subcommand '" + args[0] + "' (export, info or sites)");
 }
 
 gestura::cli::Registration reg{{"avatar", "build the default avatar; export it as glTF or print its structure", kUsage, run}};

@@ -1,5 +1,6 @@
 #include "gestura/body/body_sites.hpp"
 
+#include <cstdio>
 #include <vector>
 
 namespace gestura {
@@ -157,6 +158,22 @@ vec3 site_position(const BodySite& site, std::span<const mat4> model) {
 
 vec3 site_normal(const BodySite& site, std::span<const mat4> model) {
   return glm::normalize(vec3(model[static_cast<std::size_t>(site.joint)] * vec4(site.local_normal, 0.0f)));
+}
+
+std::string body_sites_json(const Skeleton& skeleton, std::span<const BodySite> sites) {
+  std::vector<mat4> model(skeleton.size());
+  local_to_model(skeleton, rest_pose(skeleton), model);
+  std::string out = "{\"sites\": {";
+  char buf[256];
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    const vec3 p = site_position(sites[i], model), n = site_normal(sites[i], model);
+    std::snprintf(buf, sizeof buf, "%s\n  \"%s\": {\"position\": [%.4f, %.4f, %.4f], \"normal\": [%.3f, %.3f, %.3f], \"joint\": ",
+                  i ? "," : "", sites[i].name.c_str(), p.x, p.y, p.z, n.x, n.y, n.z);
+    out += buf;
+    out += "\"" + skeleton.names[static_cast<std::size_t>(sites[i].joint)] + "\"}";
+  }
+  out += "\n}}\n";
+  return out;
 }
 
 }  // namespace gestura

@@ -34,6 +34,10 @@ const BodySite* find_site(std::span<const BodySite> sites, const std::string& na
 vec3 site_position(const BodySite& site, std::span<const mat4> model);
 vec3 site_normal(const BodySite& site, std::span<const mat4> model);
 
+// The sites at bind pose as JSON: {"sites": {"forehead": {"position": [x, y, z], "normal": [...],
+// "joint": "skullbase"}, …}} in metres, +Y up, the avatar facing +Z.
+std::string body_sites_json(const Skeleton& skeleton, std::span<const BodySite> sites);
+
 // First intersection of the ray origin + t·direction (t > 0) with the mesh; nullopt when it misses.
 struct RayHit {
   float distance;
