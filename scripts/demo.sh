@@ -4,4 +4,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/bin/gestura
 out=out; mkdir -p "$out"
-"$bin" --help
+sentence="Hello! My name is Anna. How are you?"
+echo "== gestura say \"$sentence\""
+"$bin" say "$sentence" -o "$out/hello.mp4" --size 640x480
+"$bin" say "$sentence" -o "$out/hello.png" --size 960x720 >/dev/null
+echo "video:         $(realpath "$out/hello.mp4")"
+echo "contact sheet: $(realpath "$out/hello.png")"

@@ -26,6 +26,9 @@ namespace {
 
 // Prosody of running signing (docs/say.md has the reasoning and the measured rates).
 // Lexicon entries are citation forms with 0.1 s / 0.2 s holds; in a sentence the holds shrink.
+// Citation forms last about twice as long as the same signs in running signing (movement_timing.hpp:
+// 0.5–1 s citation vs ~0.4–0.5 s running), so lexical movements and transitions run faster.
+constexpr float kRunningTempo = 2.6f;
 constexpr float kInitialHold = 0.04f;
 constexpr float kFinalHold = 0.08f;
 constexpr float kPhraseFinalLengthening = 1.75f;  // the final hold of a clause's last sign
@@ -52,7 +55,7 @@ class UtteranceBuilder {
   // Plans and appends one sign; returns its articulation interval [first posture, end of last hold].
   std::array<float, 2> add_sign(const sign::HamSign& sign, float final_hold) {
     PlanOptions options;
-    options.speed = speed_;
+    options.speed = std::min(speed_ * kRunningTempo, 4.0f);
     options.from_rest = false;
     options.to_rest = false;
     options.initial_hold = kInitialHold;
@@ -63,24 +66,35 @@ class UtteranceBuilder {
     for (int h = 0; h < 2; ++h) {
       const HandTimeline& t = *timeline[h];
       first[h] = t.segments.empty() ? rest_hand_state(rig_, hand_of(h)) : sample_hand(t, plan.sign_start);
-      // A hand the sign does not use relaxes to the side instead of holding the last sign's posture.
-      if (!first[h].active) first[h] = rest_hand_state(rig_, hand_of(h));
     }
-    transition_to(first);
-    const float start = now_;
-    const float shift = now_ - plan.sign_start;
-    float end = now_;
+    // The hands the sign uses set the transition time; a hand it does not use drifts to rest over
+    // as long as it needs (up to the whole sign) instead of snapping there.
+    const float t0 = now_;
+    float d = 0.0f;
+    for (int h = 0; h < 2; ++h)
+      if (first[h].active) d = std::max(d, move_time(state_[h], first[h]));
+    if (d == 0.0f) d = move_time(state_[0], state_[0]);
+    const float start = t0 + d;
+    const float shift = start - plan.sign_start;
+    float end = start;
     for (int h = 0; h < 2; ++h) {
+      if (!first[h].active) continue;
+      push(h, state_[h], first[h], t0, start);
       for (HandSegment seg : timeline[h]->segments) {
         if (seg.end <= plan.sign_start) continue;  // the planner's instant entry into the first posture
         seg.start = std::max(seg.start, plan.sign_start) + shift;
         seg.end += shift;
-        if (!seg.from.active && !seg.to.active) seg.from = seg.to = rest_hand_state(rig_, hand_of(h));
         out_[h].segments.push_back(std::move(seg));
       }
-      if (out_[h].segments.empty()) continue;
       state_[h] = out_[h].final_state();
       end = std::max(end, out_[h].end_time());
+    }
+    for (int h = 0; h < 2; ++h) {
+      if (first[h].active) continue;
+      const HandState rest = rest_hand_state(rig_, hand_of(h));
+      const float arrival = std::min(std::max(start, t0 + move_time(state_[h], rest)), end);
+      push(h, state_[h], rest, t0, arrival);
+      state_[h] = rest;
     }
     // Both hands continue from the same clock: the shorter timeline holds.
     for (int h = 0; h < 2; ++h)
@@ -148,12 +162,14 @@ class UtteranceBuilder {
     out_[h].segments.push_back(std::move(seg));
   }
 
+  float move_time(const HandState& from, const HandState& to) const {
+    return transition_duration(glm::length(to.position - from.position)) / (speed_ * kRunningTempo);
+  }
+
   // Both hands move to their targets together, taking as long as the longer path needs.
   void transition_to(const std::array<HandState, 2>& target) {
     float d = 0.0f;
-    for (int h = 0; h < 2; ++h)
-      d = std::max(d, transition_duration(glm::length(target[h].position - state_[h].position)));
-    d /= speed_;
+    for (int h = 0; h < 2; ++h) d = std::max(d, move_time(state_[h], target[h]));
     for (int h = 0; h < 2; ++h) push(h, state_[h], target[h], now_, now_ + d);
     now_ += d;
     state_ = target;
