@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
-# The main job of `make run`, on the embedded defaults (procedural avatar, built-in lexicon):
-# sign ASL MOTHER from HamNoSys to a video and a contact sheet, and say where they are.
+# The main job of `make run`, on the embedded defaults (procedural avatar, built-in ASL lexicon):
+# sign an English sentence to a video and a contact sheet, and say where they are.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/bin/gestura
 out=out
 mkdir -p "$out"
-mother="hamfinger2345,hamthumboutmod,hamextfingeru,hampalml,hamchin,hamtouch,hammoveo,hamsmallmod,hamrepeatfromstart"
-"$bin" sign --names "$mother" -o "$out/mother.mp4" --camera front,side --size 1280x720
-"$bin" sign --names "$mother" -o "$out/mother-sheet.png" --sheet --size 1280x720
+sentence="Hello! My name is Anna. How are you?"
+echo "== gestura say \"$sentence\""
+"$bin" say "$sentence" -o "$out/hello.mp4" --size 1280x720
+"$bin" say "$sentence" -o "$out/hello.png" --size 1280x720 >/dev/null
 echo
-echo "gestura: the avatar signed ASL MOTHER:"
-echo "  video:         $out/mother.mp4"
-echo "  contact sheet: $out/mother-sheet.png"
+echo "gestura signed \"$sentence\" in ASL:"
+echo "  video:         $(realpath "$out/hello.mp4")"
+echo "  contact sheet: $(realpath "$out/hello.png")"

@@ -1,0 +1,64 @@
+// gestura say without rendering: a 15-word English sentence → the whole performance (translation,
+// lexicon, sign planning, joining, inverse kinematics every frame, face channels), and its parts.
+#include <benchmark/benchmark.h>
+
+#include <optional>
+
+#include "gestura/lexicon/lexicon_files.hpp"
+#include "gestura/sentence/signer.hpp"
+#include "gestura/text/lexicon_inventory.hpp"
+#include "gestura/text/translator.hpp"
+
+namespace {
+
+// 15 words, all with built-in signs except the name (fingerspelled).
+constexpr const char* kSentence = "Yesterday my sister and I went to the big store and bought a new book for Anna.";
+
+struct World {
+  gestura::Avatar avatar = gestura::build_avatar();
+  gestura::Lexicon builtin = gestura::load_builtin_lexicon(gestura::builtin_lexicon_files());
+  gestura::LayeredLexicon layers;
+  std::optional<gestura::Signer> signer;
+  World() {
+    layers.push_layer(builtin);
+    signer.emplace(avatar, layers);
+  }
+};
+
+World& world() {
+  static World w;
+  return w;
+}
+
+void BM_SaySentence(benchmark::State& state) {
+  gestura::SayOptions options;
+  options.mouthing = state.range(0) != 0;
+  double seconds = 0.0;
+  for (auto _ : state) {
+    gestura::SentencePerformance p = world().signer->say(kSentence, options);
+    seconds = p.duration;
+    benchmark::DoNotOptimize(p.clip.rotations.data());
+  }
+  state.counters["performance_s"] = seconds;
+}
+BENCHMARK(BM_SaySentence)->Arg(1)->Arg(0)->ArgNames({"mouthing"})->Unit(benchmark::kMillisecond);
+
+// The translation step alone, with a fresh (uncached) inventory each time like say() uses.
+void BM_SayTranslate(benchmark::State& state) {
+  for (auto _ : state) {
+    gestura::LexiconInventory inventory(world().layers, "ase");
+    benchmark::DoNotOptimize(gestura::translate_to_gloss(kSentence, inventory).glosses.data());
+  }
+}
+BENCHMARK(BM_SayTranslate)->Unit(benchmark::kMicrosecond);
+
+// Looking up a gloss in the built-in lexicon (what say() does once per sign).
+void BM_BuiltinLexiconFind(benchmark::State& state) {
+  const char* glosses[] = {"MOTHER", "STORE", "BUY", "BOOK", "NEW", "GO", "YESTERDAY", "SISTER"};
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(world().layers.find(glosses[i++ % 8], "ase"));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_BuiltinLexiconFind);
+
+}  // namespace

@@ -1,0 +1,173 @@
+// gestura say: text → a joined, timed signing performance with face channels (sentence/signer.hpp).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "gestura/anim/track.hpp"
+#include "gestura/core/error.hpp"
+#include "gestura/face/face_channels.hpp"
+#include "gestura/lexicon/lexicon_files.hpp"
+#include "gestura/render/subject.hpp"
+#include "gestura/sentence/signer.hpp"
+
+namespace gestura {
+namespace {
+
+// One avatar, lexicon and rig for the whole suite (building them is the slow part).
+struct World {
+  Avatar avatar = build_avatar();
+  Lexicon builtin = load_builtin_lexicon(builtin_lexicon_files());
+  LayeredLexicon layers;
+  std::optional<Signer> signer;
+  World() {
+    layers.push_layer(builtin);
+    signer.emplace(avatar, layers);
+  }
+};
+
+World& world() {
+  static World w;
+  return w;
+}
+
+SentencePerformance say(std::string_view text, const SayOptions& options = {}) { return world().signer->say(text, options); }
+
+std::vector<const PerformedGloss*> signed_glosses(const SentencePerformance& p) {
+  std::vector<const PerformedGloss*> out;
+  for (const PerformedGloss& g : p.glosses)
+    if (g.gloss != "PAUSE") out.push_back(&g);
+  return out;
+}
+
+float channel_max(const Clip& clip, std::string_view name, float t0, float t1) {
+  const int c = clip.find_channel(std::string(name));
+  if (c < 0) return 0.0f;
+  float m = 0.0f;
+  for (float t = t0; t <= t1; t += 0.02f) m = std::max(m, sample_track(clip.channels[static_cast<std::size_t>(c)], t));
+  return m;
+}
+
+// Largest head yaw (degrees) the skullbase track reaches.
+float max_skull_yaw_degrees(const SentencePerformance& p) {
+  const int j = world().avatar.skeleton.find("skullbase");
+  const QuatTrack& track = p.clip.rotations[static_cast<std::size_t>(j)];
+  float m = 0.0f;
+  for (const quat& q : track.values) m = std::max(m, glm::degrees(2.0f * std::asin(std::min(1.0f, std::abs(q.y)))));
+  return m;
+}
+
+TEST(SaySentence, FiveSignSentenceTakesAsLongAsFluentSigning) {
+  // Reference: running ASL at ~2–2.5 signs/s (Bellugi & Fischer 1972, from memory) → 5 signs in
+  // 2.0–2.5 s; we accept ±20 %: 1.6–3.0 s from the first sign's posture to the last sign's end.
+  const SentencePerformance p = say("Yesterday my mother went to the store.");
+  const auto g = signed_glosses(p);
+  ASSERT_EQ(g.size(), 5u);
+  const float span = g.back()->end - g.front()->start;
+  EXPECT_GT(span, 1.6f);
+  EXPECT_LT(span, 3.0f);
+  for (std::size_t i = 1; i < g.size(); ++i) EXPECT_GE(g[i]->start, g[i - 1]->end) << g[i]->gloss;
+  EXPECT_GT(p.duration, g.back()->end);  // the return to rest comes after the last sign
+}
+
+TEST(SaySentence, SpeedScalesTheDuration) {
+  const float normal = say("My brother bought a new car").duration;
+  SayOptions slow;
+  slow.speed = 0.5f;
+  EXPECT_GT(say("My brother bought a new car", slow).duration, 1.7f * normal);
+}
+
+TEST(SaySentence, HandsDoNotReturnToRestBetweenSigns) {
+  const SentencePerformance p = say("My brother bought a new car");
+  const auto g = signed_glosses(p);
+  ASSERT_GE(g.size(), 4u);
+  const Avatar& a = world().avatar;
+  const RenderSubject subject{a.skeleton, a.mesh, p.clip};
+  Animator animator(subject);
+  const auto wrist = static_cast<std::size_t>(a.skeleton.find("r_wrist"));
+  const auto hip = static_cast<std::size_t>(a.skeleton.find("r_hip"));
+  for (float t = g.front()->start; t <= g.back()->end; t += 1.0f / 30.0f) {
+    animator.pose_at(t);
+    EXPECT_GT(animator.model()[wrist][3].y, animator.model()[hip][3].y + 0.05f) << "at " << t << " s";
+  }
+  animator.pose_at(p.duration);  // after the utterance the hand hangs at the side again
+  EXPECT_LT(animator.model()[wrist][3].y, animator.model()[hip][3].y);
+}
+
+TEST(SaySentence, YesNoQuestionRaisesTheBrows) {
+  const SentencePerformance q = say("Do you like coffee?");
+  const SentencePerformance s = say("I like coffee.");
+  const auto gq = signed_glosses(q), gs = signed_glosses(s);
+  EXPECT_GT(channel_max(q.clip, face::kBrowInnerUpL, gq.front()->start, gq.back()->end), 0.5f);
+  EXPECT_LT(channel_max(s.clip, face::kBrowInnerUpL, gs.front()->start, gs.back()->end), 0.2f);
+}
+
+TEST(SaySentence, NegationShakesTheHead) {
+  EXPECT_GT(max_skull_yaw_degrees(say("I don't like coffee.")), 3.0f);
+  EXPECT_LT(max_skull_yaw_degrees(say("I like coffee.")), 1.0f);
+}
+
+TEST(SaySentence, MouthingDuringSignsAndNotWhenDisabled) {
+  const SentencePerformance p = say("I like coffee.");
+  const auto g = signed_glosses(p);
+  const PerformedGloss* coffee = g.back();
+  ASSERT_EQ(coffee->gloss, "COFFEE");
+  float visemes = 0.0f;
+  for (std::string_view v : face::kVisemes)
+    if (v != face::kSil) visemes = std::max(visemes, channel_max(p.clip, v, coffee->start, coffee->end));
+  EXPECT_GT(visemes, 0.2f);
+  EXPECT_GT(channel_max(p.clip, face::kJawOpen, coffee->start, coffee->end), 0.05f);
+  SayOptions quiet;
+  quiet.mouthing = false;
+  EXPECT_EQ(say("I like coffee.", quiet).clip.find_channel(std::string(face::kJawOpen)), -1);
+}
+
+TEST(SaySentence, UnknownWordIsFingerspelledLetterByLetter) {
+  const SentencePerformance p = say("zyxq");
+  const auto g = signed_glosses(p);
+  ASSERT_EQ(g.size(), 1u);
+  EXPECT_EQ(g[0]->gloss, "FS-ZYXQ");
+  EXPECT_GT(g[0]->end - g[0]->start, 4 * 0.15f);  // four letters at a careful ~4 letters/s
+  EXPECT_GT(channel_max(p.clip, face::kGazeHands, g[0]->start, g[0]->end), 0.5f);
+}
+
+TEST(SaySentence, NumbersOutsideTheLexiconAreComposed) {
+  const SentencePerformance p = say("47");
+  const auto g = signed_glosses(p);
+  ASSERT_EQ(g.size(), 1u);
+  EXPECT_EQ(g[0]->gloss, "47");
+  // 47 is not a lexicon sign: it is 4 then 7, so it lasts clearly longer than the single sign 4.
+  const auto four = signed_glosses(say("4"));
+  ASSERT_EQ(four.size(), 1u);
+  EXPECT_GT(g[0]->end - g[0]->start, four[0]->end - four[0]->start + 0.08f);
+}
+
+void expect_error(std::string_view text, const SayOptions& options, const std::string& needle) {
+  try {
+    say(text, options);
+    ADD_FAILURE() << "no error for " << needle;
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
+}
+
+TEST(SayBadInput, ClearErrors) {
+  expect_error("", {}, "empty");
+  expect_error("  \n\t ", {}, "empty");
+  expect_error(std::string(1 << 20, 'a'), {}, "too long");
+  std::string many;
+  for (int i = 0; i < 400; ++i) many += "coffee ";
+  expect_error(many, {}, "glosses");
+  expect_error(std::string("\xff\xfe\x01\x80 junk", 9), {}, "UTF-8");
+  SayOptions bsl;
+  bsl.lang = "xyz";
+  expect_error("hello", bsl, "'xyz'");
+  SayOptions fast;
+  fast.speed = 9.0f;
+  expect_error("hello", fast, "speed");
+  expect_error("?!.", {}, "nothing to sign");
+}
+
+}  // namespace
+}  // namespace gestura
