@@ -16,6 +16,8 @@
 
 #include "gestura/anim/clip.hpp"
 #include "gestura/body/avatar.hpp"
+#include "gestura/lexicon/layered_lexicon.hpp"
+#include "gestura/sign/signing_rig.hpp"
 
 namespace gestura {
 
@@ -40,6 +42,28 @@ struct SentencePerformance {
   std::vector<PerformedGloss> glosses;
   float duration = 0.0f;                // seconds, including the return to rest
   std::vector<std::string> notes;       // e.g. "'zyx' fingerspelled: not in the lexicon"
+};
+
+// Limits on one utterance (docs/say.md): longer text is refused with an error, never truncated
+// silently, so a caller sees exactly what will be signed.
+inline constexpr std::size_t kMaxSayBytes = 16 * 1024;
+inline constexpr std::size_t kMaxSayGlosses = 300;
+
+class Signer {
+ public:
+  // Contract: `avatar` and `lexicon` outlive the signer (the rig is built once, here).
+  Signer(const Avatar& avatar, LayeredLexicon& lexicon);
+
+  // Throws gestura::Error for empty text, text over kMaxSayBytes or kMaxSayGlosses glosses,
+  // invalid UTF-8, a sign language without a lexicon, and a speed outside 0.25–2.
+  SentencePerformance say(std::string_view text, const SayOptions& options = {}) const;
+
+  const SigningRig& rig() const { return rig_; }
+
+ private:
+  const Avatar* avatar_;
+  LayeredLexicon* lexicon_;
+  SigningRig rig_;
 };
 
 }  // namespace gestura

@@ -1,0 +1,354 @@
+#include "gestura/sentence/signer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <optional>
+
+#include "gestura/core/error.hpp"
+#include "gestura/face/face_channels.hpp"
+#include "gestura/face/mouthing.hpp"
+#include "gestura/face/nonmanual.hpp"
+#include "gestura/face/nonmanual_from_translation.hpp"
+#include "gestura/sign/fingerspelling_asl.hpp"
+#include "gestura/sign/fingerspelling_plan.hpp"
+#include "gestura/sign/hamnosys_parser.hpp"
+#include "gestura/sign/movement_timing.hpp"
+#include "gestura/sign/sign_performer.hpp"
+#include "gestura/sign/sign_planner.hpp"
+#include "gestura/text/lexicon_inventory.hpp"
+#include "gestura/text/translator.hpp"
+
+namespace gestura {
+
+namespace {
+
+// Prosody of running signing (docs/say.md has the reasoning and the measured rates).
+// Lexicon entries are citation forms with 0.1 s / 0.2 s holds; in a sentence the holds shrink.
+constexpr float kInitialHold = 0.04f;
+constexpr float kFinalHold = 0.08f;
+constexpr float kPhraseFinalLengthening = 1.75f;  // the final hold of a clause's last sign
+constexpr float kPhraseFinalHold = 0.25f;         // … and at least this long
+constexpr float kSentencePause = 0.5f;            // between sentences ('.', '!', '?')
+constexpr float kClausePause = 0.25f;             // at a comma or other clause break
+constexpr float kMouthingAmplitude = 0.6f;        // ASL mouthing is reduced
+// Where the dominant hand fingerspells, relative to its shoulder: a little lower, 30 cm in front.
+constexpr vec3 kSpellingOffset{-0.05f, -0.08f, 0.30f};
+
+// Joins per-sign plans into one plan for the utterance: each sign is planned without rest at either
+// end, shifted to the utterance clock, and reached from the previous sign's last state by a
+// minimum-jerk transition (movement epenthesis), never through the rest position.
+class UtteranceBuilder {
+ public:
+  UtteranceBuilder(const SigningRig& rig, float speed) : rig_(rig), speed_(speed) {
+    for (int h = 0; h < 2; ++h) state_[h] = rest_hand_state(rig, hand_of(h));
+    const int shoulder = rig.hand(Hand::Right).shoulder;
+    spelling_origin_ = vec3(rig.bind_model[static_cast<std::size_t>(shoulder)][3]) + kSpellingOffset;
+  }
+
+  float now() const { return now_; }
+
+  // Plans and appends one sign; returns its articulation interval [first posture, end of last hold].
+  std::array<float, 2> add_sign(const sign::HamSign& sign, float final_hold) {
+    PlanOptions options;
+    options.speed = speed_;
+    options.from_rest = false;
+    options.to_rest = false;
+    options.initial_hold = kInitialHold;
+    options.final_hold = final_hold;
+    const SignPlan plan = plan_sign(sign, rig_, options);
+    const std::array<const HandTimeline*, 2> timeline{&plan.right, &plan.left};
+    std::array<HandState, 2> first;
+    for (int h = 0; h < 2; ++h) {
+      const HandTimeline& t = *timeline[h];
+      first[h] = t.segments.empty() ? rest_hand_state(rig_, hand_of(h)) : sample_hand(t, plan.sign_start);
+      // A hand the sign does not use relaxes to the side instead of holding the last sign's posture.
+      if (!first[h].active) first[h] = rest_hand_state(rig_, hand_of(h));
+    }
+    transition_to(first);
+    const float start = now_;
+    const float shift = now_ - plan.sign_start;
+    float end = now_;
+    for (int h = 0; h < 2; ++h) {
+      for (HandSegment seg : timeline[h]->segments) {
+        if (seg.end <= plan.sign_start) continue;  // the planner's instant entry into the first posture
+        seg.start = std::max(seg.start, plan.sign_start) + shift;
+        seg.end += shift;
+        if (!seg.from.active && !seg.to.active) seg.from = seg.to = rest_hand_state(rig_, hand_of(h));
+        out_[h].segments.push_back(std::move(seg));
+      }
+      if (out_[h].segments.empty()) continue;
+      state_[h] = out_[h].final_state();
+      end = std::max(end, out_[h].end_time());
+    }
+    // Both hands continue from the same clock: the shorter timeline holds.
+    for (int h = 0; h < 2; ++h)
+      if (out_[h].end_time() < end) push(h, state_[h], state_[h], out_[h].end_time(), end);
+    now_ = end;
+    return {start, end};
+  }
+
+  // Appends the letters of one word on the dominant hand; the other hand rests.
+  std::array<float, 2> add_spelling(const SpellingPlan& plan) {
+    float start = now_;
+    for (std::size_t i = 0; i < plan.letters.size(); ++i) {
+      const LetterTarget& l = plan.letters[i];
+      const AslLetter* letter = find_asl_letter(l.letter);
+      std::array<HandState, 2> target{letter_state(*letter, l.offset), rest_hand_state(rig_, Hand::Left)};
+      if (i == 0) {
+        transition_to(target);
+        start = now_;
+      } else {
+        const float t1 = now_ + (l.reached - l.start) / speed_;
+        for (int h = 0; h < 2; ++h) push(h, state_[h], target[h], now_, t1);
+        now_ = t1;
+        state_ = target;
+      }
+      hold((l.end - l.reached) / speed_);
+    }
+    return {start, now_};
+  }
+
+  void hold(float seconds) {
+    if (seconds <= 0.0f) return;
+    for (int h = 0; h < 2; ++h) push(h, state_[h], state_[h], now_, now_ + seconds);
+    now_ += seconds;
+  }
+
+  // The return to rest at the end of the utterance; returns the joined plan.
+  SignPlan finish(float sign_start, float sign_end) {
+    transition_to({rest_hand_state(rig_, Hand::Right), rest_hand_state(rig_, Hand::Left)});
+    SignPlan plan;
+    plan.right = std::move(out_[0]);
+    plan.left = std::move(out_[1]);
+    plan.sign_start = sign_start;
+    plan.sign_end = sign_end;
+    return plan;
+  }
+
+ private:
+  static Hand hand_of(int h) { return h == 0 ? Hand::Right : Hand::Left; }
+
+  HandState letter_state(const AslLetter& letter, vec3 offset) const {
+    HandState s;
+    s.position = spelling_origin_ + offset;
+    s.orientation = letter_frame(letter, Hand::Right).rotation;
+    s.shape = asl_handshape(letter.handshape);
+    s.active = true;
+    return s;
+  }
+
+  void push(int h, const HandState& from, const HandState& to, float t0, float t1) {
+    HandSegment seg;
+    seg.start = t0;
+    seg.end = t1;
+    seg.from = from;
+    seg.to = to;
+    out_[h].segments.push_back(std::move(seg));
+  }
+
+  // Both hands move to their targets together, taking as long as the longer path needs.
+  void transition_to(const std::array<HandState, 2>& target) {
+    float d = 0.0f;
+    for (int h = 0; h < 2; ++h)
+      d = std::max(d, transition_duration(glm::length(target[h].position - state_[h].position)));
+    d /= speed_;
+    for (int h = 0; h < 2; ++h) push(h, state_[h], target[h], now_, now_ + d);
+    now_ += d;
+    state_ = target;
+  }
+
+  const SigningRig& rig_;
+  float speed_;
+  vec3 spelling_origin_{0.0f};
+  float now_ = 0.0f;
+  std::array<HandState, 2> state_;
+  std::array<HandTimeline, 2> out_;
+};
+
+std::string letters_only(std::string_view text) {
+  std::string out;
+  for (char c : text)
+    if (find_asl_letter(c)) out.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+  return out;
+}
+
+bool is_blank(std::string_view text) {
+  return std::all_of(text.begin(), text.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
+}
+
+// Drives the jaw joint from the jaw_open channel (face_channels.hpp: x = jaw_open · kJawOpenMaxDegrees).
+void write_jaw(const Skeleton& skeleton, Clip& clip) {
+  const int channel = clip.find_channel(std::string(face::kJawOpen));
+  const int jaw = skeleton.find("temporomandibular");
+  if (channel < 0 || jaw < 0) return;
+  const FloatTrack& open = clip.channels[static_cast<std::size_t>(channel)];
+  QuatTrack& track = clip.rotations[static_cast<std::size_t>(jaw)];
+  track = {};
+  const quat rest = skeleton.rest_rotations[static_cast<std::size_t>(jaw)];
+  for (std::size_t k = 0; k < open.size(); ++k)
+    track.add(open.times[k], rest * glm::angleAxis(glm::radians(open.values[k] * face::kJawOpenMaxDegrees), vec3(1, 0, 0)));
+}
+
+}  // namespace
+
+Signer::Signer(const Avatar& avatar, LayeredLexicon& lexicon)
+    : avatar_(&avatar), lexicon_(&lexicon), rig_(make_signing_rig(avatar)) {}
+
+SentencePerformance Signer::say(std::string_view text, const SayOptions& options) const {
+  if (options.lang != "ase")
+    throw Error("no lexicon for sign language '" + options.lang + "': only 'ase' (American Sign Language) has one");
+  if (!(options.speed >= 0.25f && options.speed <= 2.0f))
+    throw Error("speed " + std::to_string(options.speed) + " is outside 0.25–2");
+  if (!(options.fps >= 1.0f && options.fps <= 240.0f)) throw Error("fps " + std::to_string(options.fps) + " is outside 1–240");
+  if (is_blank(text)) throw Error("nothing to sign: the text is empty");
+  if (text.size() > kMaxSayBytes)
+    throw Error("text too long: " + std::to_string(text.size()) + " bytes, at most " + std::to_string(kMaxSayBytes) +
+                " in one utterance; split it into shorter pieces");
+
+  LexiconInventory inventory(*lexicon_, options.lang);
+  const Translation translation = translate_to_gloss(text, inventory);
+  const std::size_t n = translation.glosses.size();
+  if (n > kMaxSayGlosses)
+    throw Error("text too long: " + std::to_string(n) + " glosses, at most " + std::to_string(kMaxSayGlosses) +
+                " in one utterance; split it into shorter pieces");
+  if (std::none_of(translation.glosses.begin(), translation.glosses.end(),
+                   [](const GlossToken& g) { return g.kind != GlossKind::pause; }))
+    throw Error("nothing to sign in the text: no word has a sign or can be fingerspelled");
+
+  SentencePerformance out;
+  UtteranceBuilder builder(rig_, options.speed);
+  std::vector<face::TimedGloss> timed(n);
+  std::vector<bool> mouthed(n, false);
+  std::vector<bool> sentence_start(n + 1, false);
+  std::vector<bool> question_end(n + 1, false);
+  for (const Sentence& s : translation.sentences) sentence_start[s.first] = true;
+  for (const Marker& m : translation.markers)
+    if (m.kind == MarkerKind::yes_no_question && m.last > m.first) question_end[m.last - 1] = true;
+
+  float first_start = -1.0f, last_end = 0.0f;
+  auto spell = [&](std::string_view word, const std::string& why) -> std::optional<std::array<float, 2>> {
+    const std::string letters = letters_only(word);
+    if (letters.empty()) {
+      out.notes.push_back("'" + std::string(word) + "' skipped: " + why + " and no letter can be fingerspelled");
+      return std::nullopt;
+    }
+    if (!why.empty()) out.notes.push_back("'" + std::string(word) + "' fingerspelled: " + why);
+    return builder.add_spelling(plan_spelling(letters, ManualAlphabet::Asl, SpellingStyle::Careful));
+  };
+  // A sign from the lexicon, or nullopt (with a note) when it has none the synthesizer can perform.
+  auto sign_gloss = [&](const std::string& gloss, float final_hold) -> std::optional<std::array<float, 2>> {
+    const std::optional<SignEntry> entry = lexicon_->find(gloss, options.lang);
+    if (!entry) return std::nullopt;
+    if (entry->notation_kind != NotationKind::hamnosys) {
+      out.notes.push_back(gloss + ": only HamNoSys entries are performed, this one is " +
+                          std::string(to_string(entry->notation_kind)));
+      return std::nullopt;
+    }
+    try {
+      return builder.add_sign(sign::parse_hamnosys_unicode(entry->notation), final_hold);
+    } catch (const Error& e) {
+      out.notes.push_back(gloss + ": its notation cannot be performed (" + e.what() + ")");
+      return std::nullopt;
+    }
+  };
+
+  for (std::size_t i = 0; i < n; ++i) {
+    const GlossToken& g = translation.glosses[i];
+    const std::string source(text.substr(g.begin, g.end - g.begin));
+    const bool phrase_final = i + 1 == n || translation.glosses[i + 1].kind == GlossKind::pause;
+    float final_hold = kFinalHold;
+    if (phrase_final) final_hold = std::max(kFinalHold * kPhraseFinalLengthening, kPhraseFinalHold);
+    if (question_end[i]) final_hold += face::kQuestionHoldSeconds;
+    std::optional<std::array<float, 2>> span;
+    switch (g.kind) {
+      case GlossKind::pause: {
+        const float start = builder.now();
+        builder.hold((i + 1 < n && sentence_start[i + 1] ? kSentencePause : kClausePause) / options.speed);
+        span = std::array<float, 2>{start, builder.now()};
+        break;
+      }
+      case GlossKind::sign:
+        span = sign_gloss(g.gloss, final_hold);
+        if (span) mouthed[i] = true;
+        else span = spell(g.gloss, "no performable sign for " + g.gloss);
+        break;
+      case GlossKind::fingerspell: {
+        std::string word;
+        for (const std::string& l : g.letters) word += l;
+        span = spell(word, "");
+        break;
+      }
+      case GlossKind::number: {
+        // The lexicon's number signs; other numbers digit by digit (docs/asl-lexicon.md composes
+        // 21–99 as tens then units; longer numbers go in pairs).
+        if ((span = sign_gloss(g.gloss, final_hold))) break;
+        std::vector<std::string> pieces;
+        const std::string& d = g.gloss;
+        const bool digits = !d.empty() && std::all_of(d.begin(), d.end(), [](char c) { return c >= '0' && c <= '9'; });
+        if (!digits) {
+          span = spell(d, "");
+          break;
+        }
+        for (std::size_t k = d.size() % 2; k <= d.size(); k += 2)
+          if (k > 0) pieces.push_back(d.substr(k < 2 ? 0 : k - 2, k < 2 ? 1 : 2));
+        std::optional<std::array<float, 2>> whole;
+        for (std::size_t p = 0; p < pieces.size(); ++p) {
+          std::vector<std::string> parts{pieces[p]};
+          if (!lexicon_->find(pieces[p], options.lang)) parts = {pieces[p].substr(0, 1), pieces[p].substr(1)};
+          for (std::size_t q = 0; q < parts.size(); ++q) {
+            if (parts[q].empty()) continue;
+            const bool last = p + 1 == pieces.size() && q + 1 == parts.size();
+            auto part = sign_gloss(parts[q], last ? final_hold : kFinalHold);
+            if (!part) part = spell(parts[q], "");
+            if (!part) continue;
+            if (!whole) whole = part;
+            else (*whole)[1] = (*part)[1];
+          }
+        }
+        span = whole;
+        break;
+      }
+    }
+    if (!span) span = std::array<float, 2>{builder.now(), builder.now()};
+    timed[i] = {(*span)[0], (*span)[1], g.kind};
+    if (g.kind != GlossKind::pause) {
+      if (first_start < 0.0f) first_start = (*span)[0];
+      last_end = (*span)[1];
+    }
+    out.glosses.push_back({g.gloss, source, (*span)[0], (*span)[1]});
+  }
+
+  const SignPlan plan = builder.finish(std::max(first_start, 0.0f), last_end);
+  out.clip = perform_plan(plan, rig_, PerformOptions{options.fps});
+  out.clip.name = "say";
+  const Skeleton& skeleton = avatar_->skeleton;
+
+  std::vector<face::FaceAction> face_actions;
+  if (options.nonmanuals) {
+    const face::NonManualPlan nonmanual = face::plan_from_translation(translation, text, timed);
+    face::NonManualActions actions = face::plan_nonmanual(nonmanual);
+    face_actions = std::move(actions.face);
+    face::write_head_rotations(actions.head, skeleton, out.clip);
+  }
+  if (options.mouthing) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!mouthed[i]) continue;
+      const GlossToken& g = translation.glosses[i];
+      try {
+        face::append_mouthing(text.substr(g.begin, g.end - g.begin), timed[i].start, timed[i].end,
+                              {kMouthingAmplitude}, face_actions);
+      } catch (const Error& e) {
+        out.notes.push_back("no mouthing for '" + out.glosses[i].source + "': " + e.what());
+      }
+    }
+  }
+  if (!face_actions.empty()) face::write_face_channels(face_actions, out.clip);
+  write_jaw(skeleton, out.clip);
+  out.clip.duration = std::max(out.clip.duration, out.clip.end_time());
+  out.duration = out.clip.duration;
+  return out;
+}
+
+}  // namespace gestura
