@@ -117,7 +117,14 @@ int run(const std::vector<std::string>& args) {
     options.speed = speed;
     return signer.say(text, options);
   };
-  const SubtitleTrack track = fit_subtitles(subs.cues, sign, avatar.skeleton, fit);
+  const SubtitleTrack track = [&] {
+    try {
+      return fit_subtitles(subs.cues, sign, avatar.skeleton, fit);
+    } catch (const Error& e) {  // a cue the signer refused: name the file too
+      if (e.where().line > 0 && e.where().file.empty()) throw Error({*input, e.where().line, 0, -1}, e.message());
+      throw;
+    }
+  }();
   const RenderReport report = render_to_file(RenderSubject{avatar.skeleton, avatar.mesh, track.clip}, job);
   print_table(track);
   std::printf("wrote %s (%d frames)\n", std::filesystem::absolute(job.output).c_str(), report.frames);

@@ -173,3 +173,18 @@ TEST(SubtitleTrack, RefusesBadOptions) {
   EXPECT_THROW(fit_subtitles({}, std::ref(signer), s, o), Error);
   EXPECT_EQ(fit_subtitles({}, std::ref(signer), s, {}).clip.duration, 0.0f);
 }
+
+TEST(SubtitleTrack, SignerErrorsNameTheCue) {
+  const Skeleton s = one_arm();
+  FakeSigner signer{&s};
+  const SignFunction refusing = [&](std::string_view text, float speed) {
+    if (text == "bad") throw Error("text refused");
+    return signer(text, speed);
+  };
+  try {
+    fit_subtitles({cue(1, 0.0, 2.0, "a"), cue(7, 3.0, 5.0, "bad")}, refusing, s, {});
+    ADD_FAILURE() << "the refusal was swallowed";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "line 7: cue 7: text refused");
+  }
+}

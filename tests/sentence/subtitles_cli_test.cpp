@@ -83,6 +83,11 @@ TEST_F(SubtitlesCli, MalformedSubtitlesExitOneWithThePlace) {
   const CliRun missing = gestura(path("none.srt") + " -o " + out);
   EXPECT_EQ(missing.status, 1);
   EXPECT_NE(missing.output.find("none.srt"), std::string::npos) << missing.output;
+  std::string words;
+  for (int i = 0; i < 4000; ++i) words += "word ";
+  const CliRun too_long = gestura(file("e.srt", "1\n00:00:01,000 --> 00:00:05,000\n" + words + "\n") + " -o " + out);
+  EXPECT_EQ(too_long.status, 1);
+  EXPECT_NE(too_long.output.find("e.srt:2: cue 1: text too long"), std::string::npos) << too_long.output;
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -73,10 +73,18 @@ SubtitleTrack fit_subtitles(const std::vector<SubtitleCue>& cues, const SignFunc
         next_start = cues[k].start;
         break;
       }
-    const Attempt normal{sign(cue.text, 1.0f), 1.0f, false};
+    // A cue the signer refuses (too long, bad text) is named, so the user can find it in the file.
+    const SignFunction sign_cue = [&](std::string_view text, float speed) {
+      try {
+        return sign(text, speed);
+      } catch (const Error& e) {
+        throw Error(SourceLocation{"", cue.line, 0, -1}, "cue " + std::to_string(cue.index) + ": " + e.what());
+      }
+    };
+    const Attempt normal{sign_cue(cue.text, 1.0f), 1.0f, false};
     Attempt best = normal;
     best.fits = best.performance.duration <= in_time;
-    best = sign_within(cue.text, in_time, std::move(best), sign, options);
+    best = sign_within(cue.text, in_time, std::move(best), sign_cue, options);
     fitted.available = in_time;
     fitted.fit = CueFit::InTime;
     if (!best.fits) {
@@ -86,7 +94,7 @@ SubtitleTrack fit_subtitles(const std::vector<SubtitleCue>& cues, const SignFunc
         // The lowest speed that fits the longer window: search again from normal tempo.
         Attempt relaxed = normal;
         relaxed.fits = relaxed.performance.duration <= spill;
-        relaxed = sign_within(cue.text, spill, std::move(relaxed), sign, options);
+        relaxed = sign_within(cue.text, spill, std::move(relaxed), sign_cue, options);
         if (relaxed.fits || relaxed.performance.duration < best.performance.duration) best = std::move(relaxed);
       }
       fitted.fit = best.performance.duration <= fitted.available ? CueFit::Spilled : CueFit::Overran;

@@ -65,7 +65,8 @@ struct SubtitleTrack {
 };
 
 // Contract: cues sorted by start (parse_* return them so). Throws gestura::Error for options out of
-// range or a performance whose clip does not fit `skeleton`.
+// range, a performance whose clip does not fit `skeleton`, or an Error from `sign` — then prefixed
+// with "line L: cue N:" so the user can find the cue in the file.
 SubtitleTrack fit_subtitles(const std::vector<SubtitleCue>& cues, const SignFunction& sign,
                             const Skeleton& skeleton, const SubtitleFitOptions& options);
 
