@@ -78,6 +78,12 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
       const mat4 base = parent_model_matrix(s, pose, h.arm.joints.front());
       // The first frame may need CCD's large steps; after that the previous frame is a good start and
       // damped least squares alone keeps the arm on one continuous solution (no elbow flips).
+      if (!state.active) {
+        // At rest: the arm hangs exactly in its rest pose (a stretched arm at its limits is a
+        // singular target for the iterative solvers).
+        for (int j : h.arm.joints) pose.rotations[static_cast<std::size_t>(j)] = rig.rest.rotations[static_cast<std::size_t>(j)];
+        continue;
+      }
       IkResult r = solve_combined(s, h.arm, base, target, settings, workspace[side], pose, f == 0 ? 8 : 0);
 
       // Keep the hand out of the body: push the whole hand along the body's outward normal at its
