@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages in scripts/debian-packages.txt that are missing, and the npm tools the
-# tests use (glTF validator). Safe to run again: it only installs what is absent.
+# tests use (glTF validator, three.js). Safe to run again: it only installs what is absent.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/.." && pwd)"
@@ -24,8 +24,11 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" </dev/null
 fi
 
-# npm tools, pinned in tools/package.json, installed into tools/node_modules (ignored by git).
-if [ -f "$root/tools/package.json" ] && [ ! -d "$root/tools/node_modules" ]; then
+# npm tools, pinned in tools/package.json, installed into tools/node_modules (ignored by git);
+# reinstalled when package.json is newer than node_modules, so existing checkouts get added tools.
+if [ -f "$root/tools/package.json" ] &&
+   { [ ! -d "$root/tools/node_modules" ] || [ "$root/tools/package.json" -nt "$root/tools/node_modules" ]; }; then
   echo "gestura setup: installing npm tools (tools/package.json)"
   (cd "$root/tools" && npm install --no-audit --no-fund --loglevel=error </dev/null)
+  touch "$root/tools/node_modules"  # npm leaves its mtime alone when nothing changed
 fi
