@@ -3,7 +3,9 @@
 // rest shows none), `gestura reach -o` writes a video with one frame per motion frame, and an output
 // extension nobody writes is a clear error that leaves no file.
 #include <gtest/gtest.h>
+extern "C" {
 #include <libavformat/avformat.h>
+}
 
 #include <array>
 #include <cstdio>
