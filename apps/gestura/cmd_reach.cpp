@@ -4,12 +4,14 @@
 // profile (Flash & Hogan: s = 10τ³ − 15τ⁴ + 6τ⁵, zero velocity and acceleration at both ends), Euler
 // angles interpolated per joint, so every frame stays inside the joints' limit boxes.
 #include <chrono>
+#include <optional>
 #include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "command.hpp"
+#include "gestura/body/avatar.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/ik/ccd.hpp"
@@ -17,7 +19,7 @@
 #include "gestura/ik/dls.hpp"
 #include "gestura/ik/limb.hpp"
 #include "gestura/ik/reference_arm.hpp"
-#include "gestura/io/bvh.hpp"
+#include "motion_output.hpp"
 
 namespace {
 
@@ -56,7 +58,8 @@ Clip interpolate_motion(const Skeleton& skeleton, const Pose& from, const Pose& 
 }
 
 int run_reach(const std::vector<std::string>& args) {
-  std::string solver = "combined", output, side = "l";
+  std::string solver = "combined", side = "l";
+  cli::MotionOutput out;
   vec3 target(0.0f);
   bool has_target = false;
   int frames = 30;
@@ -64,7 +67,7 @@ int run_reach(const std::vector<std::string>& args) {
     if (args[i] == "--target") target = parse_point(cli::flag_value(args, i)), has_target = true;
     else if (args[i] == "--solver") solver = cli::flag_value(args, i);
     else if (args[i] == "--arm") side = cli::flag_value(args, i);
-    else if (args[i] == "-o") output = cli::flag_value(args, i);
+    else if (cli::parse_motion_output_flag(args, i, out)) continue;
     else if (args[i] == "--frames") {
       const std::string v = cli::flag_value(args, i);
       try {
@@ -80,6 +83,7 @@ int run_reach(const std::vector<std::string>& args) {
   if (solver != "ccd" && solver != "dls" && solver != "combined" && solver != "two-bone")
     throw Error("--solver: expected ccd, dls, combined or two-bone, got '" + solver + "'");
   if (side != "l" && side != "r") throw Error("--arm: expected l or r, got '" + side + "'");
+  if (!out.path.empty()) cli::check_motion_output(out);
 
   const Skeleton skeleton = build_avatar_skeleton();
   const IkChain chain = arm_chain(skeleton, side);
@@ -120,24 +124,26 @@ int run_reach(const std::vector<std::string>& args) {
               residual < 1e-4f      ? ""
               : solver == "two-bone" ? " (two-bone aims the wrist with the ready hand offset; the turned forearm moves the hand)"
                                      : " (out of reach or blocked by joint limits: closest reach)");
-  if (!output.empty()) {
-    const float frame_time = 1.0f / 30.0f;
-    const Clip clip = interpolate_motion(skeleton, ready, pose, frames, frame_time);
-    save_bvh(output, make_bvh(skeleton, clip, frame_time));
-    std::printf("wrote %s: %d frames, ready posture to reach on a minimum-jerk profile\n", output.c_str(), frames + 1);
+  if (!out.path.empty()) {
+    const Clip clip = interpolate_motion(skeleton, ready, pose, frames, 1.0f / static_cast<float>(out.fps));
+    std::optional<Avatar> avatar;  // its skeleton is build_avatar_skeleton()'s, so the clip fits its body
+    if (cli::output_shows_body(out)) avatar = build_avatar();
+    cli::write_motion(out, skeleton, clip, avatar ? &avatar->mesh : nullptr, clip.duration);
+    std::printf("wrote %s: %d frames, ready posture to reach on a minimum-jerk profile\n", out.path.c_str(), frames + 1);
   }
   return 0;
 }
 
 const cli::Registration reg{{"reach", "the avatar reaches for a point with one arm (IK: ccd, dls, combined or two-bone)",
                              "usage: gestura reach --target x,y,z [--arm l|r] [--solver ccd|dls|combined|two-bone]\n"
-                             "                     [--frames N] [-o out.bvh]\n"
+                             "                     [--frames N] [-o OUT [--fps N] [--size WxH] [--camera LIST] [--sheet]]\n"
                              "  The default avatar (metres, +Y up, facing +Z, its left is +X) puts the middle knuckle\n"
                              "  of its left (default) or right hand on the target: one IK solve (default: combined)\n"
                              "  from the ready posture, within the joints' limits (two-bone: shoulder\n"
                              "  and elbow only, the hand kept as in the ready posture, so it lands near, not on, the\n"
-                             "  target). -o writes N+1 frames at 30 fps\n"
-                             "  (default N = 30) moving from the ready posture to the reach on a minimum-jerk profile.",
+                             "  target). -o writes N+1 frames at --fps (default N = 30, 30 fps) moving from the ready\n"
+                             "  posture to the reach on a minimum-jerk profile; a single .png shows the reach.\n" +
+                                 std::string(cli::kMotionOutputUsage),
                              run_reach}};
 
 }  // namespace

@@ -2,6 +2,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -19,10 +20,12 @@
 namespace gestura::cli {
 namespace {
 
-constexpr const char* kUsage = R"(usage: gestura view [CLIP.bvh | --rest | --test-motion] [options]
+constexpr const char* kUsage = R"(usage: gestura view [CLIP.bvh | --rest | --test-motion | SIGN] [options]
+       SIGN: --hamnosys TEXT | --names SYMBOLS | --sigml FILE [--gloss NAME]
 
-Shows the default avatar at rest (the default), doing the test wave, or playing CLIP.bvh (a motion
-on the avatar's skeleton). Opens a window (needs a display; under no display use
+Shows the default avatar at rest (the default), doing the test wave, playing CLIP.bvh (a motion
+on the avatar's skeleton), or performing a sign written in HamNoSys (Unicode or comma-separated
+symbol names, as in gestura sign) or the first (or --gloss NAME) sign of a SiGML file. Opens a window (needs a display; under no display use
 xvfb-run -a gestura view ...).
 
   --camera PRESET        start camera: front, side, three-quarter, top, side-section  [front]
@@ -30,6 +33,7 @@ xvfb-run -a gestura view ...).
   --background #rrggbb   background colour
   --screenshot PATH.png  save the window after --frames frames and quit (for scripts, Xvfb)
   --frames N             frames before the screenshot                       [30]
+  --at SECONDS           start paused at this time of the motion (for screenshots)
   --height M, --build X, --sex S   the avatar, as in gestura avatar export
 
 keys:  space play/pause   , . step one frame back/forward   1 2 3 speed 0.25x 0.5x 1x
@@ -92,11 +96,14 @@ void on_scroll(GLFWwindow* window, double, double dy) { viewer_of(window).contro
 int run(const std::vector<std::string>& args) {
   Motion motion = Motion::Rest;
   AvatarParams avatar;
+  SignSource sign;
+  bool motion_given = false;
   std::string clip_path, screenshot;
   ImageSize size{1280, 720};
   CameraPreset start = CameraPreset::Front;
   Look look;
   int screenshot_frames = 30;
+  std::optional<float> start_at;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--camera") start = parse_camera_preset(flag_value(args, i));
@@ -108,13 +115,19 @@ int run(const std::vector<std::string>& args) {
       const auto [end, ec] = std::from_chars(n.data(), n.data() + n.size(), screenshot_frames);
       if (ec != std::errc() || end != n.data() + n.size() || screenshot_frames < 1 || screenshot_frames > 100000)
         throw Error("bad --frames '" + n + "' (a whole number 1..100000)");
-    } else if (a == "--rest") motion = Motion::Rest;
-    else if (a == "--test-motion") motion = Motion::TestMotion;
+    } else if (a == "--at") start_at = parse_seconds(flag_value(args, i), a);
+    else if (a == "--rest") motion = Motion::Rest, motion_given = true;
+    else if (a == "--test-motion") motion = Motion::TestMotion, motion_given = true;
     else if (parse_avatar_flag(args, i, avatar)) continue;
+    else if (parse_sign_source_flag(args, i, sign)) continue;
     else if (!a.empty() && a[0] == '-') throw Error("unknown flag " + a + " (see gestura view --help)");
-    else clip_path = a, motion = Motion::ClipFile;
+    else clip_path = a, motion = Motion::ClipFile, motion_given = true;
   }
-  const RenderSubject subject = load_render_subject(motion, clip_path, avatar);
+  if (sign.given() || !sign.gloss.empty()) {
+    if (motion_given) throw Error("show either a sign (--hamnosys, --names, --sigml) or CLIP.bvh / --rest / --test-motion");
+    motion = Motion::Sign;
+  }
+  const RenderSubject subject = load_render_subject(motion, clip_path, avatar, sign);
   Animator animator(subject);
   std::optional<StagedFile> screenshot_file;
   if (!screenshot.empty()) screenshot_file.emplace(screenshot);
@@ -124,6 +137,7 @@ int run(const std::vector<std::string>& args) {
   renderer.upload(subject.mesh);
   Viewer viewer{ViewerControls(framing_box(subject.mesh, subject.skeleton), start,
                                 static_cast<float>(size.width) / static_cast<float>(size.height))};
+  if (start_at) viewer.controls.time = std::min(*start_at, animator.duration()), viewer.controls.playing = false;
   glfwSetWindowUserPointer(window.window(), &viewer);
   glfwSetKeyCallback(window.window(), on_key);
   glfwSetMouseButtonCallback(window.window(), on_button);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -12,6 +13,7 @@
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/render/test_motion.hpp"
+#include "gestura/sign/sign_synthesis.hpp"
 
 namespace gestura::cli {
 namespace {
@@ -80,17 +82,28 @@ bool parse_avatar_flag(const std::vector<std::string>& args, std::size_t& i, Ava
   return true;
 }
 
-RenderSubject load_render_subject(Motion motion, const std::string& clip_path, const AvatarParams& params) {
+RenderSubject load_render_subject(Motion motion, const std::string& clip_path, const AvatarParams& params,
+                                  const SignSource& sign_source) {
   params.validate();
-  // Read the motion before building the avatar: a bad file fails at once.
+  // Read the motion before building the avatar: a bad file or sign fails at once.
   std::optional<MotionFile> file;
   if (motion == Motion::ClipFile) file = read_motion(clip_path);
+  std::optional<sign::HamSign> notation;
+  if (motion == Motion::Sign) notation = load_sign(sign_source);
   Avatar avatar = build_avatar(params);
+  std::optional<Clip> performed;
+  if (notation) {
+    const SigningRig rig = make_signing_rig(avatar);
+    SignSynthesis result = synthesize_sign(*notation, rig);
+    if (const auto problem = synthesis_problem(result, rig)) std::fprintf(stderr, "warning: %s\n", problem->c_str());
+    performed = std::move(result.clip);
+  }
   RenderSubject subject{std::move(avatar.skeleton), std::move(avatar.mesh), std::nullopt};
   switch (motion) {
     case Motion::Rest: break;
     case Motion::TestMotion: subject.clip = make_wave_clip(subject.skeleton); break;
     case Motion::ClipFile: subject.clip = bind_to_avatar(*file, subject.skeleton, clip_path); break;
+    case Motion::Sign: subject.clip = std::move(performed); break;
   }
   return subject;
 }

@@ -1,16 +1,18 @@
 #pragma once
 // The one place that decides what `gestura render` and `gestura view` show: the default avatar
 // (build_avatar, with --height/--build/--sex as in `gestura avatar export`) at rest, doing the
-// built-in test wave, or playing a motion file whose joints are the avatar's own (H-Anim names).
+// built-in test wave, playing a motion file whose joints are the avatar's own (H-Anim names), or
+// performing a sign (sign_source.hpp).
 #include <string>
 #include <vector>
 
 #include "gestura/body/avatar_params.hpp"
 #include "gestura/render/subject.hpp"
+#include "sign_source.hpp"
 
 namespace gestura::cli {
 
-enum class Motion { Rest, TestMotion, ClipFile };
+enum class Motion { Rest, TestMotion, ClipFile, Sign };
 
 // Avatar flags shared by render and view. When args[i] is --height, --build or --sex, reads its
 // value into `params` (advancing i) and returns true; a bad value throws gestura::Error naming
@@ -19,7 +21,9 @@ bool parse_avatar_flag(const std::vector<std::string>& args, std::size_t& i, Ava
 
 // Builds the avatar once and attaches the motion. Throws gestura::Error for invalid params, a
 // clip file that cannot be read (file:line:col from the reader) or one whose joints are not the
-// avatar's (a few of the unmatched names are listed).
-RenderSubject load_render_subject(Motion motion, const std::string& clip_path, const AvatarParams& params);
+// avatar's (a few of the unmatched names are listed). Motion::Sign performs `sign_source` (parsed before the
+// avatar is built, so bad notation fails at once) and warns on stderr when synthesis_problem finds one.
+RenderSubject load_render_subject(Motion motion, const std::string& clip_path, const AvatarParams& params,
+                                  const SignSource& sign_source = {});
 
 }  // namespace gestura::cli

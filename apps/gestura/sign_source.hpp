@@ -1,0 +1,26 @@
+#pragma once
+// Where a sign to perform comes from, as `gestura sign` and `gestura view` read it from their flags:
+// HamNoSys in Unicode (--hamnosys), HamNoSys symbol names (--names), or a SiGML file (--sigml, with
+// --gloss choosing one of its signs). A further source (text to sign) adds a member and a branch in
+// load_sign.
+#include <string>
+#include <vector>
+
+#include "gestura/sign/hamnosys_model.hpp"
+
+namespace gestura::cli {
+
+struct SignSource {
+  std::string hamnosys, names, sigml_path, gloss;
+
+  bool given() const { return !hamnosys.empty() || !names.empty() || !sigml_path.empty(); }
+};
+
+// When args[i] is one of the source flags, reads its value into `source` (advancing i) and returns true.
+bool parse_sign_source_flag(const std::vector<std::string>& args, std::size_t& i, SignSource& source);
+
+// The sign's manual part. Throws gestura::Error unless exactly one source is given, for parse errors
+// (symbol index or file:line:col from the parsers) and when the SiGML file has no (such) sign.
+sign::HamSign load_sign(const SignSource& source);
+
+}  // namespace gestura::cli

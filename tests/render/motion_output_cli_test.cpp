@@ -1,0 +1,142 @@
+// Commands that make motion show it: `gestura view` performs a sign from HamNoSys (a scripted
+// screenshot under Xvfb shows the raised hand's skin in front of the dark shirt, where the figure at
+// rest shows none), `gestura reach -o` writes a video with one frame per motion frame, and an output
+// extension nobody writes is a clear error that leaves no file.
+#include <gtest/gtest.h>
+extern "C" {
+#include <libavformat/avformat.h>
+}
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <unistd.h>
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#include <stb/stb_image.h>
+#pragma GCC diagnostic pop
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int status;
+  std::string output;
+};
+
+CliRun run(const std::string& command) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  std::string out;
+  std::array<char, 512> buffer{};
+  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WEXITSTATUS(status), out};
+}
+
+fs::path temp_file(const std::string& name) {
+  return fs::temp_directory_path() / ("gestura_motion_output_" + std::to_string(::getpid()) + "_" + name);
+}
+
+constexpr const char* kFlatHandAtChest = "hamflathand,hamextfingeru,hampalml,hamchest";
+
+// Skin-coloured pixels (warm: red over green over blue by a margin; not the grey background, not
+// the slate shirt) in the chest band below the neck: rows 45%..75%, middle half of the columns.
+// Measured on 320x240 shots: 451 with the flat hand at the chest, 0 at rest.
+int skin_pixels_at_chest(const std::string& png) {
+  int w = 0, h = 0, n = 0;
+  stbi_uc* pixels = stbi_load(png.c_str(), &w, &h, &n, 3);
+  if (!pixels) return -1;
+  int skin = 0;
+  for (int y = h * 45 / 100; y < h * 3 / 4; ++y)
+    for (int x = w / 4; x < w * 3 / 4; ++x) {
+      const stbi_uc* p = pixels + (y * w + x) * 3;
+      skin += p[0] > 90 && p[0] > p[1] + 15 && p[1] > p[2] && p[0] > p[2] + 35;
+    }
+  stbi_image_free(pixels);
+  return skin;
+}
+
+TEST(MotionOutputCli, ViewPerformsASignFromSymbolNames) {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run not installed";
+  // The middle of the sign, from the same synthesis as `gestura sign` reports it.
+  const fs::path json = temp_file("sign.json");
+  const CliRun sign = run(std::string(GESTURA_CLI) + " sign --names " + kFlatHandAtChest + " -o " + json.string());
+  fs::remove(json);
+  ASSERT_EQ(sign.status, 0) << sign.output;
+  const auto at = sign.output.find("(sign ");
+  ASSERT_NE(at, std::string::npos) << sign.output;
+  const float sign_start = std::stof(sign.output.substr(at + 6));
+  const float sign_end = std::stof(sign.output.substr(sign.output.find("–", at) + std::string("–").size()));
+  ASSERT_LT(sign_start, sign_end) << sign.output;
+
+  auto screenshot = [](const std::string& what, const std::string& name) {
+    const fs::path shot = temp_file(name);
+    const CliRun r = run(std::string("timeout 120 xvfb-run -a ") + GESTURA_CLI + " view " + what +
+                         " --size 320x240 --background '#808080' --frames 3 --screenshot " + shot.string());
+    EXPECT_EQ(r.status, 0) << r.output;
+    const int skin = skin_pixels_at_chest(shot.string());
+    fs::remove(shot);
+    return skin;
+  };
+  const int signing = screenshot("--names " + std::string(kFlatHandAtChest) + " --at " +
+                                     std::to_string(0.5f * (sign_start + sign_end)), "sign.png");
+  const int resting = screenshot("--rest", "rest.png");
+  ASSERT_GE(resting, 0);
+  EXPECT_GT(signing, 150) << "the hand at the chest is skin in front of the shirt";
+  EXPECT_GT(signing, 4 * resting + 100);
+}
+
+TEST(MotionOutputCli, ViewRejectsABadSignAndTwoSubjects) {
+  const CliRun bad = run(std::string(GESTURA_CLI) + " view --names hamflathand,hamnotasymbol --screenshot /dev/null");
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.output.find("hamnotasymbol"), std::string::npos) << bad.output;
+  const CliRun both = run(std::string(GESTURA_CLI) + " view --rest --names hamflathand --screenshot /dev/null");
+  EXPECT_EQ(both.status, 1);
+  EXPECT_NE(both.output.find("either a sign"), std::string::npos) << both.output;
+}
+
+int video_frames(const std::string& path) {
+  AVFormatContext* format = nullptr;
+  if (avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) return -1;
+  int frames = 0;
+  AVPacket* packet = av_packet_alloc();
+  while (av_read_frame(format, packet) >= 0) {
+    frames += format->streams[packet->stream_index]->codecpar->codec_type == AVMEDIA_TYPE_VIDEO;
+    av_packet_unref(packet);
+  }
+  av_packet_free(&packet);
+  avformat_close_input(&format);
+  return frames;
+}
+
+TEST(MotionOutputCli, ReachWritesAVideoWithOneFramePerMotionFrame) {
+  const fs::path video = temp_file("reach.mp4");
+  const CliRun r = run(std::string(GESTURA_CLI) + " reach --target 0.25,1.2,0.35 --frames 12 --fps 24 --size 160x120 -o " +
+                       video.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(video_frames(video.string()), 13) << r.output;  // frames 0..12 of the motion
+  fs::remove(video);
+}
+
+TEST(MotionOutputCli, UnknownOutputExtensionIsAClearErrorAndWritesNothing) {
+  const fs::path out = temp_file("reach.avi");
+  const CliRun reach = run(std::string(GESTURA_CLI) + " reach --target 0.25,1.2,0.35 -o " + out.string());
+  EXPECT_EQ(reach.status, 1);
+  EXPECT_NE(reach.output.find(out.string() + ": cannot write"), std::string::npos) << reach.output;
+  EXPECT_NE(reach.output.find(".mp4"), std::string::npos) << "lists what it can write: " << reach.output;
+  EXPECT_FALSE(fs::exists(out));
+  const CliRun sign = run(std::string(GESTURA_CLI) + " sign --names " + kFlatHandAtChest + " -o " + out.string());
+  EXPECT_EQ(sign.status, 1);
+  EXPECT_NE(sign.output.find("cannot write"), std::string::npos) << sign.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
