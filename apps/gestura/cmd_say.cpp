@@ -11,7 +11,7 @@
 #include "gestura/io/bvh.hpp"
 #include "gestura/io/gltf_animation.hpp"
 #include "gestura/io/joint_positions_json.hpp"
-#include "gestura/lexicon/lexicon_files.hpp"
+#include "gestura/lexicon/default_lexicon.hpp"
 #include "gestura/render/render_job.hpp"
 #include "gestura/render/subject.hpp"
 #include "gestura/sentence/signer.hpp"
@@ -61,19 +61,9 @@ int run_say(const std::vector<std::string>& args) {
       !ends_with(output, ".bvh") && !ends_with(output, ".json"))
     throw Error("-o " + output + ": unknown output type (use .mp4 .webm .gif .png .glb .bvh .json)");
 
-  const std::vector<std::string> files = builtin_lexicon_files();
-  if (files.empty()) throw Error("no built-in lexicon found (data/lexicon/*.jsonl or $GESTURA_BUILTIN_LEXICON)");
-  Lexicon builtin = load_builtin_lexicon(files);
-  std::optional<Lexicon> user;
-  LayeredLexicon layers;
-  layers.push_layer(builtin);
-  if (const std::string path = default_user_lexicon_path(); std::filesystem::exists(path)) {
-    user.emplace(Lexicon::open(path));
-    layers.push_layer(*user);
-  }
-
+  DefaultLexicon lexicon;
   const Avatar avatar = build_avatar();
-  const Signer signer(avatar, layers);
+  const Signer signer(avatar, lexicon.layers());
   const SentencePerformance p = signer.say(*text, options);
   for (const std::string& note : p.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
   if (output.empty()) {

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 
 #include "command.hpp"
@@ -20,8 +21,9 @@
 namespace gestura::cli {
 namespace {
 
-constexpr const char* kUsage = R"(usage: gestura view [CLIP.bvh | --rest | --test-motion | SIGN] [options]
+constexpr const char* kUsage = R"(usage: gestura view [CLIP.bvh | --rest | --test-motion | SIGN | "TEXT"] [options]
        SIGN: --hamnosys TEXT | --names SYMBOLS | --sigml FILE [--gloss NAME]
+       TEXT: English to translate and sign, as gestura say does (anything not naming a file)
 
 Shows the default avatar at rest (the default), doing the test wave, playing CLIP.bvh (a motion
 on the avatar's skeleton), or performing a sign written in HamNoSys (Unicode or comma-separated
@@ -93,6 +95,12 @@ void on_move(GLFWwindow* window, double x, double y) {
 
 void on_scroll(GLFWwindow* window, double, double dy) { viewer_of(window).controls.zoom(static_cast<float>(dy)); }
 
+bool names_motion_file(const std::string& arg) {
+  std::string ext = std::filesystem::path(arg).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return arg.find(' ') == std::string::npos && (ext == ".bvh" || ext == ".glb" || ext == ".gltf" || ext == ".bap");
+}
+
 int run(const std::vector<std::string>& args) {
   Motion motion = Motion::Rest;
   AvatarParams avatar;
@@ -121,7 +129,9 @@ int run(const std::vector<std::string>& args) {
     else if (parse_avatar_flag(args, i, avatar)) continue;
     else if (parse_sign_source_flag(args, i, sign)) continue;
     else if (!a.empty() && a[0] == '-') throw Error("unknown flag " + a + " (see gestura view --help)");
-    else clip_path = a, motion = Motion::ClipFile, motion_given = true;
+    // FILE or TEXT: an existing file or a motion file name is a clip; anything else is English to sign.
+    else if (std::filesystem::exists(a) || names_motion_file(a)) clip_path = a, motion = Motion::ClipFile, motion_given = true;
+    else sign.text = a;
   }
   if (sign.given() || !sign.gloss.empty()) {
     if (motion_given) throw Error("show either a sign (--hamnosys, --names, --sigml) or CLIP.bvh / --rest / --test-motion");

@@ -12,7 +12,9 @@
 #include "gestura/body/avatar.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
+#include "gestura/lexicon/default_lexicon.hpp"
 #include "gestura/render/test_motion.hpp"
+#include "gestura/sentence/signer.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
 
 namespace gestura::cli {
@@ -89,9 +91,16 @@ RenderSubject load_render_subject(Motion motion, const std::string& clip_path, c
   std::optional<MotionFile> file;
   if (motion == Motion::ClipFile) file = read_motion(clip_path);
   std::optional<sign::HamSign> notation;
-  if (motion == Motion::Sign) notation = load_sign(sign_source);
+  if (motion == Motion::Sign && sign_source.text.empty()) notation = load_sign(sign_source);
   Avatar avatar = build_avatar(params);
   std::optional<Clip> performed;
+  if (motion == Motion::Sign && !sign_source.text.empty()) {
+    DefaultLexicon lexicon;
+    const Signer signer(avatar, lexicon.layers());
+    SentencePerformance said = signer.say(sign_source.text, SayOptions{});
+    for (const std::string& note : said.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+    performed = std::move(said.clip);
+  }
   if (notation) {
     const SigningRig rig = make_signing_rig(avatar);
     SignSynthesis result = synthesize_sign(*notation, rig);

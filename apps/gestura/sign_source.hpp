@@ -12,8 +12,9 @@ namespace gestura::cli {
 
 struct SignSource {
   std::string hamnosys, names, sigml_path, gloss;
+  std::string text;  // English to translate and sign (gestura view "TEXT"); performed by the Signer
 
-  bool given() const { return !hamnosys.empty() || !names.empty() || !sigml_path.empty(); }
+  bool given() const { return !hamnosys.empty() || !names.empty() || !sigml_path.empty() || !text.empty(); }
 };
 
 // When args[i] is one of the source flags, reads its value into `source` (advancing i) and returns true.

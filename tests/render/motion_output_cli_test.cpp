@@ -94,6 +94,29 @@ TEST(MotionOutputCli, ViewPerformsASignFromSymbolNames) {
   EXPECT_GT(signing, 4 * resting + 100);
 }
 
+TEST(MotionOutputCli, ViewSignsEnglishText) {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run not installed";
+  // NAME is signed with both H hands in front of the chest: find when from say's timeline, then
+  // look there.
+  const CliRun timeline = run(std::string(GESTURA_CLI) + " say 'My name'");
+  ASSERT_EQ(timeline.status, 0) << timeline.output;
+  const auto line = timeline.output.find("NAME");
+  ASSERT_NE(line, std::string::npos) << timeline.output;
+  const std::string row = timeline.output.substr(timeline.output.rfind('\n', line) + 1);
+  const float start = std::stof(row), end = std::stof(row.substr(row.find("–") + std::string("–").size()));
+  const fs::path shot = temp_file("text.png");
+  const CliRun r = run(std::string("timeout 120 xvfb-run -a ") + GESTURA_CLI + " view 'My name' --at " +
+                       std::to_string(0.5f * (start + end)) +
+                       " --size 320x240 --background '#808080' --frames 3 --screenshot " + shot.string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_GT(skin_pixels_at_chest(shot.string()), 150) << "the hands in front of the chest";
+  fs::remove(shot);
+  // A name that looks like a motion file is read as one (and fails clearly when it is missing).
+  const CliRun missing = run(std::string(GESTURA_CLI) + " view no-such-clip.bvh --screenshot /dev/null");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.output.find("no-such-clip.bvh"), std::string::npos) << missing.output;
+}
+
 TEST(MotionOutputCli, ViewRejectsABadSignAndTwoSubjects) {
   const CliRun bad = run(std::string(GESTURA_CLI) + " view --names hamflathand,hamnotasymbol --screenshot /dev/null");
   EXPECT_EQ(bad.status, 1);

@@ -52,6 +52,7 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
   std::vector<vec3> points;
   PerformanceStats st;
   st.frames = frames;
+  bool resting[2] = {true, true};  // the first frame (and any frame after rest) seeds the solver
 
   for (int f = 0; f < frames; ++f) {
     const float t = static_cast<float>(f) / options.fps;
@@ -82,9 +83,15 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
         // At rest: the arm hangs exactly in its rest pose (a stretched arm at its limits is a
         // singular target for the iterative solvers).
         for (int j : h.arm.joints) pose.rotations[static_cast<std::size_t>(j)] = rig.rest.rotations[static_cast<std::size_t>(j)];
+        resting[side] = true;
         continue;
       }
-      IkResult r = solve_combined(s, h.arm, base, target, settings, workspace[side], pose, f == 0 ? 8 : 0);
+      if (resting[side]) {
+        // Leaving rest: start from the relaxed signing posture, not the straight, singular arm.
+        for (int j : h.arm.joints) pose.rotations[static_cast<std::size_t>(j)] = rig.neutral.rotations[static_cast<std::size_t>(j)];
+      }
+      IkResult r = solve_combined(s, h.arm, base, target, settings, workspace[side], pose, resting[side] ? 8 : 0);
+      resting[side] = false;
 
       // Keep the hand out of the body: push the whole hand along the body's outward normal at its
       // deepest point, a few times (leaving one part of the body can enter another).
