@@ -125,7 +125,7 @@ int run_convert(const std::vector<std::string>& args) {
   return 0;
 }
 
-gestura::cli::Registration reg{{"convert", "convert motion files (BVH → BVH; unit scale, Z-up → Y-up)",
+gestura::cli::Registration reg{{"convert", "convert motion files (BVH, glTF, BAP → BVH, glTF, BAP, .pose, OpenPose; scale, Z-up → Y-up)",
                                 "usage: gestura convert IN OUT [--scale S] [--z-up] [--openpose]\n\n"
                                 "Reads IN and writes OUT, formats chosen by extension (.bvh, .glb, .gltf, .bap; written\n"
                                 "also .pose: joint positions for the pose-format toolkit, and with --openpose\n"
