@@ -11,6 +11,7 @@
 
 using namespace gestura;
 using namespace gestura::face;
+using gestura::Expression;
 
 namespace {
 
@@ -71,7 +72,8 @@ TEST(FaceMouthing, JawIsItsOwnChannel) {
   EXPECT_LT(at(clip, kJawOpen, 0.06f), 0.05f);
   // An expression written afterwards does not touch the jaw or the visemes.
   std::vector<FaceAction> smile;
-  for (const ChannelWeight& w : expression_weights(Expression::joy)) smile.push_back(make_action(w.channel, 0, 0.6f, w.weight));
+  for (const auto& [channel, weight] : gestura::expression_weights(gestura::Expression::Joy))
+    smile.push_back(make_action(channel, 0, 0.6f, weight));
   const FloatTrack jaw_before = clip.channel("jaw_open");
   const FloatTrack oh_before = clip.channel("oh");
   write_face_channels(smile, clip);

@@ -10,6 +10,7 @@
 
 using namespace gestura;
 using namespace gestura::face;
+using gestura::Expression;
 
 namespace {
 
@@ -48,10 +49,10 @@ TEST(FaceNonManualFromTranslation, MarkersAffectAndBoundaries) {
   for (const NonManualSpan& s : plan.spans)
     if (s.kind == NonManualKind::affect) affects.push_back(s);
   ASSERT_EQ(affects.size(), 2u);
-  EXPECT_EQ(affects[0].expression, Expression::joy);
+  EXPECT_EQ(affects[0].expression, Expression::Joy);
   EXPECT_FLOAT_EQ(affects[0].intensity, 0.6f);
   EXPECT_EQ(affects[0].first, t.sentences[0].first);
-  EXPECT_EQ(affects[1].expression, Expression::surprise);
+  EXPECT_EQ(affects[1].expression, Expression::Surprise);
   EXPECT_FLOAT_EQ(affects[1].intensity, 1.0f);
   EXPECT_EQ(affects[1].first, t.sentences[2].first);
 

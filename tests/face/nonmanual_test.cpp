@@ -11,6 +11,7 @@
 
 using namespace gestura;
 using namespace gestura::face;
+using gestura::Expression;
 
 namespace {
 
@@ -108,7 +109,7 @@ TEST(FaceNonManual, OverlappingMarkersComposeWithinZeroOne) {
   NonManualPlan plan = plan_of(8);
   plan.spans.push_back({NonManualKind::topic, 0, 3});            // brows 0.7 over [0, 1.5]
   plan.spans.push_back({NonManualKind::yes_no_question, 2, 8});  // brows 0.8 over [1, 4]
-  plan.spans.push_back({NonManualKind::affect, 0, 8, Expression::surprise, 1.0f});  // brows 0.9
+  plan.spans.push_back({NonManualKind::affect, 0, 8, Expression::Surprise, 1.0f});  // brows 0.9
   Clip clip;
   add_nonmanual_markers(plan, sk, clip);
   for (const FloatTrack& tr : clip.channels)

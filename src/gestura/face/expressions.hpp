@@ -1,21 +1,12 @@
 #pragma once
-// The six MPEG-4 basic expressions (joy, sadness, anger, fear, disgust, surprise) and neutral, as
-// weights over the avatar's expression morph targets (face_channels.hpp). Weights are full-intensity
-// poses; callers scale them. Neutral is the empty set (every morph at 0).
-#include <span>
+// The affect of a sentence, for facial expression during signing. The expressions themselves (the
+// six MPEG-4 basic expressions and neutral as morph weights) are the avatar's table in
+// body/face_morphs.hpp: gestura::Expression and gestura::expression_weights.
 #include <string_view>
 
+#include "gestura/body/face_morphs.hpp"
+
 namespace gestura::face {
-
-enum class Expression { neutral, joy, sadness, anger, fear, disgust, surprise };
-std::string_view to_string(Expression e);
-
-struct ChannelWeight {
-  std::string_view channel;
-  float weight;
-};
-
-std::span<const ChannelWeight> expression_weights(Expression e);
 
 // The affect a sentence shows, from its words and final punctuation: a small word list (happy,
 // love, sorry, angry, afraid, disgusting, wow, ...; case-insensitive, whole words) decides; a

@@ -127,8 +127,8 @@ NonManualActions plan_nonmanual(const NonManualPlan& plan) {
         break;
       case NonManualKind::affect: {
         const float intensity = std::clamp(span.intensity, 0.0f, 1.0f);
-        for (const ChannelWeight& w : expression_weights(span.expression))
-          face.push_back(make_action(w.channel, start, end, w.weight * intensity));
+        for (const auto& [channel, weight] : gestura::expression_weights(span.expression))
+          face.push_back(make_action(channel, start, end, weight * intensity));
         break;
       }
     }

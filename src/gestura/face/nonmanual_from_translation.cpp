@@ -42,7 +42,7 @@ NonManualPlan plan_from_translation(const Translation& translation, std::string_
     if (sentence.first >= sentence.last || sentence.last > timed.size()) continue;
     plan.boundaries.push_back(timed[sentence.last - 1].end);
     const Expression affect = affect_from_text(english.substr(sentence.begin, sentence.end - sentence.begin));
-    if (affect == Expression::neutral) continue;
+    if (affect == Expression::Neutral) continue;
     const float intensity = sentence.type == SentenceType::exclamation ? 1.0f : 0.6f;
     plan.spans.push_back({NonManualKind::affect, sentence.first, sentence.last, affect, intensity});
   }

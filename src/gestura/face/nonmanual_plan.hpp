@@ -21,7 +21,7 @@ enum class NonManualKind { yes_no_question, wh_question, negation, topic, affect
 struct NonManualSpan {
   NonManualKind kind = NonManualKind::affect;
   std::size_t first = 0, last = 0;            // glosses [first, last) of NonManualPlan::glosses
-  Expression expression = Expression::neutral;  // affect only (affect_from_text picks one)
+  Expression expression = Expression::Neutral;  // affect only (affect_from_text picks one)
   float intensity = 1.0f;                       // affect only, 0..1
 };
 
