@@ -1,6 +1,8 @@
 // `gestura compress` end to end: writes a loadable .gcl within the bound, rejects bad input.
 #include <gtest/gtest.h>
 
+#include "support/cli.hpp"
+
 #include <array>
 #include <algorithm>
 #include <cstdio>
@@ -14,24 +16,12 @@
 
 namespace {
 
-struct CliRun {
-  int status;
-  std::string output;
-};
-
-CliRun run(const std::string& args) {
-  const std::string command = std::string(GESTURA_CLI) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  std::array<char, 512> buffer{};
-  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WEXITSTATUS(status), out};
-}
+using gestura::test::CliRun;
+using gestura::test::run_cli;
 
 TEST(CompressCli, WritesAClipWithinTheBound) {
   const std::string path = ::testing::TempDir() + "cli.gcl";
-  const CliRun r = run("compress synthetic:2 -o " + path + " --error-cm 0.05");
+  const CliRun r = run_cli("compress synthetic:2 -o " + path + " --error-cm 0.05");
   ASSERT_EQ(r.status, 0) << r.output;
   const auto at = r.output.find("error:       max ");
   ASSERT_NE(at, std::string::npos) << r.output;
@@ -84,11 +74,11 @@ TEST(CompressCli, MakeHumanBvhRoundTripsWithinTheBound) {
   const std::string bvh = kData + "/makehuman/poseunits/face-poseunits.bvh";
   const std::string gcl = ::testing::TempDir() + "face.gcl", back = ::testing::TempDir() + "face_back.bvh";
   for (const char* bound : {"0.01", "0.1"}) {
-    const CliRun r = run("compress " + bvh + " --scale 0.1 --z-up --error-cm " + bound + " -o " + gcl);
+    const CliRun r = run_cli("compress " + bvh + " --scale 0.1 --z-up --error-cm " + bound + " -o " + gcl);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("60 frames"), std::string::npos) << r.output;
     EXPECT_LE(reported_max_error_cm(r.output), std::stod(bound)) << r.output;
-    const CliRun d = run("decompress " + gcl + " --skeleton " + bvh + " --scale 0.1 --z-up -o " + back);
+    const CliRun d = run_cli("decompress " + gcl + " --skeleton " + bvh + " --scale 0.1 --z-up -o " + back);
     ASSERT_EQ(d.status, 0) << d.output;
     const gestura::BvhReadOptions metres{0.1f, true};
     const gestura::BvhFile original = gestura::load_bvh(bvh, metres), decoded = gestura::load_bvh(back);
@@ -104,7 +94,7 @@ TEST(CompressCli, MakeHumanBvhRoundTripsWithinTheBound) {
 // Single-frame pose files compress within the bound too (a still clip).
 TEST(CompressCli, MakeHumanPosesHonourTheBound) {
   for (const char* pose : {"run01", "sit01", "standing01", "tpose"}) {
-    const CliRun r = run("compress " + kData + "/makehuman/poses/" + pose + ".bvh --scale 0.1 --z-up --error-cm 0.01");
+    const CliRun r = run_cli("compress " + kData + "/makehuman/poses/" + pose + ".bvh --scale 0.1 --z-up --error-cm 0.01");
     ASSERT_EQ(r.status, 0) << pose << "\n" << r.output;
     EXPECT_LE(reported_max_error_cm(r.output), 0.01) << pose << "\n" << r.output;
   }
@@ -112,11 +102,11 @@ TEST(CompressCli, MakeHumanPosesHonourTheBound) {
 
 TEST(CompressCli, GclInputNeedsAMatchingSkeleton) {
   const std::string gcl = ::testing::TempDir() + "synthetic.gcl";
-  ASSERT_EQ(run("compress synthetic:1 -o " + gcl).status, 0);
-  const CliRun no_skeleton = run("compress " + gcl);
+  ASSERT_EQ(run_cli("compress synthetic:1 -o " + gcl).status, 0);
+  const CliRun no_skeleton = run_cli("compress " + gcl);
   EXPECT_EQ(no_skeleton.status, 1);
   EXPECT_NE(no_skeleton.output.find("--skeleton"), std::string::npos) << no_skeleton.output;
-  const CliRun wrong = run("decompress " + gcl + " --skeleton " + kData + "/makehuman/poses/tpose.bvh -o /dev/null");
+  const CliRun wrong = run_cli("decompress " + gcl + " --skeleton " + kData + "/makehuman/poses/tpose.bvh -o /dev/null");
   EXPECT_EQ(wrong.status, 1);
   EXPECT_NE(wrong.output.find("has 67 joints"), std::string::npos) << wrong.output;
   std::remove(gcl.c_str());
@@ -131,11 +121,11 @@ TEST(CompressCli, DecompressRejectsJunkAndMissingArguments) {
     std::fclose(f);
   }
   const std::string ref = kData + "/makehuman/poses/tpose.bvh";
-  const CliRun bad = run("decompress " + junk + " --skeleton " + ref + " -o /dev/null");
+  const CliRun bad = run_cli("decompress " + junk + " --skeleton " + ref + " -o /dev/null");
   EXPECT_EQ(bad.status, 1);
   EXPECT_NE(bad.output.find(junk + ": byte"), std::string::npos) << bad.output;
   for (const std::string& args : std::vector<std::string>{"decompress", "decompress " + junk, "decompress " + junk + " -o x.bvh --bogus"}) {
-    const CliRun r = run(args);
+    const CliRun r = run_cli(args);
     EXPECT_EQ(r.status, 1) << args;
     EXPECT_NE(r.output.find("gestura decompress: "), std::string::npos) << args << "\n" << r.output;
   }
@@ -146,7 +136,7 @@ TEST(CompressCli, BadInputIsAClearError) {
   for (const char* args : {"compress", "compress synthetic --error-cm 0", "compress synthetic --error-cm x",
                            "compress synthetic:-1", "compress synthetic --bogus", "compress a b", "compress synthetic -o",
                            "compress /nonexistent.bvh", "compress synthetic --scale -2"}) {
-    const CliRun r = run(args);
+    const CliRun r = run_cli(args);
     EXPECT_EQ(r.status, 1) << args;
     EXPECT_NE(r.output.find("gestura compress: "), std::string::npos) << args << "\n" << r.output;
   }

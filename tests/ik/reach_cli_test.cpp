@@ -2,6 +2,8 @@
 // rejects bad flags.
 #include <gtest/gtest.h>
 
+#include "support/cli.hpp"
+
 #include <array>
 #include <cstdio>
 #include <string>
@@ -14,20 +16,8 @@
 
 namespace {
 
-struct CliRun {
-  int status;
-  std::string output;
-};
-
-CliRun run(const std::string& args) {
-  const std::string command = std::string(GESTURA_CLI) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  std::array<char, 512> buffer{};
-  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WEXITSTATUS(status), out};
-}
+using gestura::test::CliRun;
+using gestura::test::run_cli;
 
 double residual_of(const std::string& output) {
   const auto at = output.find("residual ");
@@ -61,7 +51,7 @@ TEST(IkReachCli, EachSolverReachesAPointOnTheAvatar) {
   for (const char* side : {"l", "r"}) {
     const std::string target = point_arg(reachable_target(avatar, side));
     for (const char* solver : {"dls", "ccd", "combined"}) {
-      const CliRun r = run("reach --arm " + std::string(side) + " --target " + target + " --solver " + solver);
+      const CliRun r = run_cli("reach --arm " + std::string(side) + " --target " + target + " --solver " + solver);
       ASSERT_EQ(r.status, 0) << r.output;
       const double residual = residual_of(r.output);
       EXPECT_GE(residual, 0.0) << r.output;
@@ -69,7 +59,7 @@ TEST(IkReachCli, EachSolverReachesAPointOnTheAvatar) {
       EXPECT_NE(r.output.find("iterations"), std::string::npos);
     }
     // Two-bone aims the wrist only: the hand lands near the target, not on it.
-    const CliRun r = run("reach --arm " + std::string(side) + " --target " + target + " --solver two-bone");
+    const CliRun r = run_cli("reach --arm " + std::string(side) + " --target " + target + " --solver two-bone");
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_LT(residual_of(r.output), 0.05) << side << "\n" << r.output;
   }
@@ -82,7 +72,7 @@ TEST(IkReachCli, WritesAMinimumJerkReachWithinLimits) {
   const Skeleton avatar = build_avatar_skeleton();
   const vec3 target = reachable_target(avatar, "r");
   const std::string path = ::testing::TempDir() + "reach_test.bvh";
-  const CliRun r = run("reach --arm r --target " + point_arg(target) + " --frames 10 -o " + path);
+  const CliRun r = run_cli("reach --arm r --target " + point_arg(target) + " --frames 10 -o " + path);
   ASSERT_EQ(r.status, 0) << r.output;
   const BvhFile bvh = load_bvh(path);
   ASSERT_EQ(bvh.frame_count, 11);
@@ -109,7 +99,7 @@ TEST(IkReachCli, WritesAMinimumJerkReachWithinLimits) {
 }
 
 TEST(IkReachCli, UnreachableTargetReportsClosestReach) {
-  const CliRun r = run("reach --target 3,1,1");
+  const CliRun r = run_cli("reach --target 3,1,1");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_GT(residual_of(r.output), 2.0) << r.output;
   EXPECT_NE(r.output.find("closest reach"), std::string::npos);
@@ -119,7 +109,7 @@ TEST(IkReachCli, BadFlagsAreClearErrors) {
   for (const char* args : {"reach", "reach --target 1,2", "reach --target a,b,c", "reach --target 0,1,0 --solver fabrik",
                            "reach --target 0,1,0 --frames -3", "reach --target 0,1,0 --bogus",
                            "reach --target 0,1,0 --arm x"}) {
-    const CliRun r = run(args);
+    const CliRun r = run_cli(args);
     EXPECT_EQ(r.status, 1) << args;
     EXPECT_NE(r.output.find("gestura reach: "), std::string::npos) << args << "\n" << r.output;
   }

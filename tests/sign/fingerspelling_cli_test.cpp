@@ -1,6 +1,8 @@
 // The `gestura fingerspell` command end to end.
 #include <gtest/gtest.h>
 
+#include "support/cli.hpp"
+
 #include <array>
 #include <cstdio>
 #include <string>
@@ -8,20 +10,8 @@
 
 namespace {
 
-struct CliRun {
-  int status;
-  std::string output;
-};
-
-CliRun run_cli(const std::string& args) {
-  const std::string command = std::string(GESTURA_CLI) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  std::array<char, 512> buffer{};
-  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WEXITSTATUS(status), out};
-}
+using gestura::test::CliRun;
+using gestura::test::run_cli;
 
 }  // namespace
 
