@@ -90,15 +90,19 @@ SigningRig make_signing_rig(const Avatar& avatar) {
   const vec3 head_c = 0.5f * (neck_b + top) + vec3(0, 0, 0.015f);
   const float head_r = std::clamp(distance_to_site(rig, "forehead", head_c, 0.09f), 0.06f, 0.14f) * 0.92f;
   rig.body.push_back({"head", skull, head_c - vec3(0, 0.02f, 0), head_c + vec3(0, 0.02f, 0), head_r});
+  for (CollisionCapsule& c : rig.body) {  // model space at bind pose → the carrying joint's frame
+    const mat4 to_joint = glm::inverse(rig.bind_model[static_cast<std::size_t>(c.joint)]);
+    c.a = vec3(to_joint * vec4(c.a, 1.0f));
+    c.b = vec3(to_joint * vec4(c.b, 1.0f));
+  }
   return rig;
 }
 
 float body_signed_distance(const SigningRig& rig, std::span<const mat4> model, const vec3& p, vec3* outward) {
   float best = 1e9f;
   for (const CollisionCapsule& c : rig.body) {
-    const std::size_t j = static_cast<std::size_t>(c.joint);
-    const mat4 moved = model[j] * glm::inverse(rig.bind_model[j]);
-    const vec3 a = vec3(moved * vec4(c.a, 1.0f)), b = vec3(moved * vec4(c.b, 1.0f));
+    const mat4& joint = model[static_cast<std::size_t>(c.joint)];
+    const vec3 a = vec3(joint * vec4(c.a, 1.0f)), b = vec3(joint * vec4(c.b, 1.0f));
     const vec3 ab = b - a;
     const float len2 = glm::dot(ab, ab);
     const float t = len2 > 0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;

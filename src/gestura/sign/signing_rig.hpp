@@ -20,7 +20,7 @@ namespace gestura {
 struct CollisionCapsule {
   const char* name;
   int joint;
-  vec3 a, b;  // bind pose, model space
+  vec3 a, b;  // in the joint's frame (so a moved joint moves the capsule without re-deriving it)
   float radius;
 };
 
