@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "command.hpp"
+#include "gestura/body/avatar_source.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/io/joint_positions_json.hpp"
@@ -21,7 +22,7 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }
 
 int run_sign(const std::vector<std::string>& args) {
-  std::string hamnosys, names, sigml_path, gloss, output, camera = "front", size = "1280x720";
+  std::string avatar_spec = "default", hamnosys, names, sigml_path, gloss, output, camera = "front", size = "1280x720";
   float speed = 1.0f;
   bool sheet = false;
   int fps = 30;
@@ -31,6 +32,7 @@ int run_sign(const std::vector<std::string>& args) {
     else if (a == "--names") names = cli::flag_value(args, i);
     else if (a == "--sigml") sigml_path = cli::flag_value(args, i);
     else if (a == "--gloss") gloss = cli::flag_value(args, i);
+    else if (a == "--avatar") avatar_spec = cli::flag_value(args, i);
     else if (a == "-o" || a == "--output") output = cli::flag_value(args, i);
     else if (a == "--camera") camera = cli::flag_value(args, i);
     else if (a == "--size") size = cli::flag_value(args, i);
@@ -59,7 +61,7 @@ int run_sign(const std::vector<std::string>& args) {
     parsed = chosen->manual;
   }
 
-  const Avatar avatar = build_avatar();
+  const Avatar avatar = load_avatar(avatar_spec);
   const SigningRig rig = make_signing_rig(avatar);
   PlanOptions plan;
   plan.speed = speed;
@@ -89,12 +91,13 @@ const cli::Registration reg{{
     "sign",
     "perform one sign from HamNoSys or SiGML on the default avatar",
     "usage: gestura sign (--hamnosys TEXT | --names SYMBOLS | --sigml FILE [--gloss NAME]) -o OUT\n"
-    "                    [--speed S] [--fps N] [--camera LIST] [--size WxH] [--sheet]\n\n"
+    "                    [--avatar SPEC] [--speed S] [--fps N] [--camera LIST] [--size WxH] [--sheet]\n\n"
     "TEXT is HamNoSys 4 in Unicode; SYMBOLS a comma-separated list of HamNoSys symbol names\n"
     "(hamflathand,hamextfingeru,...). OUT by extension: .json joint positions\n"
     "({\"fps\", \"joints\", \"frames\"}; metres, +Y up, facing +Z, H-Anim names), .bvh motion, or a\n"
     ".png (the middle of the sign; --sheet: 16 frames in a 4x4 grid), .gif, .mp4, .webm.\n"
-    "--speed scales the tempo (0.25–4). The dominant hand is the right hand.",
+    "--speed scales the tempo (0.25–4). The dominant hand is the right hand. --avatar is default\n"
+    "(the generated avatar) or makehuman:DIR (MakeHuman base mesh and default rig).",
     run_sign,
 }};
 

@@ -30,6 +30,7 @@ xvfb-run -a gestura view ...).
   --background #rrggbb   background colour
   --screenshot PATH.png  save the window after --frames frames and quit (for scripts, Xvfb)
   --frames N             frames before the screenshot                       [30]
+  --avatar SPEC                    default (generated) or makehuman:DIR (MakeHuman assets)
   --height M, --build X, --sex S   the avatar, as in gestura avatar export
 
 keys:  space play/pause   , . step one frame back/forward   1 2 3 speed 0.25x 0.5x 1x
@@ -92,6 +93,7 @@ void on_scroll(GLFWwindow* window, double, double dy) { viewer_of(window).contro
 int run(const std::vector<std::string>& args) {
   Motion motion = Motion::Rest;
   AvatarParams avatar;
+  std::string avatar_spec = "default";
   std::string clip_path, screenshot;
   ImageSize size{1280, 720};
   CameraPreset start = CameraPreset::Front;
@@ -110,11 +112,11 @@ int run(const std::vector<std::string>& args) {
         throw Error("bad --frames '" + n + "' (a whole number 1..100000)");
     } else if (a == "--rest") motion = Motion::Rest;
     else if (a == "--test-motion") motion = Motion::TestMotion;
-    else if (parse_avatar_flag(args, i, avatar)) continue;
+    else if (parse_avatar_flag(args, i, avatar, avatar_spec)) continue;
     else if (!a.empty() && a[0] == '-') throw Error("unknown flag " + a + " (see gestura view --help)");
     else clip_path = a, motion = Motion::ClipFile;
   }
-  const RenderSubject subject = load_render_subject(motion, clip_path, avatar);
+  const RenderSubject subject = load_render_subject(motion, clip_path, avatar, avatar_spec);
   Animator animator(subject);
   std::optional<StagedFile> screenshot_file;
   if (!screenshot.empty()) screenshot_file.emplace(screenshot);
