@@ -1,12 +1,13 @@
-// gestura retarget IN.bvh -o OUT.bvh [--to avatar|FILE.bvh] [--scale S] [--z-up] [--end-effectors]
-// Plays the motion of IN on another skeleton (the default avatar unless --to names a BVH whose
-// skeleton to use) and writes it as BVH.
+// gestura retarget IN.bvh -o OUT.bvh [--to avatar|makehuman:DIR|FILE.bvh] [--scale S] [--z-up] [--end-effectors]
+// Plays the motion of IN on another skeleton (the default avatar unless --to names the MakeHuman
+// avatar or a BVH whose skeleton to use) and writes it as BVH.
 #include <cmath>
 #include <iostream>
 
 #include "command.hpp"
 #include "gestura/anim/retarget.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
+#include "gestura/body/avatar_source.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/io/gltf_animation.hpp"
@@ -44,10 +45,12 @@ int run_retarget(const std::vector<std::string>& args) {
     else throw Error("more than one input file: " + a);
   }
   if (in.empty() || out.empty())
-    throw Error("usage: gestura retarget IN.bvh -o OUT.bvh|OUT.glb|OUT.gltf [--to avatar|FILE.bvh] [--scale S] [--z-up] [--end-effectors]");
+    throw Error("usage: gestura retarget IN.bvh -o OUT.bvh|OUT.glb|OUT.gltf [--to avatar|makehuman:DIR|FILE.bvh] [--scale S] [--z-up] [--end-effectors]");
   const gestura::BvhFile source = gestura::load_bvh(in, options);
   const gestura::Skeleton target =
-      to == "avatar" ? gestura::build_avatar_skeleton() : gestura::load_bvh(to, options).skeleton;
+      to == "avatar"                ? gestura::build_avatar_skeleton()
+      : to.starts_with("makehuman:") ? gestura::load_avatar(to).skeleton
+                                     : gestura::load_bvh(to, options).skeleton;
   retarget_options.frame_time = source.frame_time;
   const gestura::Clip clip = gestura::retarget(source.skeleton, source.clip, target, retarget_options);
   if (out.ends_with(".glb") || out.ends_with(".gltf")) {
@@ -65,12 +68,13 @@ int run_retarget(const std::vector<std::string>& args) {
 
 gestura::cli::Registration reg{
     {"retarget", "play a BVH motion on another skeleton (the avatar by default)",
-     "usage: gestura retarget IN.bvh -o OUT.bvh|OUT.glb|OUT.gltf [--to avatar|FILE.bvh] [--scale S] [--z-up] [--end-effectors]\n\n"
+     "usage: gestura retarget IN.bvh -o OUT.bvh|OUT.glb|OUT.gltf [--to avatar|makehuman:DIR|FILE.bvh] [--scale S] [--z-up] [--end-effectors]\n\n"
      "Joints are paired by name (H-Anim, VRM, MakeHuman, CMU spellings are recognised); each paired\n"
      "joint copies the source bone's model-space rotation change from its rest pose, so different rest\n"
      "poses (T-pose vs A-pose) line up. Root motion is scaled by the ratio of leg lengths.\n"
      "OUT is written as BVH, or as a glTF animation when it ends in .glb / .gltf.\n"
-     "--to T           avatar (default) or a BVH file whose skeleton receives the motion\n"
+     "--to T           avatar (default), makehuman:DIR (the MakeHuman avatar of gestura render --avatar)\n"
+     "                 or a BVH file whose skeleton receives the motion\n"
      "--scale S        multiplies lengths of IN (and of a --to file), e.g. 0.1 for MakeHuman decimetres\n"
      "--z-up           IN (and a --to file) is Z-up facing -Y (MakeHuman, Blender)\n"
      "--end-effectors  keep wrists and ankles where the source has them relative to its root (scaled)",

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "gestura/anim/sampler.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
@@ -112,6 +113,36 @@ TEST(AvatarSource, ASignIsPerformedOnTheMakeHumanAvatar) {
   EXPECT_GT(r.stats.frames, 10);
   const auto problem = synthesis_problem(r, rig, 0.05f);
   EXPECT_FALSE(problem.has_value()) << *problem;
+  // In the held posture the right (dominant) hand is at the chin, the left hand stays down.
+  Pose pose;
+  sample_clip(r.clip, 0.5f * (r.plan.sign_start + r.plan.sign_end), WrapMode::Clamp, rig.rest, pose);
+  std::vector<mat4> model(mh->skeleton.size());
+  local_to_model(mh->skeleton, pose, model);
+  const BodySite* chin = find_site(rig.sites, "chin");
+  ASSERT_NE(chin, nullptr);
+  const vec3 chin_at = vec3(model[static_cast<std::size_t>(chin->joint)] * vec4(chin->local_offset, 1.0f));
+  const auto joint = [&](const char* name) { return vec3(model[static_cast<std::size_t>(mh->skeleton.find(name))][3]); };
+  // hamtouch: some part of the hand touches the chin (joint centres sit ~1–2 cm under the skin).
+  float nearest = 1e9f;
+  for (const char* part : {"r_wrist", "r_thumb_tip", "r_index1", "r_index_tip", "r_middle1", "r_middle2", "r_middle_tip",
+                           "r_ring1", "r_pinky1", "r_pinky_tip"})
+    nearest = std::min(nearest, glm::distance(joint(part), chin_at));
+  EXPECT_LT(nearest, 0.05f);
+  EXPECT_LT(joint("l_wrist").y, joint("l_elbow").y);
+}
+
+TEST(AvatarSource, MakeHumanArmsHangLikeTheDefaultAvatarsWithItsLimits) {
+  NEED_MAKEHUMAN();
+  // MakeHuman's A-pose is re-posed: the wrists hang well below the shoulders, close to the body.
+  for (const char* side : {"l_", "r_"}) {
+    const vec3 shoulder = joint_at(mh->skeleton, (std::string(side) + "shoulder").c_str());
+    const vec3 wrist = joint_at(mh->skeleton, (std::string(side) + "wrist").c_str());
+    EXPECT_GT(shoulder.y - wrist.y, 0.4f) << side;
+    EXPECT_LT(std::abs(wrist.x - shoulder.x), 0.12f) << side;
+  }
+  const int elbow = mh->skeleton.find("r_elbow");
+  ASSERT_GE(elbow, 0);
+  EXPECT_GT(mh->skeleton.dofs[static_cast<std::size_t>(elbow)].count(), 0);
 }
 
 TEST(AvatarSource, DefaultSpecBuildsTheGeneratedAvatar) {

@@ -6,6 +6,8 @@
 #include <limits>
 #include <string_view>
 
+#include "gestura/body/avatar_skeleton.hpp"
+#include "gestura/body/skinning.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/makehuman.hpp"
 
@@ -74,6 +76,52 @@ void add_missing_joints(Avatar& a) {
   s.validate();
 }
 
+// MakeHuman stands in an A-pose; the default avatar, whose ready posture and joint limits the signing
+// rig reuses, has its arms hanging. Re-pose the upper and lower arms onto the default skeleton's
+// directions, skin the mesh into that pose and make it the new bind pose (rest rotations stay identity,
+// so only the joint offsets change).
+void lower_arms_like_default(Avatar& a, const Skeleton& reference) {
+  Skeleton& s = a.skeleton;
+  const std::vector<vec3> ref = rest_joint_positions(reference);
+  const Pose rest = rest_pose(s);
+  std::vector<mat4> bind(s.size()), posed_model(s.size());
+  local_to_model(s, rest, bind);
+  const auto at = [&](int j) { return vec3(bind[static_cast<std::size_t>(j)][3]); };
+  Pose posed = rest;
+  for (const char* side : {"l_", "r_"}) {
+    const std::string p = side;
+    const int sh = s.find(p + "shoulder"), el = s.find(p + "elbow"), wr = s.find(p + "wrist");
+    const int rsh = reference.find(p + "shoulder"), rel = reference.find(p + "elbow"), rwr = reference.find(p + "wrist");
+    if (sh < 0 || el < 0 || wr < 0 || rsh < 0 || rel < 0 || rwr < 0) throw Error("MakeHuman rig: no " + p + "shoulder/elbow/wrist");
+    const auto dir = [](const vec3& from, const vec3& to) { return glm::normalize(to - from); };
+    const quat upper = glm::rotation(dir(at(sh), at(el)), dir(ref[static_cast<std::size_t>(rsh)], ref[static_cast<std::size_t>(rel)]));
+    const quat fore = glm::rotation(upper * dir(at(el), at(wr)), dir(ref[static_cast<std::size_t>(rel)], ref[static_cast<std::size_t>(rwr)]));
+    // The shoulder's parents keep their rest orientation (identity), so its local rotation is `upper`;
+    // the elbow's model rotation is fore·upper, local inverse(upper)·fore·upper.
+    posed.rotations[static_cast<std::size_t>(sh)] = upper;
+    posed.rotations[static_cast<std::size_t>(el)] = glm::inverse(upper) * fore * upper;
+  }
+  local_to_model(s, posed, posed_model);
+  std::vector<mat4> skinning(s.size());
+  for (std::size_t j = 0; j < s.size(); ++j) skinning[j] = posed_model[j] * glm::inverse(bind[j]);
+  Mesh& m = a.mesh;
+  std::vector<vec3> positions(m.positions.size()), normals(m.normals.size());
+  skin_positions_normals(skinning, m.joints, m.weights, m.positions, m.normals, positions, normals);
+  m.positions = std::move(positions);
+  m.normals = std::move(normals);
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    const vec3 here(posed_model[j][3]);
+    s.rest_translations[j] = s.parents[j] < 0 ? here : here - vec3(posed_model[static_cast<std::size_t>(s.parents[j])][3]);
+  }
+}
+
+// MakeHuman's rig has no joint limits; the joints that share an H-Anim name with the default
+// skeleton take its degrees of freedom and limits (valid once the arms hang like the default's).
+void copy_limits(Skeleton& s, const Skeleton& reference) {
+  for (std::size_t j = 0; j < s.size(); ++j)
+    if (const int k = reference.find(s.names[j]); k >= 0) s.dofs[j] = reference.dofs[static_cast<std::size_t>(k)];
+}
+
 }  // namespace
 
 Avatar load_makehuman_avatar(const std::string& directory) {
@@ -98,7 +146,10 @@ Avatar load_makehuman_avatar(const std::string& directory) {
   a.mesh.materials.assign(a.mesh.positions.size(), static_cast<std::uint8_t>(MaterialId::Skin));
   paint_eye(kept, kept.find_group("helper-l-eye"), a.mesh);
   paint_eye(kept, kept.find_group("helper-r-eye"), a.mesh);
+  const Skeleton reference = build_avatar_skeleton();
+  lower_arms_like_default(a, reference);
   add_missing_joints(a);
+  copy_limits(a.skeleton, reference);
   a.params.height = top - floor;
   return a;
 }
