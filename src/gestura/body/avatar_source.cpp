@@ -44,15 +44,8 @@ void paint_eye(const GroupedMesh& source, int group, Mesh& mesh) {
 // head at the top of the mesh, above the skull base.
 void add_missing_joints(Avatar& a) {
   Skeleton& s = a.skeleton;
-  const std::vector<mat4> model = [&] {
-    std::vector<mat4> m(s.size());
-    for (std::size_t j = 0; j < s.size(); ++j) {
-      const mat4 local = glm::translate(mat4(1.0f), s.rest_translations[j]) * glm::mat4_cast(s.rest_rotations[j]) *
-                         glm::scale(mat4(1.0f), s.rest_scales[j]);
-      m[j] = s.parents[j] < 0 ? local : m[static_cast<std::size_t>(s.parents[j])] * local;
-    }
-    return m;
-  }();
+  std::vector<mat4> model(s.size());
+  local_to_model(s, rest_pose(s), model);
   const auto at = [&](int j) { return vec3(model[static_cast<std::size_t>(j)][3]); };
   const auto need = [&](const char* name) {
     const int j = s.find(name);

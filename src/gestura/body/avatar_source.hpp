@@ -17,8 +17,10 @@ namespace gestura {
 Avatar load_avatar(const std::string& spec, const AvatarParams& params = {});
 
 // The MakeHuman body as an Avatar: body and eyeball geometry only (the helper tights, skirt, hair,
-// teeth and joint cubes dropped), feet on y = 0, all skin except the eyes (white, iris, pupil),
-// plus the joints the default skeleton has and MakeHuman's lacks (vt1, skull_tip).
+// teeth and joint cubes dropped), feet on y = 0, all skin except the eyes (white, iris, pupil).
+// The A-pose is re-posed so the arms hang like the default avatar's (mesh re-skinned into that
+// bind pose), joints named like the default skeleton's take its degrees of freedom and limits, and
+// the joints MakeHuman lacks are added (vt1, skull_tip). params.height is the measured height.
 Avatar load_makehuman_avatar(const std::string& directory);
 
 }  // namespace gestura
