@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -168,4 +169,30 @@ TEST(AvatarSource, BadSpecsSayWhatIsWrong) {
   const std::string empty = std::filesystem::temp_directory_path() / "gestura_avatar_source_empty";
   std::filesystem::create_directories(empty);
   EXPECT_NE(message("makehuman:" + empty).find("base.obj"), std::string::npos) << message("makehuman:" + empty);
+}
+
+namespace {
+
+// Runs the CLI; returns its exit status and puts stdout+stderr into `output`.
+int run_cli(const std::string& args, std::string& output) {
+  FILE* pipe = popen((std::string(GESTURA_CLI) + " " + args + " 2>&1").c_str(), "r");
+  if (!pipe) return -1;
+  char buffer[4096];
+  output.clear();
+  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+  return pclose(pipe);
+}
+
+}  // namespace
+
+TEST(AvatarSourceCli, AvatarFlagChoosesTheMakeHumanAvatarOrNamesTheBadSpec) {
+  std::string out;
+  EXPECT_NE(run_cli("render --rest --avatar robot -o /tmp/gestura_avatar_source_bad.png", out), 0);
+  EXPECT_NE(out.find("unknown avatar 'robot'"), std::string::npos) << out;
+  EXPECT_NE(run_cli("sign --avatar makehuman:/nonexistent --names hamflathand,hamchest -o /tmp/x.json", out), 0);
+  EXPECT_NE(out.find("no such directory"), std::string::npos) << out;
+  if (!std::filesystem::exists(makehuman_dir() + "/base.obj")) GTEST_SKIP() << "no MakeHuman assets";
+  ASSERT_EQ(run_cli("avatar info --avatar makehuman:" + makehuman_dir(), out), 0) << out;
+  EXPECT_NE(out.find("skull_tip"), std::string::npos) << out;
+  EXPECT_NE(out.find("l_pinky_tip"), std::string::npos) << out;
 }
