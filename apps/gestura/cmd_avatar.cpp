@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "command.hpp"
-#include "gestura/body/avatar.hpp"
+#include "gestura/body/avatar_source.hpp"
 #include "gestura/body/face_morphs.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/body/body_sites.hpp"
@@ -24,6 +24,8 @@ const char* kUsage =
     "degrees of freedom, vertex and triangle counts and morph names.\n"
     "\n"
     "PARAMS:\n"
+    "  --avatar SPEC         default (built from the parameters below) or makehuman:DIR\n"
+    "                        (MakeHuman base mesh + default rig; the parameters are then ignored)\n"
     "  --height M            crown to floor in metres (1.0 .. 2.5, default 1.70)\n"
     "  --build X             girth multiplier (0.6 .. 1.6, default 1)\n"
     "  --sex S               female | male | neutral (default neutral)\n"
@@ -46,6 +48,7 @@ struct Request {
   gestura::AvatarParams params;
   gestura::AvatarOptions options;
   std::string output;
+  std::string spec = "default";  // --avatar: default or makehuman:DIR
 };
 
 Request parse(const std::vector<std::string>& args, std::size_t first) {
@@ -53,6 +56,7 @@ Request parse(const std::vector<std::string>& args, std::size_t first) {
   for (std::size_t i = first; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "-o" || a == "--output") r.output = gestura::cli::flag_value(args, i);
+    else if (a == "--avatar") r.spec = gestura::cli::flag_value(args, i);
     else if (a == "--height") r.params.height = parse_number(a, gestura::cli::flag_value(args, i));
     else if (a == "--build") r.params.build = parse_number(a, gestura::cli::flag_value(args, i));
     else if (a == "--sex") r.params.sex = gestura::parse_sex(gestura::cli::flag_value(args, i));
@@ -90,12 +94,16 @@ void print_info(const gestura::Avatar& a, gestura::SkinWeightMethod weights) {
   std::printf("\n");
 }
 
+gestura::Avatar build(const Request& r) {
+  return r.spec == "default" ? gestura::build_avatar(r.params, r.options) : gestura::load_avatar(r.spec);
+}
+
 int run(const std::vector<std::string>& args) {
   if (args.empty()) throw Error("avatar: missing subcommand (export, info or sites)");
   if (args[0] == "export") {
     const Request r = parse(args, 1);
     if (r.output.empty()) throw Error("avatar export: missing -o FILE.glb");
-    const gestura::Avatar a = gestura::build_avatar(r.params, r.options);
+    const gestura::Avatar a = build(r);
     gestura::write_glb(r.output, a.skeleton, a.mesh, "gestura_avatar");
     std::printf("wrote %s: %zu joints, %zu vertices, %zu triangles, %zu morph targets\n", r.output.c_str(),
                 a.skeleton.size(), a.mesh.vertex_count(), a.mesh.triangle_count(), a.mesh.morphs.size());
@@ -104,7 +112,7 @@ int run(const std::vector<std::string>& args) {
   if (args[0] == "info") {
     const Request r = parse(args, 1);
     if (!r.output.empty()) throw Error("avatar info: -o is only for export");
-    print_info(gestura::build_avatar(r.params, r.options), r.options.weights);
+    print_info(build(r), r.options.weights);
     return 0;
   }
   if (args[0] == "sites") {

@@ -36,6 +36,7 @@ The file appears only when complete.
   --cpu-skinning          skin on the CPU and upload (comparison path)
   --rest                  the rest pose, no clip (the default)
   --test-motion           the built-in test motion (the right hand waves, 2 s)
+  --avatar SPEC                    default (generated) or makehuman:DIR (MakeHuman assets)
   --height M, --build X, --sex S   the avatar, as in gestura avatar export)";
 
 // Fills job.orbit (and whether it aims at the body) from "YAW,PITCH,DIST[,X,Y,Z]".
@@ -67,6 +68,7 @@ int run(const std::vector<std::string>& args) {
   RenderJob job;
   Motion motion = Motion::Rest;
   AvatarParams avatar;
+  std::string avatar_spec = "default";
   std::string clip_path;
   bool motion_given = false;
   auto set_motion = [&](Motion m) {
@@ -89,12 +91,12 @@ int run(const std::vector<std::string>& args) {
     else if (a == "--cpu-skinning") job.skinning = SkinningDevice::Cpu;
     else if (a == "--rest") set_motion(Motion::Rest);
     else if (a == "--test-motion") set_motion(Motion::TestMotion);
-    else if (parse_avatar_flag(args, i, avatar)) continue;
+    else if (parse_avatar_flag(args, i, avatar, avatar_spec)) continue;
     else if (!a.empty() && a[0] == '-') throw Error("unknown flag " + a + " (see gestura render --help)");
     else clip_path = a, set_motion(Motion::ClipFile);
   }
   validate(job);
-  const RenderSubject subject = load_render_subject(motion, clip_path, avatar);
+  const RenderSubject subject = load_render_subject(motion, clip_path, avatar, {}, avatar_spec);
   render_to_file(subject, job);
   return 0;
 }

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "command.hpp"
+#include "gestura/body/avatar_source.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
 #include "motion_output.hpp"
@@ -15,11 +16,13 @@ using namespace gestura;
 int run_sign(const std::vector<std::string>& args) {
   cli::SignSource source;
   cli::MotionOutput out;
+  std::string avatar_spec = "default";
   float speed = 1.0f;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (cli::parse_sign_source_flag(args, i, source) || cli::parse_motion_output_flag(args, i, out)) continue;
-    if (a == "--speed") {
+    if (a == "--avatar") avatar_spec = cli::flag_value(args, i);
+    else if (a == "--speed") {
       const std::string v = cli::flag_value(args, i);
       char* end = nullptr;
       speed = std::strtof(v.c_str(), &end);
@@ -29,7 +32,7 @@ int run_sign(const std::vector<std::string>& args) {
   const sign::HamSign parsed = cli::load_sign(source);
   cli::check_motion_output(out);
 
-  const Avatar avatar = build_avatar();
+  const Avatar avatar = load_avatar(avatar_spec);
   const SigningRig rig = make_signing_rig(avatar);
   PlanOptions plan;
   plan.speed = speed;
@@ -46,10 +49,11 @@ const cli::Registration reg{{
     "sign",
     "perform one sign from HamNoSys or SiGML on the default avatar",
     "usage: gestura sign (--hamnosys TEXT | --names SYMBOLS | --sigml FILE [--gloss NAME]) -o OUT\n"
-    "                    [--speed S] [--fps N] [--camera LIST] [--size WxH] [--sheet]\n\n"
+    "                    [--avatar SPEC] [--speed S] [--fps N] [--camera LIST] [--size WxH] [--sheet]\n\n"
     "TEXT is HamNoSys 4 in Unicode; SYMBOLS a comma-separated list of HamNoSys symbol names\n"
     "(hamflathand,hamextfingeru,...). --speed scales the tempo (0.25–4). The dominant hand is the\n"
-    "right hand. A single .png shows the middle of the sign.\n" +
+    "right hand. --avatar is default (the generated avatar) or makehuman:DIR (MakeHuman base mesh and\n"
+    "default rig). A single .png shows the middle of the sign.\n" +
         std::string(cli::kMotionOutputUsage),
     run_sign,
 }};

@@ -36,6 +36,7 @@ xvfb-run -a gestura view ...).
   --screenshot PATH.png  save the window after --frames frames and quit (for scripts, Xvfb)
   --frames N             frames before the screenshot                       [30]
   --at SECONDS           start paused at this time of the motion (for screenshots)
+  --avatar SPEC                    default (generated) or makehuman:DIR (MakeHuman assets)
   --height M, --build X, --sex S   the avatar, as in gestura avatar export
 
 keys:  space play/pause   , . step one frame back/forward   1 2 3 speed 0.25x 0.5x 1x
@@ -106,6 +107,7 @@ int run(const std::vector<std::string>& args) {
   AvatarParams avatar;
   SignSource sign;
   bool motion_given = false;
+  std::string avatar_spec = "default";
   std::string clip_path, screenshot;
   ImageSize size{1280, 720};
   CameraPreset start = CameraPreset::Front;
@@ -126,7 +128,7 @@ int run(const std::vector<std::string>& args) {
     } else if (a == "--at") start_at = parse_seconds(flag_value(args, i), a);
     else if (a == "--rest") motion = Motion::Rest, motion_given = true;
     else if (a == "--test-motion") motion = Motion::TestMotion, motion_given = true;
-    else if (parse_avatar_flag(args, i, avatar)) continue;
+    else if (parse_avatar_flag(args, i, avatar, avatar_spec)) continue;
     else if (parse_sign_source_flag(args, i, sign)) continue;
     else if (!a.empty() && a[0] == '-') throw Error("unknown flag " + a + " (see gestura view --help)");
     // FILE or TEXT: an existing file or a motion file name is a clip; anything else is English to sign.
@@ -137,7 +139,7 @@ int run(const std::vector<std::string>& args) {
     if (motion_given) throw Error("show either a sign (--hamnosys, --names, --sigml) or CLIP.bvh / --rest / --test-motion");
     motion = Motion::Sign;
   }
-  const RenderSubject subject = load_render_subject(motion, clip_path, avatar, sign);
+  const RenderSubject subject = load_render_subject(motion, clip_path, avatar, sign, avatar_spec);
   Animator animator(subject);
   std::optional<StagedFile> screenshot_file;
   if (!screenshot.empty()) screenshot_file.emplace(screenshot);

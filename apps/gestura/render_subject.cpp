@@ -9,7 +9,7 @@
 
 #include "command.hpp"
 #include "gestura/anim/clip_by_name.hpp"
-#include "gestura/body/avatar.hpp"
+#include "gestura/body/avatar_source.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/lexicon/default_lexicon.hpp"
@@ -75,24 +75,25 @@ float parse_number(const std::string& flag, const std::string& text) {
 
 }  // namespace
 
-bool parse_avatar_flag(const std::vector<std::string>& args, std::size_t& i, AvatarParams& params) {
+bool parse_avatar_flag(const std::vector<std::string>& args, std::size_t& i, AvatarParams& params, std::string& spec) {
   const std::string& a = args[i];
   if (a == "--height") params.height = parse_number(a, flag_value(args, i));
   else if (a == "--build") params.build = parse_number(a, flag_value(args, i));
   else if (a == "--sex") params.sex = parse_sex(flag_value(args, i));
+  else if (a == "--avatar") spec = flag_value(args, i);
   else return false;
   return true;
 }
 
 RenderSubject load_render_subject(Motion motion, const std::string& clip_path, const AvatarParams& params,
-                                  const SignSource& sign_source) {
+                                  const SignSource& sign_source, const std::string& avatar_spec) {
   params.validate();
   // Read the motion before building the avatar: a bad file or sign fails at once.
   std::optional<MotionFile> file;
   if (motion == Motion::ClipFile) file = read_motion(clip_path);
   std::optional<sign::HamSign> notation;
   if (motion == Motion::Sign && sign_source.text.empty()) notation = load_sign(sign_source);
-  Avatar avatar = build_avatar(params);
+  Avatar avatar = load_avatar(avatar_spec, params);
   std::optional<Clip> performed;
   if (motion == Motion::Sign && !sign_source.text.empty()) {
     DefaultLexicon lexicon;
