@@ -7,22 +7,15 @@
 #include <vector>
 
 #include "command.hpp"
+#include "gestura/body/avatar_source.hpp"
 #include "gestura/core/error.hpp"
-#include "gestura/io/bvh.hpp"
-#include "gestura/io/gltf_animation.hpp"
-#include "gestura/io/joint_positions_json.hpp"
 #include "gestura/lexicon/default_lexicon.hpp"
-#include "gestura/render/render_job.hpp"
-#include "gestura/render/subject.hpp"
 #include "gestura/sentence/signer.hpp"
+#include "motion_output.hpp"
 
 namespace {
 
 using namespace gestura;
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 float parse_speed(const std::string& v) {
   char* end = nullptr;
@@ -39,16 +32,15 @@ void print_timeline(const SentencePerformance& p) {
 
 int run_say(const std::vector<std::string>& args) {
   std::optional<std::string> text;
-  std::string output, camera = "front", size = "1280x720";
+  cli::MotionOutput out;
+  std::string avatar_spec = "default";
   SayOptions options;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if (a == "-o" || a == "--output") output = cli::flag_value(args, i);
-    else if (a == "--speed") options.speed = parse_speed(cli::flag_value(args, i));
-    else if (a == "--camera") camera = cli::flag_value(args, i);
-    else if (a == "--size") size = cli::flag_value(args, i);
+    if (cli::parse_motion_output_flag(args, i, out)) continue;
+    if (a == "--speed") options.speed = parse_speed(cli::flag_value(args, i));
+    else if (a == "--avatar") avatar_spec = cli::flag_value(args, i);
     else if (a == "--lang") options.lang = cli::flag_value(args, i);
-    else if (a == "--fps") options.fps = static_cast<float>(parse_fps(cli::flag_value(args, i)));
     else if (a == "--no-mouthing") options.mouthing = false;
     else if (a == "--no-nonmanuals") options.nonmanuals = false;
     else if (a.size() > 1 && a[0] == '-') throw Error("unknown flag '" + a + "' (see gestura say --help)");
@@ -56,52 +48,34 @@ int run_say(const std::vector<std::string>& args) {
     else text = a;
   }
   if (!text) throw Error("missing TEXT (see gestura say --help)");
-  if (!output.empty() && !ends_with(output, ".mp4") && !ends_with(output, ".webm") && !ends_with(output, ".gif") &&
-      !ends_with(output, ".png") && !ends_with(output, ".glb") && !ends_with(output, ".gltf") &&
-      !ends_with(output, ".bvh") && !ends_with(output, ".json"))
-    throw Error("-o " + output + ": unknown output type (use .mp4 .webm .gif .png .glb .bvh .json)");
+  // A sentence is many moments: a .png is a contact sheet unless one moment is all that is wanted.
+  if (out.path.ends_with(".png")) out.sheet = true;
+  if (!out.path.empty()) cli::check_motion_output(out);
+  options.fps = static_cast<float>(out.fps);
 
   DefaultLexicon lexicon;
-  const Avatar avatar = build_avatar();
+  const Avatar avatar = load_avatar(avatar_spec);
   const Signer signer(avatar, lexicon.layers());
   const SentencePerformance p = signer.say(*text, options);
   for (const std::string& note : p.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
-  if (output.empty()) {
-    print_timeline(p);
-    return 0;
-  }
-
-  if (ends_with(output, ".json")) write_joint_positions_json(output, avatar.skeleton, p.clip, options.fps);
-  else if (ends_with(output, ".bvh")) save_bvh(output, make_bvh(avatar.skeleton, p.clip, 1.0f / options.fps));
-  else if (ends_with(output, ".glb") || ends_with(output, ".gltf")) save_gltf(output, avatar.skeleton, p.clip, &avatar.mesh);
-  else {
-    RenderJob job;
-    job.output = output;
-    job.size = parse_image_size(size);
-    job.fps = static_cast<int>(options.fps);
-    job.cameras = parse_camera_list(camera);
-    job.sheet = ends_with(output, ".png");
-    validate(job);
-    RenderSubject subject{avatar.skeleton, avatar.mesh, p.clip};
-    render_to_file(subject, job);
-  }
+  if (!out.path.empty()) cli::write_motion(out, avatar.skeleton, p.clip, &avatar.mesh, 0.5f * p.duration);
   print_timeline(p);
-  std::printf("wrote %s\n", std::filesystem::absolute(output).c_str());
+  if (!out.path.empty()) std::printf("wrote %s\n", std::filesystem::absolute(out.path).c_str());
   return 0;
 }
 
 const cli::Registration reg{{
     "say",
     "sign English text in ASL on the default avatar",
-    "usage: gestura say TEXT [-o OUT] [--speed S] [--lang ase] [--fps N] [--camera LIST] [--size WxH]\n"
-    "                   [--no-mouthing] [--no-nonmanuals]\n\n"
+    "usage: gestura say TEXT [-o OUT] [--speed S] [--lang ase] [--avatar SPEC] [--fps N] [--camera LIST]\n"
+    "                   [--size WxH] [--no-mouthing] [--no-nonmanuals]\n\n"
     "TEXT is translated to ASL glosses (gestura gloss shows how), each gloss is signed from the lexicon\n"
     "(built-in data/lexicon plus the user lexicon) or fingerspelled, the signs are joined without\n"
     "returning to rest, and the face adds mouthing, question brows, negation headshake and blinks.\n"
-    "Without -o the gloss timeline is printed. OUT by extension: .mp4 .webm .gif video, .png contact\n"
-    "sheet, .glb/.gltf (skeleton, mesh, animation with face morph weights), .bvh, .json joint positions.\n"
-    "--speed 0.25–2 scales the tempo. Only 'ase' (ASL) has a lexicon. At most 16 KiB of text and 300\n"
-    "glosses per call: split longer text.",
+    "Without -o the gloss timeline is printed. " + std::string(cli::kMotionOutputUsage) + "\n"
+    "Here a .png is always a 4x4 contact sheet of the sentence; .glb/.gltf carry the face morph weights.\n"
+    "--speed 0.25–2 scales the tempo. --avatar is default (the generated avatar) or makehuman:DIR.\n"
+    "Only 'ase' (ASL) has a lexicon. At most 16 KiB of text and 300 glosses per call: split longer text.",
     run_say,
 }};
 

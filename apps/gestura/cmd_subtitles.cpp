@@ -7,9 +7,10 @@
 #include <vector>
 
 #include "command.hpp"
+#include "gestura/body/avatar_source.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/subtitles.hpp"
-#include "gestura/lexicon/lexicon_files.hpp"
+#include "gestura/lexicon/default_lexicon.hpp"
 #include "gestura/render/render_job.hpp"
 #include "gestura/render/subject.hpp"
 #include "gestura/sentence/signer.hpp"
@@ -32,7 +33,8 @@ some cues did not fit, 1 on malformed subtitles or bad options.
   --slack S           seconds past a cue's end still counted in time  [0.25]
   --size WxH          image size (even sides for video)              [1280x720]
   --fps N             frames per second, 1..120                      [30]
-  --camera LIST       front, side, three-quarter, top, side-section   [front])";
+  --camera LIST       front, side, three-quarter, top, side-section   [front]
+  --avatar SPEC       default (the generated avatar) or makehuman:DIR [default])";
 
 bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -77,6 +79,7 @@ int run(const std::vector<std::string>& args) {
   std::optional<std::string> input;
   RenderJob job;
   SubtitleFitOptions fit;
+  std::string avatar_spec = "default";
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "-o" || a == "--output") job.output = flag_value(args, i);
@@ -85,6 +88,7 @@ int run(const std::vector<std::string>& args) {
     else if (a == "--size") job.size = parse_image_size(flag_value(args, i));
     else if (a == "--fps") job.fps = parse_fps(flag_value(args, i));
     else if (a == "--camera") job.cameras = parse_camera_list(flag_value(args, i));
+    else if (a == "--avatar") avatar_spec = flag_value(args, i);
     else if (a.size() > 1 && a[0] == '-') throw Error("unknown flag '" + a + "' (see gestura subtitles --help)");
     else if (input) throw Error("give one subtitle file");
     else input = a;
@@ -98,18 +102,9 @@ int run(const std::vector<std::string>& args) {
   for (const std::string& note : subs.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
   if (subs.cues.empty()) throw Error(*input + ": no subtitle cues");
 
-  const std::vector<std::string> files = builtin_lexicon_files();
-  if (files.empty()) throw Error("no built-in lexicon found (data/lexicon/*.jsonl or $GESTURA_BUILTIN_LEXICON)");
-  Lexicon builtin = load_builtin_lexicon(files);
-  std::optional<Lexicon> user;
-  LayeredLexicon layers;
-  layers.push_layer(builtin);
-  if (const std::string path = default_user_lexicon_path(); std::filesystem::exists(path)) {
-    user.emplace(Lexicon::open(path));
-    layers.push_layer(*user);
-  }
-  const Avatar avatar = build_avatar();
-  const Signer signer(avatar, layers);
+  DefaultLexicon lexicon;
+  const Avatar avatar = load_avatar(avatar_spec);
+  const Signer signer(avatar, lexicon.layers());
   SayOptions say;
   say.fps = static_cast<float>(job.fps);
   const SignFunction sign = [&](std::string_view text, float speed) {
