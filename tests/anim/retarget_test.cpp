@@ -16,15 +16,13 @@
 #include "gestura/io/gltf_animation.hpp"
 #include "gestura/skeleton/joint_names.hpp"
 #include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
 using namespace gestura;
 
-std::string shared_data() {
-  if (const char* dir = std::getenv("GESTURA_SHARED_DATA")) return dir;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 BvhFile load_pose(const std::string& name) {
   return load_bvh(shared_data() + "/makehuman/poses/" + name + ".bvh", {0.1f, true});

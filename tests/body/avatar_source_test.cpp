@@ -14,16 +14,13 @@
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
 #include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 using namespace gestura;
 
 namespace {
 
-std::string makehuman_dir() {
-  const char* env = std::getenv("GESTURA_SHARED_DATA");
-  const std::string data = env && std::filesystem::exists(env) ? env : GESTURA_SHARED_DATA;
-  return data + "/makehuman";
-}
+std::string makehuman_dir() { return test::shared_data() + "/makehuman"; }
 
 // Loaded once: the OBJ and the weights take a moment.
 const Avatar* makehuman() {

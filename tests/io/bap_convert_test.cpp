@@ -14,6 +14,7 @@
 #include "gestura/io/bvh.hpp"
 #include "gestura/skeleton/rotation_order.hpp"
 #include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace gestura {
 namespace {
@@ -21,10 +22,7 @@ namespace {
 using test::CliRun;
 using test::run_cli;
 
-std::string shared_data() {
-  const char* dir = std::getenv("GESTURA_SHARED_DATA");
-  return dir ? dir : GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 // One second at 30 Hz: the root walks and turns, the spine, head and both arms move about every
 // free axis, each angle a sine inside the middle half of its range.

@@ -14,16 +14,13 @@
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
 #include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
 using namespace gestura;
 
-std::string shared_data() {
-  // The build points at ../shared/data beside the source tree; a worktree elsewhere can say where.
-  if (const char* dir = std::getenv("GESTURA_SHARED_DATA")) return dir;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 std::string read_text(const std::string& path) {
   std::ifstream file(path, std::ios::binary);

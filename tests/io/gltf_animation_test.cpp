@@ -16,15 +16,13 @@
 #include "gestura/io/bvh.hpp"
 #include "gestura/io/gltf_animation.hpp"
 #include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
 using namespace gestura;
 
-std::string shared_data() {
-  if (const char* dir = std::getenv("GESTURA_SHARED_DATA")) return dir;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 std::string temp_path(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("gestura_gltf_" + std::to_string(getpid()) + "_" + name)).string();

@@ -16,6 +16,7 @@
 #include "gestura/io/openpose_json.hpp"
 #include "gestura/io/pose_format.hpp"
 #include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
@@ -204,10 +205,7 @@ TEST(OpenPoseJson, FramesCarryTheProjectedKeypoints) {
 using test::CliRun;
 using test::run_cli;
 
-std::string shared_data() {
-  if (const char* dir = std::getenv("GESTURA_SHARED_DATA")) return dir;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 TEST(PoseFormatCli, ConvertWritesPoseAndOpenPoseJson) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("gestura_pose_" + std::to_string(getpid()));

@@ -7,6 +7,7 @@
 
 #include "support/cli.hpp"
 #include "temp_dir.hpp"
+#include "support/shared_data.hpp"
 
 using gestura::testing::TempDir;
 
@@ -43,8 +44,7 @@ TEST(LexiconCli, AddShowSearchExportRemove) {
 
 TEST(LexiconCli, AddFromSigmlAndImportSigml) {
   TempDir dir;
-  const char* from_env = std::getenv("GESTURA_SHARED_DATA");
-  const std::string data = from_env && !std::filesystem::exists(GESTURA_SHARED_DATA) ? from_env : GESTURA_SHARED_DATA;
+  const std::string data = gestura::test::shared_data();
   const std::string absorb = data + "/sigml-isl/absorb.sigml";
   EXPECT_EQ(gestura_cli(dir, "lexicon add --gloss absorb --lang ins --sigml '" + absorb + "'").status, 0);
   const CliRun show = gestura_cli(dir, "lexicon show absorb --lang ins");

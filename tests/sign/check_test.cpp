@@ -8,8 +8,8 @@
 #include <string>
 
 #include "gestura/sign/sign_check.hpp"
-#include "shared_data.hpp"
 #include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
