@@ -2,7 +2,6 @@
 // avatar (A-pose, metres): bone directions agree, the sitting pose sits, end effectors follow when
 // asked, and a clip played on its own skeleton comes out unchanged.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -16,15 +15,14 @@
 #include "gestura/io/bvh.hpp"
 #include "gestura/io/gltf_animation.hpp"
 #include "gestura/skeleton/joint_names.hpp"
+#include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
 using namespace gestura;
 
-std::string shared_data() {
-  if (const char* dir = std::getenv("GESTURA_SHARED_DATA")) return dir;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 BvhFile load_pose(const std::string& name) {
   return load_bvh(shared_data() + "/makehuman/poses/" + name + ".bvh", {0.1f, true});
@@ -237,28 +235,15 @@ TEST(Retarget, BadMappingIsAnError) {
   EXPECT_THROW(retarget(src.skeleton, src.clip, other), Error);
 }
 
-struct CliRun {
-  int exit_code = -1;
-  std::string output;
-};
-
-CliRun run_cli(const std::string& args) {
-  CliRun run;
-  FILE* pipe = popen((std::string(GESTURA_CLI) + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return run;
-  char buffer[4096];
-  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) run.output.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using gestura::test::CliRun;
+using gestura::test::run_cli;
 
 TEST(RetargetCli, WritesTheAvatarSkeletonWithThePose) {
   const std::string out =
       (std::filesystem::temp_directory_path() / ("gestura_retarget_" + std::to_string(getpid()) + ".bvh")).string();
   const std::string in = shared_data() + "/makehuman/poses/sit01.bvh";
   const CliRun run = run_cli("retarget '" + in + "' -o '" + out + "' --scale 0.1 --z-up --end-effectors");
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ASSERT_EQ(run.status, 0) << run.output;
   const BvhFile written = load_bvh(out);
   std::filesystem::remove(out);
   const Skeleton avatar = build_avatar_skeleton();
@@ -268,17 +253,17 @@ TEST(RetargetCli, WritesTheAvatarSkeletonWithThePose) {
 
   const std::string glb = out + ".glb";
   const CliRun to_gltf = run_cli("retarget '" + in + "' -o '" + glb + "' --scale 0.1 --z-up");
-  ASSERT_EQ(to_gltf.exit_code, 0) << to_gltf.output;
+  ASSERT_EQ(to_gltf.status, 0) << to_gltf.output;
   const GltfAnimation gltf = load_gltf_animation(glb);
   std::filesystem::remove(glb);
   EXPECT_EQ(gltf.skeleton.names, avatar.names);
   const auto gp = positions_at(gltf.skeleton, gltf.clip, 0.0f);
   EXPECT_GT(bone(gltf.skeleton, gp, "r_hip", "r_knee").z, 0.6f);
 
-  EXPECT_EQ(run_cli("retarget '" + in + "' -o '" + out + ".fbx'").exit_code, 1);
-  EXPECT_EQ(run_cli("retarget '" + in + "' -o '" + out + "' --scale nope").exit_code, 1);
-  EXPECT_EQ(run_cli("retarget '" + in + "'").exit_code, 1);
-  EXPECT_EQ(run_cli("retarget /nonexistent.bvh -o '" + out + "'").exit_code, 1);
+  EXPECT_EQ(run_cli("retarget '" + in + "' -o '" + out + ".fbx'").status, 1);
+  EXPECT_EQ(run_cli("retarget '" + in + "' -o '" + out + "' --scale nope").status, 1);
+  EXPECT_EQ(run_cli("retarget '" + in + "'").status, 1);
+  EXPECT_EQ(run_cli("retarget /nonexistent.bvh -o '" + out + "'").status, 1);
 }
 
 }  // namespace

@@ -1,23 +1,18 @@
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
-namespace {
+#include "support/cli.hpp"
 
-int run(const std::string& command) {
-  const int status = std::system((command + " > /dev/null 2>&1").c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-}  // namespace
+using gestura::test::run_cli;
 
 TEST(AvatarSitesCli, WritesTheSignLocationsOfTheAvatarAsJson) {
   const std::string path = (std::filesystem::temp_directory_path() / "gestura_sites_test.json").string();
-  ASSERT_EQ(run(std::string(GESTURA_CLI) + " avatar sites -o " + path), 0);
+  const gestura::test::CliRun run = run_cli("avatar sites -o " + path);
+  ASSERT_EQ(run.status, 0) << run.output;
   std::ifstream file(path);
   const nlohmann::json j = nlohmann::json::parse(file);
   std::filesystem::remove(path);
@@ -35,5 +30,5 @@ TEST(AvatarSitesCli, WritesTheSignLocationsOfTheAvatarAsJson) {
   EXPECT_GT(y("forehead"), 1.5f);  // metres, feet on the floor, 1.70 m tall
   EXPECT_LT(y("forehead"), 1.75f);
   EXPECT_EQ(sites.at("nose").at("joint"), "skullbase");
-  EXPECT_NE(run(std::string(GESTURA_CLI) + " avatar sites -o /nonexistent-dir/x.json"), 0);
+  EXPECT_NE(run_cli("avatar sites -o /nonexistent-dir/x.json").status, 0);
 }

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -14,16 +13,14 @@
 #include "gestura/core/error.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
+#include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 using namespace gestura;
 
 namespace {
 
-std::string makehuman_dir() {
-  const char* env = std::getenv("GESTURA_SHARED_DATA");
-  const std::string data = env && std::filesystem::exists(env) ? env : GESTURA_SHARED_DATA;
-  return data + "/makehuman";
-}
+std::string makehuman_dir() { return test::shared_data() + "/makehuman"; }
 
 // Loaded once: the OBJ and the weights take a moment.
 const Avatar* makehuman() {
@@ -171,28 +168,18 @@ TEST(AvatarSource, BadSpecsSayWhatIsWrong) {
   EXPECT_NE(message("makehuman:" + empty).find("base.obj"), std::string::npos) << message("makehuman:" + empty);
 }
 
-namespace {
-
-// Runs the CLI; returns its exit status and puts stdout+stderr into `output`.
-int run_cli(const std::string& args, std::string& output) {
-  FILE* pipe = popen((std::string(GESTURA_CLI) + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return -1;
-  char buffer[4096];
-  output.clear();
-  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-  return pclose(pipe);
-}
-
-}  // namespace
-
 TEST(AvatarSourceCli, AvatarFlagChoosesTheMakeHumanAvatarOrNamesTheBadSpec) {
-  std::string out;
-  EXPECT_NE(run_cli("render --rest --avatar robot -o /tmp/gestura_avatar_source_bad.png", out), 0);
-  EXPECT_NE(out.find("unknown avatar 'robot'"), std::string::npos) << out;
-  EXPECT_NE(run_cli("sign --avatar makehuman:/nonexistent --names hamflathand,hamchest -o /tmp/x.json", out), 0);
-  EXPECT_NE(out.find("no such directory"), std::string::npos) << out;
+  using gestura::test::run_cli;
+  const gestura::test::CliRun robot = run_cli("render --rest --avatar robot -o /tmp/gestura_avatar_source_bad.png");
+  EXPECT_NE(robot.status, 0);
+  EXPECT_NE(robot.output.find("unknown avatar 'robot'"), std::string::npos) << robot.output;
+  const gestura::test::CliRun missing =
+      run_cli("sign --avatar makehuman:/nonexistent --names hamflathand,hamchest -o /tmp/x.json");
+  EXPECT_NE(missing.status, 0);
+  EXPECT_NE(missing.output.find("no such directory"), std::string::npos) << missing.output;
   if (!std::filesystem::exists(makehuman_dir() + "/base.obj")) GTEST_SKIP() << "no MakeHuman assets";
-  ASSERT_EQ(run_cli("avatar info --avatar makehuman:" + makehuman_dir(), out), 0) << out;
-  EXPECT_NE(out.find("skull_tip"), std::string::npos) << out;
-  EXPECT_NE(out.find("l_pinky_tip"), std::string::npos) << out;
+  const gestura::test::CliRun info = run_cli("avatar info --avatar makehuman:" + makehuman_dir());
+  ASSERT_EQ(info.status, 0) << info.output;
+  EXPECT_NE(info.output.find("skull_tip"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("l_pinky_tip"), std::string::npos) << info.output;
 }

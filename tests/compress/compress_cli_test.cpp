@@ -13,6 +13,7 @@
 #include "gestura/anim/sampler.hpp"
 #include "gestura/compress/compressed_clip.hpp"
 #include "gestura/io/bvh.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
@@ -62,10 +63,7 @@ double virtual_point_error(const gestura::BvhFile& a, const gestura::BvhFile& b)
   return worst;
 }
 
-std::string shared_data() {
-  const char* dir = std::getenv("GESTURA_SHARED_DATA");
-  return dir ? dir : GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 const std::string kData = shared_data();
 
 // The 60-frame MakeHuman face pose units (212 joints with end sites, dm, Z-up): compressed within the bound, and

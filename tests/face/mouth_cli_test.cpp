@@ -2,32 +2,15 @@
 // per process, so only a fresh process can show it).
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <string>
-#include <sys/wait.h>
 
-namespace {
+#include "support/cli.hpp"
 
-struct CliRun {
-  int status;
-  std::string output;
-};
-
-CliRun run_cli(const std::string& env, const std::string& args) {
-  const std::string command = env + " " + std::string(GESTURA_CLI) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  std::array<char, 512> buffer{};
-  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WEXITSTATUS(status), out};
-}
-
-}  // namespace
+using gestura::test::CliRun;
+using gestura::test::run_cli;
 
 TEST(FaceMouthCli, PrintsPhonemesAndChannels) {
-  const CliRun r = run_cli("", "mouth mom --start 1 --end 1.6");
+  const CliRun r = run_cli("mouth mom --start 1 --end 1.6");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("phonemes: m '0 m"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("PP           peak 1.00"), std::string::npos) << r.output;
@@ -35,13 +18,13 @@ TEST(FaceMouthCli, PrintsPhonemesAndChannels) {
 }
 
 TEST(FaceMouthCli, MissingEspeakDataIsAClearError) {
-  const CliRun r = run_cli("GESTURA_ESPEAK_DATA=/nonexistent/espeak", "mouth hello");
+  const CliRun r = run_cli("mouth hello", "GESTURA_ESPEAK_DATA=/nonexistent/espeak");
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_NE(r.output.find("eSpeak NG data not found in '/nonexistent/espeak'"), std::string::npos) << r.output;
 }
 
 TEST(FaceMouthCli, BadFlagsAreRefused) {
-  EXPECT_EQ(run_cli("", "mouth mom --end soon").status, 1);
-  EXPECT_EQ(run_cli("", "mouth mom --start 2 --end 1").status, 1);
-  EXPECT_EQ(run_cli("", "mouth").status, 1);
+  EXPECT_EQ(run_cli("mouth mom --end soon").status, 1);
+  EXPECT_EQ(run_cli("mouth mom --start 2 --end 1").status, 1);
+  EXPECT_EQ(run_cli("mouth").status, 1);
 }

@@ -2,7 +2,6 @@
 // round trip keeps every rotation to the BAP resolution (1e-5 rad per Euler angle).
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,29 +13,16 @@
 #include "gestura/io/bap.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/skeleton/rotation_order.hpp"
+#include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace gestura {
 namespace {
 
-struct CliRun {
-  int status;
-  std::string output;
-};
+using test::CliRun;
+using test::run_cli;
 
-std::string shared_data() {
-  const char* dir = std::getenv("GESTURA_SHARED_DATA");
-  return dir ? dir : GESTURA_SHARED_DATA;
-}
-
-CliRun run(const std::string& args) {
-  const std::string command = std::string(GESTURA_CLI) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  std::array<char, 512> buffer{};
-  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WEXITSTATUS(status), out};
-}
+using gestura::test::shared_data;
 
 // One second at 30 Hz: the root walks and turns, the spine, head and both arms move about every
 // free axis, each angle a sine inside the middle half of its range.
@@ -75,10 +61,10 @@ TEST(BapConvert, BvhToBapToBvhKeepsTheMotion) {
   const std::string bvh = ::testing::TempDir() + "bap_in.bvh", bap = ::testing::TempDir() + "bap_mid.bap",
                     back = ::testing::TempDir() + "bap_back.bvh";
   save_bvh(bvh, make_bvh(avatar, avatar_clip(avatar), 1.0f / 30.0f));
-  const CliRun to_bap = run("convert " + bvh + " " + bap);
+  const CliRun to_bap = run_cli("convert " + bvh + " " + bap);
   ASSERT_EQ(to_bap.status, 0) << to_bap.output;
   EXPECT_EQ(load_bap(bap).frame_count(), 31);
-  const CliRun to_bvh = run("convert " + bap + " " + back);
+  const CliRun to_bvh = run_cli("convert " + bap + " " + back);
   ASSERT_EQ(to_bvh.status, 0) << to_bvh.output;
 
   const BvhFile a = load_bvh(bvh), b = load_bvh(back);
@@ -109,7 +95,7 @@ TEST(BapConvert, BvhToBapToBvhKeepsTheMotion) {
 
 TEST(BapConvert, BvhWithoutHanimJointsIsAClearError) {
   const std::string out = ::testing::TempDir() + "tpose.bap";
-  const CliRun r = run("convert " + shared_data() + "/makehuman/poses/tpose.bvh " + out);
+  const CliRun r = run_cli("convert " + shared_data() + "/makehuman/poses/tpose.bvh " + out);
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.output.find("H-Anim"), std::string::npos) << r.output;
 }
@@ -122,7 +108,7 @@ TEST(BapConvert, MalformedBapNamesTheLine) {
     std::fputs("2.1 broken 30 1\n0 1 0\n", f);
     std::fclose(f);
   }
-  const CliRun r = run("convert " + bad + " " + out);
+  const CliRun r = run_cli("convert " + bad + " " + out);
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.output.find(bad + ":2:"), std::string::npos) << r.output;
   std::remove(bad.c_str());

@@ -1,7 +1,6 @@
 // BVH import/export: the MakeHuman files against numbers read from their text independently of the
 // parser, lossless round trips, FK of a hand-made chain, every kind of malformed input, the CLI.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -14,16 +13,14 @@
 #include "gestura/anim/sampler.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
+#include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
 using namespace gestura;
 
-std::string shared_data() {
-  // The build points at ../shared/data beside the source tree; a worktree elsewhere can say where.
-  if (const char* dir = std::getenv("GESTURA_SHARED_DATA")) return dir;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 std::string read_text(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
@@ -596,21 +593,8 @@ TEST(BvhErrors, MissingFileNamesThePath) {
 
 // ---- command line ----------------------------------------------------------------------------
 
-struct CliRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-CliRun run_cli(const std::string& args) {
-  CliRun run;
-  FILE* pipe = popen((std::string(GESTURA_CLI) + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return run;
-  char buffer[4096];
-  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) run.output.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using test::CliRun;
+using test::run_cli;
 
 std::string temp_path(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("gestura_bvh_test_" + std::to_string(getpid()) + "_" + name))
@@ -621,7 +605,7 @@ TEST(BvhCli, InfoReportsFramesAndJoints) {
   const std::string path = shared_data() + "/makehuman/poseunits/face-poseunits.bvh";
   const Scan declared = scan(read_text(path));
   const CliRun run = run_cli("info '" + path + "'");
-  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("frames:     " + std::to_string(declared.frames_declared) + "\n"), std::string::npos)
       << run.output;
   EXPECT_NE(run.output.find("joints:     " + std::to_string(declared.roots + declared.joints) + " (plus " +
@@ -635,17 +619,17 @@ TEST(BvhCli, ConvertWritesAFileThatReadsBackScaled) {
   const std::string in = shared_data() + "/makehuman/poses/run01.bvh";
   const std::string out = temp_path("run01_m.bvh");
   const CliRun run = run_cli("convert '" + in + "' '" + out + "' --scale 0.1");
-  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.status, 0) << run.output;
   const Scan a = scan(read_text(in)), b = scan(read_text(out));
   ASSERT_EQ(a.offsets.size(), b.offsets.size());
   for (std::size_t i = 0; i < a.offsets.size(); ++i) EXPECT_NEAR(b.offsets[i], 0.1 * a.offsets[i], 1e-6);
   EXPECT_EQ(b.frames_declared, a.frames_declared);
   const CliRun info = run_cli("info '" + out + "'");
-  EXPECT_EQ(info.exit_code, 0);
+  EXPECT_EQ(info.status, 0);
   EXPECT_NE(info.output.find("frames:     1\n"), std::string::npos) << info.output;
   // --z-up renames the axes of every offset: (x, y, z) → (x, z, −y).
   const CliRun turned = run_cli("convert '" + in + "' '" + out + "' --z-up");
-  EXPECT_EQ(turned.exit_code, 0) << turned.output;
+  EXPECT_EQ(turned.status, 0) << turned.output;
   const Scan c = scan(read_text(out));
   ASSERT_EQ(a.offsets.size(), c.offsets.size());
   for (std::size_t i = 0; i + 2 < a.offsets.size(); i += 3) {
@@ -660,27 +644,27 @@ TEST(BvhCli, BadInputExitsOneWithOneClearLine) {
   const std::string bad = temp_path("bad.bvh");
   std::ofstream(bad) << with_line(20, "10 0 0 90 0 0 0 0");
   CliRun run = run_cli("info '" + bad + "'");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.status, 1);
   EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
   EXPECT_NE(run.output.find(bad + ":20:"), std::string::npos) << run.output;
   run = run_cli("convert '" + bad + "' '" + temp_path("out.bvh") + "'");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.output.find(":20:"), std::string::npos) << run.output;
   std::filesystem::remove(bad);
 
   run = run_cli("convert in.bvh out.fbx");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.output.find("cannot write '.fbx' files (supported: "), std::string::npos) << run.output;
   run = run_cli("info notes.txt");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.output.find("unsupported file type '.txt'"), std::string::npos) << run.output;
   run = run_cli("convert only_one.bvh");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.status, 1);
   run = run_cli("convert a.bvh b.bvh --frobnicate");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.output.find("unknown flag --frobnicate"), std::string::npos) << run.output;
   run = run_cli("convert a.bvh b.bvh --scale -2");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.output.find("--scale needs a positive number"), std::string::npos) << run.output;
 }
 

@@ -2,7 +2,6 @@
 // glTF-Validator on what we write (with and without a skinned, morphing mesh), malformed input,
 // and the convert rows.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstring>
@@ -16,44 +15,30 @@
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/io/gltf_animation.hpp"
+#include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
 using namespace gestura;
 
-std::string shared_data() {
-  if (const char* dir = std::getenv("GESTURA_SHARED_DATA")) return dir;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 std::string temp_path(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("gestura_gltf_" + std::to_string(getpid()) + "_" + name)).string();
 }
 
-struct ProcessRun {
-  int exit_code = -1;
-  std::string output;
-};
-
-ProcessRun run(const std::string& command) {
-  ProcessRun r;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.output.append(buffer, n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using test::CliRun;
+using test::run_command;
 
 // The Khronos validator via tools/validate-gltf.mjs; skips when node or the npm package is absent.
 bool validator_available() {
   return std::filesystem::exists(std::string(GESTURA_SOURCE_DIR) + "/tools/node_modules/gltf-validator") &&
-         run("node --version").exit_code == 0;
+         run_command("node --version").status == 0;
 }
 
-ProcessRun validate_file(const std::string& path) {
-  return run("node '" + std::string(GESTURA_SOURCE_DIR) + "/tools/validate-gltf.mjs' '" + path + "'");
+CliRun validate_file(const std::string& path) {
+  return run_command("node '" + std::string(GESTURA_SOURCE_DIR) + "/tools/validate-gltf.mjs' '" + path + "'");
 }
 
 void write_file(const std::string& path, const std::string& bytes) {
@@ -193,9 +178,9 @@ TEST(GltfAnimation, KhronosValidatorFindsNoErrors) {
   for (const auto& [name, bytes] : files) {
     const std::string path = temp_path(name);
     write_file(path, bytes);
-    const ProcessRun r = validate_file(path);
+    const CliRun r = validate_file(path);
     std::filesystem::remove(path);
-    EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.output;
+    EXPECT_EQ(r.status, 0) << name << "\n" << r.output;
     EXPECT_NE(r.output.find("\"numErrors\": 0"), std::string::npos) << name << "\n" << r.output;
     EXPECT_NE(r.output.find("\"numWarnings\": 0"), std::string::npos) << name << "\n" << r.output;
   }
@@ -205,9 +190,9 @@ TEST(GltfAnimation, ValidatorScriptFailsOnABrokenFile) {
   if (!validator_available()) GTEST_SKIP() << "node or tools/node_modules/gltf-validator missing";
   const std::string path = temp_path("broken.gltf");
   write_file(path, R"({"asset":{"version":"2.0"},"nodes":[{"children":[0]}]})");
-  const ProcessRun r = validate_file(path);
+  const CliRun r = validate_file(path);
   std::filesystem::remove(path);
-  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(r.status, 1) << r.output;
 }
 
 void expect_error(const std::string& bytes, const std::string& needle) {
@@ -258,10 +243,10 @@ TEST(GltfAnimation, MalformedInputIsAnErrorNamingThePlace) {
 TEST(GltfAnimation, ConvertBvhToGlbAndBack) {
   const std::string in = shared_data() + "/makehuman/poses/standing02.bvh";
   const std::string glb = temp_path("s.glb"), bvh = temp_path("s.bvh");
-  const ProcessRun to = run(std::string(GESTURA_CLI) + " convert '" + in + "' '" + glb + "' --scale 0.1 --z-up");
-  ASSERT_EQ(to.exit_code, 0) << to.output;
-  const ProcessRun back = run(std::string(GESTURA_CLI) + " convert '" + glb + "' '" + bvh + "'");
-  ASSERT_EQ(back.exit_code, 0) << back.output;
+  const CliRun to = test::run_cli("convert '" + in + "' '" + glb + "' --scale 0.1 --z-up");
+  ASSERT_EQ(to.status, 0) << to.output;
+  const CliRun back = test::run_cli("convert '" + glb + "' '" + bvh + "'");
+  ASSERT_EQ(back.status, 0) << back.output;
   const BvhFile original = load_bvh(in, {0.1f, true}), again = load_bvh(bvh);
   std::filesystem::remove(glb);
   std::filesystem::remove(bvh);

@@ -3,9 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <set>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -15,6 +13,7 @@
 
 #include "gestura/body/avatar.hpp"
 #include "gestura/core/error.hpp"
+#include "support/cli.hpp"
 
 using namespace gestura;
 namespace fs = std::filesystem;
@@ -35,16 +34,6 @@ std::uint32_t u32(const std::vector<std::uint8_t>& b, std::size_t at) {
 nlohmann::json json_chunk(const std::vector<std::uint8_t>& glb) {
   const std::uint32_t length = u32(glb, 12);
   return nlohmann::json::parse(std::string(reinterpret_cast<const char*>(glb.data()) + 20, length));
-}
-
-std::string run(const std::string& command, int& status) {
-  std::string out;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return out;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), pipe)) out += buf.data();
-  status = pclose(pipe);
-  return out;
 }
 
 fs::path temp_file(const char* name) { return fs::temp_directory_path() / (std::string("gestura_") + name); }
@@ -105,47 +94,43 @@ TEST(GltfExport, RejectsInconsistentMeshesWithClearErrors) {
 }
 
 TEST(GltfExport, KhronosValidatorReportsNoErrors) {
-  int status = 0;
-  run("node --version", status);
-  if (status != 0) GTEST_SKIP() << "node is not installed";
+  if (test::run_command("node --version").status != 0) GTEST_SKIP() << "node is not installed";
   const fs::path file = temp_file("avatar_validate.glb");
   write_glb(file.string(), avatar().skeleton, avatar().mesh);
   const std::string script = std::string(GESTURA_SOURCE_DIR) + "/tools/validate-gltf.mjs";
-  const std::string out = run("node " + script + " " + file.string(), status);
+  const test::CliRun r = test::run_command("node " + script + " " + file.string());
   fs::remove(file);
-  EXPECT_EQ(status, 0) << out << "\n(run `cd tools && npm install` if gltf-validator is missing)";
-  EXPECT_NE(out.find(": 0 errors"), std::string::npos) << out;
+  EXPECT_EQ(r.status, 0) << r.output << "\n(run `cd tools && npm install` if gltf-validator is missing)";
+  EXPECT_NE(r.output.find(": 0 errors"), std::string::npos) << r.output;
 }
 
 TEST(AvatarCli, InfoExportAndBadFlags) {
-  int status = 0;
-  std::string out = run(std::string(GESTURA_CLI) + " avatar info", status);
-  EXPECT_EQ(status, 0) << out;
-  EXPECT_NE(out.find("joints 80"), std::string::npos) << out;
-  EXPECT_NE(out.find("l_thumb_tip"), std::string::npos);
-  EXPECT_NE(out.find(" eyeBlink_L"), std::string::npos);
+  using test::run_cli;
+  test::CliRun r = run_cli("avatar info");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("joints 80"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("l_thumb_tip"), std::string::npos);
+  EXPECT_NE(r.output.find(" eyeBlink_L"), std::string::npos);
 
   const fs::path file = temp_file("avatar_cli.glb");
-  out = run(std::string(GESTURA_CLI) + " avatar export -o " + file.string() + " --height 1.80 --sex male", status);
-  EXPECT_EQ(status, 0) << out;
+  r = run_cli("avatar export -o " + file.string() + " --height 1.80 --sex male");
+  EXPECT_EQ(r.status, 0) << r.output;
   std::ifstream in(file, std::ios::binary);
   char magic[4] = {};
   in.read(magic, 4);
   EXPECT_EQ(std::string(magic, 4), "glTF");
   fs::remove(file);
 
-  out = run(std::string(GESTURA_CLI) + " avatar export -o " + file.string() + " --height -3", status);
-  EXPECT_NE(status, 0);
-  EXPECT_NE(out.find("height"), std::string::npos) << out;
-  out = run(std::string(GESTURA_CLI) + " avatar info --build fat", status);
-  EXPECT_NE(status, 0);
-  EXPECT_NE(out.find("'fat' is not a number"), std::string::npos) << out;
-  out = run(std::string(GESTURA_CLI) + " avatar export", status);
-  EXPECT_NE(status, 0);
-  EXPECT_NE(out.find("-o"), std::string::npos) << out;
-  out = run(std::string(GESTURA_CLI) + " avatar info --height", status);
-  EXPECT_NE(status, 0);
-  out = run(std::string(GESTURA_CLI) + " avatar dance", status);
-  EXPECT_NE(status, 0);
+  r = run_cli("avatar export -o " + file.string() + " --height -3");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("height"), std::string::npos) << r.output;
+  r = run_cli("avatar info --build fat");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("'fat' is not a number"), std::string::npos) << r.output;
+  r = run_cli("avatar export");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("-o"), std::string::npos) << r.output;
+  EXPECT_NE(run_cli("avatar info --height").status, 0);
+  EXPECT_NE(run_cli("avatar dance").status, 0);
   EXPECT_FALSE(fs::exists(file));
 }

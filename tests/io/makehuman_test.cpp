@@ -10,17 +10,13 @@
 #include "gestura/io/makehuman.hpp"
 #include "gestura/io/makehuman_face.hpp"
 #include "gestura/skeleton/joint_names_makehuman.hpp"
+#include "support/shared_data.hpp"
 
 using namespace gestura;
 
 namespace {
 
-// GESTURA_SHARED_DATA (environment) overrides the build-time path, e.g. when testing from a worktree.
-std::string data_dir() {
-  const char* env = std::getenv("GESTURA_SHARED_DATA");
-  return std::string(env && *env ? env : GESTURA_SHARED_DATA) + "/makehuman";
-}
-const std::string kDir = data_dir();
+const std::string kDir = gestura::test::shared_data() + "/makehuman";
 
 // Loaded once for the suite: the asset is 2.6 MB of text.
 class MakeHuman : public ::testing::Test {

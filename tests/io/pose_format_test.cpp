@@ -1,7 +1,6 @@
 // .pose export read back by a reader written here from the published layout (not the library's
 // code), OpenPose JSON against the same projection, malformed inputs to the encoder, the CLI rows.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstring>
@@ -16,6 +15,8 @@
 #include "gestura/io/bvh.hpp"
 #include "gestura/io/openpose_json.hpp"
 #include "gestura/io/pose_format.hpp"
+#include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
@@ -201,33 +202,17 @@ TEST(OpenPoseJson, FramesCarryTheProjectedKeypoints) {
   }
 }
 
-struct CliRun {
-  int exit_code = -1;
-  std::string output;
-};
+using test::CliRun;
+using test::run_cli;
 
-CliRun run_cli(const std::string& args) {
-  CliRun run;
-  FILE* pipe = popen((std::string(GESTURA_CLI) + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return run;
-  char buffer[4096];
-  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) run.output.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
-
-std::string shared_data() {
-  if (const char* dir = std::getenv("GESTURA_SHARED_DATA")) return dir;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 TEST(PoseFormatCli, ConvertWritesPoseAndOpenPoseJson) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("gestura_pose_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   const std::string in = shared_data() + "/makehuman/poses/standing01.bvh";
   const CliRun pose = run_cli("convert '" + in + "' '" + (dir / "out.pose").string() + "' --scale 0.1 --z-up");
-  ASSERT_EQ(pose.exit_code, 0) << pose.output;
+  ASSERT_EQ(pose.status, 0) << pose.output;
   std::ifstream file(dir / "out.pose", std::ios::binary);
   std::stringstream bytes;
   bytes << file.rdbuf();
@@ -236,9 +221,9 @@ TEST(PoseFormatCli, ConvertWritesPoseAndOpenPoseJson) {
   EXPECT_EQ(p.components[0].points, bvh.skeleton.names);
   EXPECT_EQ(p.frames, static_cast<std::uint32_t>(bvh.frame_count));
 
-  EXPECT_EQ(run_cli("convert '" + in + "' '" + (dir / "kp.json").string() + "'").exit_code, 1) << "needs --openpose";
+  EXPECT_EQ(run_cli("convert '" + in + "' '" + (dir / "kp.json").string() + "'").status, 1) << "needs --openpose";
   const CliRun json = run_cli("convert '" + in + "' '" + (dir / "kp.json").string() + "' --scale 0.1 --z-up --openpose");
-  ASSERT_EQ(json.exit_code, 0) << json.output;
+  ASSERT_EQ(json.status, 0) << json.output;
   std::ifstream frame0(dir / "kp_000000000000_keypoints.json");
   ASSERT_TRUE(frame0);
   const nlohmann::json doc = nlohmann::json::parse(frame0);

@@ -4,8 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -13,37 +11,28 @@
 #include "gestura/body/avatar.hpp"
 #include "gestura/core/math.hpp"
 #include "gestura/io/gltf_animation.hpp"
+#include "support/cli.hpp"
 
 using namespace gestura;
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string run(const std::string& command, int& status) {
-  std::string out;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return out;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), pipe)) out += buf.data();
-  status = pclose(pipe);
-  return out;
-}
+using test::CliRun;
+using test::run_command;
 
 const std::string kTools = std::string(GESTURA_SOURCE_DIR) + "/tools";
 
 bool three_available() {
-  int status = 0;
-  run("node --version", status);
-  return status == 0 && fs::exists(kTools + "/node_modules/three/package.json");
+  return run_command("node --version").status == 0 && fs::exists(kTools + "/node_modules/three/package.json");
 }
 
 // Runs the loader on `file`; fails the test (and returns null) when it does not load.
 nlohmann::json load_in_three(const fs::path& file) {
-  int status = 0;
-  const std::string out = run("node " + kTools + "/load-in-three.mjs " + file.string(), status);
-  EXPECT_EQ(status, 0) << out;
-  if (status != 0) return nullptr;
-  return nlohmann::json::parse(out);
+  const CliRun r = run_command("node " + kTools + "/load-in-three.mjs " + file.string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  if (r.status != 0) return nullptr;
+  return nlohmann::json::parse(r.output);
 }
 
 bool has(const nlohmann::json& names, const char* name) {
@@ -55,9 +44,8 @@ bool has(const nlohmann::json& names, const char* name) {
 TEST(ThreeLoad, ExportedAvatarLoadsAsSkinnedMeshWithMorphs) {
   if (!three_available()) GTEST_SKIP() << "node or tools/node_modules/three missing (scripts/setup-deps.sh)";
   const fs::path file = fs::temp_directory_path() / "gestura_three_avatar.glb";
-  int status = 0;
-  const std::string out = run(std::string(GESTURA_CLI) + " avatar export -o " + file.string(), status);
-  ASSERT_EQ(status, 0) << out;
+  const CliRun exported = test::run_cli("avatar export -o " + file.string());
+  ASSERT_EQ(exported.status, 0) << exported.output;
   const nlohmann::json r = load_in_three(file);
   fs::remove(file);
   ASSERT_FALSE(r.is_null());

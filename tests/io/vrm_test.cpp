@@ -2,7 +2,6 @@
 // VRoid-style node names), read back into H-Anim joints, a skinned mesh, morphs and face channels;
 // malformed VRMs give errors naming the place.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -14,6 +13,7 @@
 #include "gestura/core/error.hpp"
 #include "gestura/io/gltf_animation.hpp"
 #include "gestura/io/vrm.hpp"
+#include "support/cli.hpp"
 
 namespace {
 
@@ -185,15 +185,11 @@ TEST(Vrm, TestFileIsValidGltf) {
     const std::string bytes = build_vrm().bytes();
     std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   }
-  FILE* pipe = popen(("node '" + std::string(GESTURA_SOURCE_DIR) + "/tools/validate-gltf.mjs' '" + path + "' 2>&1").c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string output;
-  char buffer[4096];
-  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
-  const int status = pclose(pipe);
+  const gestura::test::CliRun r =
+      gestura::test::run_command("node '" + std::string(GESTURA_SOURCE_DIR) + "/tools/validate-gltf.mjs' '" + path + "'");
   std::filesystem::remove(path);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << output;
-  EXPECT_NE(output.find("\"numErrors\": 0"), std::string::npos) << output;
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("\"numErrors\": 0"), std::string::npos) << r.output;
 }
 
 }  // namespace

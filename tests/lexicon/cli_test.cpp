@@ -4,29 +4,21 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
+#include "support/cli.hpp"
 #include "temp_dir.hpp"
+#include "support/shared_data.hpp"
 
 using gestura::testing::TempDir;
 
 namespace {
 
-struct CliRun {
-  int status;
-  std::string out;
-};
+using gestura::test::CliRun;
 
 // Runs the CLI with a private user lexicon and built-in directory; stdout and stderr together.
 CliRun gestura_cli(const TempDir& dir, const std::string& args) {
-  const std::string out_file = dir.file("cli.out");
-  const std::string command = "GESTURA_LEXICON='" + dir.file("user.sqlite") + "' GESTURA_BUILTIN_LEXICON='" +
-                              dir.file("builtin") + "' '" + GESTURA_CLI + "' " + args + " >'" + out_file + "' 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(out_file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {WEXITSTATUS(status), text.str()};
+  return gestura::test::run_cli(args, "GESTURA_LEXICON='" + dir.file("user.sqlite") + "' GESTURA_BUILTIN_LEXICON='" +
+                                          dir.file("builtin") + "'");
 }
 
 }  // namespace
@@ -36,9 +28,9 @@ TEST(LexiconCli, AddShowSearchExportRemove) {
   EXPECT_EQ(gestura_cli(dir, "lexicon add --gloss HOUSE --lang ase --hamnosys H1 --keywords house,home").status, 0);
   const CliRun show = gestura_cli(dir, "lexicon show house");
   EXPECT_EQ(show.status, 0);
-  EXPECT_NE(show.out.find("HOUSE (ase, variant 1)"), std::string::npos) << show.out;
-  EXPECT_NE(show.out.find("keywords: house, home"), std::string::npos) << show.out;
-  EXPECT_NE(gestura_cli(dir, "lexicon search hom").out.find("HOUSE\tase\thamnosys"), std::string::npos);
+  EXPECT_NE(show.output.find("HOUSE (ase, variant 1)"), std::string::npos) << show.output;
+  EXPECT_NE(show.output.find("keywords: house, home"), std::string::npos) << show.output;
+  EXPECT_NE(gestura_cli(dir, "lexicon search hom").output.find("HOUSE\tase\thamnosys"), std::string::npos);
 
   EXPECT_EQ(gestura_cli(dir, "lexicon export '" + dir.file("out.jsonl") + "'").status, 0);
   std::ifstream exported(dir.file("out.jsonl"));
@@ -47,37 +39,36 @@ TEST(LexiconCli, AddShowSearchExportRemove) {
   EXPECT_NE(line.find("\"gloss\":\"HOUSE\""), std::string::npos) << line;
 
   EXPECT_EQ(gestura_cli(dir, "lexicon remove HOUSE --lang ase").status, 0);
-  EXPECT_EQ(gestura_cli(dir, "lexicon list").out, "");
+  EXPECT_EQ(gestura_cli(dir, "lexicon list").output, "");
 }
 
 TEST(LexiconCli, AddFromSigmlAndImportSigml) {
   TempDir dir;
-  const char* from_env = std::getenv("GESTURA_SHARED_DATA");
-  const std::string data = from_env && !std::filesystem::exists(GESTURA_SHARED_DATA) ? from_env : GESTURA_SHARED_DATA;
+  const std::string data = gestura::test::shared_data();
   const std::string absorb = data + "/sigml-isl/absorb.sigml";
   EXPECT_EQ(gestura_cli(dir, "lexicon add --gloss absorb --lang ins --sigml '" + absorb + "'").status, 0);
   const CliRun show = gestura_cli(dir, "lexicon show absorb --lang ins");
-  EXPECT_NE(show.out.find("notation (sigml): <hns_sign gloss=\"absorb\"><hamnosys_nonmanual/>"), std::string::npos)
-      << show.out;
+  EXPECT_NE(show.output.find("notation (sigml): <hns_sign gloss=\"absorb\"><hamnosys_nonmanual/>"), std::string::npos)
+      << show.output;
   const CliRun no_lang = gestura_cli(dir, "lexicon import '" + data + "/sigml-isl/10.sigml'");
   EXPECT_EQ(no_lang.status, 1);
-  EXPECT_NE(no_lang.out.find("--lang ins"), std::string::npos) << no_lang.out;
+  EXPECT_NE(no_lang.output.find("--lang ins"), std::string::npos) << no_lang.output;
   EXPECT_EQ(gestura_cli(dir, "lexicon import '" + data + "/sigml-isl/10.sigml' --lang ins").status, 0);
-  EXPECT_EQ(gestura_cli(dir, "lexicon list --lang ins").out, "10\tins\tsigml\t10\nabsorb\tins\tsigml\t\n");
+  EXPECT_EQ(gestura_cli(dir, "lexicon list --lang ins").output, "10\tins\tsigml\t10\nabsorb\tins\tsigml\t\n");
 }
 
 TEST(LexiconCli, ClearErrors) {
   TempDir dir;
   const CliRun bad_lang = gestura_cli(dir, "lexicon add --gloss X --lang asl --hamnosys x");
   EXPECT_EQ(bad_lang.status, 1);
-  EXPECT_NE(bad_lang.out.find("unknown sign-language code 'asl' (did you mean 'ase'?)"), std::string::npos);
-  EXPECT_NE(gestura_cli(dir, "lexicon add --gloss X --lang ase").out.find("exactly one of --hamnosys and --sigml"),
+  EXPECT_NE(bad_lang.output.find("unknown sign-language code 'asl' (did you mean 'ase'?)"), std::string::npos);
+  EXPECT_NE(gestura_cli(dir, "lexicon add --gloss X --lang ase").output.find("exactly one of --hamnosys and --sigml"),
             std::string::npos);
-  EXPECT_NE(gestura_cli(dir, "lexicon frobnicate").out.find("unknown action 'frobnicate'"), std::string::npos);
+  EXPECT_NE(gestura_cli(dir, "lexicon frobnicate").output.find("unknown action 'frobnicate'"), std::string::npos);
   const std::string junk = dir.write("junk.sqlite", std::string(2048, '\x5a'));
   const CliRun corrupt = gestura_cli(dir, "lexicon list --db '" + junk + "'");
   EXPECT_EQ(corrupt.status, 1);
-  EXPECT_NE(corrupt.out.find(junk), std::string::npos) << corrupt.out;
+  EXPECT_NE(corrupt.output.find(junk), std::string::npos) << corrupt.output;
 }
 
 TEST(GlossCli, UsesTheLexiconAndExplains) {
@@ -88,16 +79,16 @@ TEST(GlossCli, UsesTheLexiconAndExplains) {
             R"({"gloss":"STORE","lang":"ase","hamnosys":"s","keywords":["store","shop"]})"
             "\n");
   const CliRun run = gestura_cli(dir, "gloss 'I went to the shop yesterday.'");
-  EXPECT_EQ(run.status, 0) << run.out;
-  EXPECT_EQ(run.out.substr(0, run.out.find('\n')), "YESTERDAY IX-1 GO STORE");
-  EXPECT_NE(run.out.find("'went' → GO: irregular past"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("'the' dropped: article"), std::string::npos) << run.out;
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_EQ(run.output.substr(0, run.output.find('\n')), "YESTERDAY IX-1 GO STORE");
+  EXPECT_NE(run.output.find("'went' → GO: irregular past"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("'the' dropped: article"), std::string::npos) << run.output;
 
   const CliRun json = gestura_cli(dir, "gloss 'Where is Bob?' --json");
-  EXPECT_NE(json.out.find("\"gloss\": \"FS-BOB\""), std::string::npos) << json.out;
-  EXPECT_NE(json.out.find("\"kind\": \"wh-question\""), std::string::npos) << json.out;
+  EXPECT_NE(json.output.find("\"gloss\": \"FS-BOB\""), std::string::npos) << json.output;
+  EXPECT_NE(json.output.find("\"kind\": \"wh-question\""), std::string::npos) << json.output;
 
   const CliRun invalid = gestura_cli(dir, "gloss \"$(printf 'caf\\303')\"");
   EXPECT_EQ(invalid.status, 1);
-  EXPECT_NE(invalid.out.find("invalid UTF-8 at byte 3"), std::string::npos) << invalid.out;
+  EXPECT_NE(invalid.output.find("invalid UTF-8 at byte 3"), std::string::npos) << invalid.output;
 }

@@ -9,19 +9,14 @@
 
 #include "gestura/core/error.hpp"
 #include "temp_dir.hpp"
+#include "support/shared_data.hpp"
 
 using namespace gestura;
 using gestura::testing::TempDir;
 
 namespace {
 
-// The shared data sits beside the main checkout; from a worktree elsewhere the environment variable
-// GESTURA_SHARED_DATA points at it instead.
-std::string shared_data() {
-  const char* from_env = std::getenv("GESTURA_SHARED_DATA");
-  if (from_env && !std::filesystem::exists(GESTURA_SHARED_DATA)) return from_env;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 const std::string kIslDir = shared_data() + "/sigml-isl/";
 

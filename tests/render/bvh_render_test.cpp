@@ -6,11 +6,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "gestura/io/bvh.hpp"
 #include "gestura/render/camera.hpp"
 #include "support/avatar_subject.hpp"
+#include "support/cli.hpp"
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
@@ -35,16 +35,11 @@ class RenderBvh : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  // Runs `gestura render ARGS`; returns the exit status, stderr in `errors`.
-  int render(const std::string& args, std::string* errors = nullptr) const {
-    const std::string log = path("stderr.txt");
-    const int status = std::system((std::string(GESTURA_CLI) + " render " + args + " 2>" + log).c_str());
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
-    if (errors) *errors = text.str();
-    fs::remove(log);
-    return WEXITSTATUS(status);
+  // Runs `gestura render ARGS`; returns the exit status, stderr (alone) in `errors`.
+  static int render(const std::string& args, std::string* errors = nullptr) {
+    const test::CliRun run = test::run_cli("render " + args + " >/dev/null");
+    if (errors) *errors = run.output;
+    return run.status;
   }
   fs::path dir_;
 };

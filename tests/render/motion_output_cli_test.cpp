@@ -7,13 +7,12 @@ extern "C" {
 #include <libavformat/avformat.h>
 }
 
-#include <array>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 
 #include <unistd.h>
+
+#include "support/cli.hpp"
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
@@ -27,19 +26,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int status;
-  std::string output;
-};
-
-CliRun run(const std::string& command) {
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  std::string out;
-  std::array<char, 512> buffer{};
-  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WEXITSTATUS(status), out};
-}
+using gestura::test::CliRun;
+using gestura::test::run_cli;
+using gestura::test::run_command;
 
 fs::path temp_file(const std::string& name) {
   return fs::temp_directory_path() / ("gestura_motion_output_" + std::to_string(::getpid()) + "_" + name);
@@ -65,10 +54,10 @@ int skin_pixels_at_chest(const std::string& png) {
 }
 
 TEST(MotionOutputCli, ViewPerformsASignFromSymbolNames) {
-  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run not installed";
+  if (run_command("command -v xvfb-run").status != 0) GTEST_SKIP() << "xvfb-run not installed";
   // The middle of the sign, from the same synthesis as `gestura sign` reports it.
   const fs::path json = temp_file("sign.json");
-  const CliRun sign = run(std::string(GESTURA_CLI) + " sign --names " + kFlatHandAtChest + " -o " + json.string());
+  const CliRun sign = run_cli(std::string("sign --names ") + kFlatHandAtChest + " -o " + json.string());
   fs::remove(json);
   ASSERT_EQ(sign.status, 0) << sign.output;
   const auto at = sign.output.find("(sign ");
@@ -79,8 +68,8 @@ TEST(MotionOutputCli, ViewPerformsASignFromSymbolNames) {
 
   auto screenshot = [](const std::string& what, const std::string& name) {
     const fs::path shot = temp_file(name);
-    const CliRun r = run(std::string("timeout 120 xvfb-run -a ") + GESTURA_CLI + " view " + what +
-                         " --size 320x240 --background '#808080' --frames 3 --screenshot " + shot.string());
+    const CliRun r = run_command(std::string("timeout 120 xvfb-run -a ") + GESTURA_CLI + " view " + what +
+                                 " --size 320x240 --background '#808080' --frames 3 --screenshot " + shot.string());
     EXPECT_EQ(r.status, 0) << r.output;
     const int skin = skin_pixels_at_chest(shot.string());
     fs::remove(shot);
@@ -95,33 +84,33 @@ TEST(MotionOutputCli, ViewPerformsASignFromSymbolNames) {
 }
 
 TEST(MotionOutputCli, ViewSignsEnglishText) {
-  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run not installed";
+  if (run_command("command -v xvfb-run").status != 0) GTEST_SKIP() << "xvfb-run not installed";
   // NAME is signed with both H hands in front of the chest: find when from say's timeline, then
   // look there.
-  const CliRun timeline = run(std::string(GESTURA_CLI) + " say 'My name'");
+  const CliRun timeline = run_cli("say 'My name'");
   ASSERT_EQ(timeline.status, 0) << timeline.output;
   const auto line = timeline.output.find("NAME");
   ASSERT_NE(line, std::string::npos) << timeline.output;
   const std::string row = timeline.output.substr(timeline.output.rfind('\n', line) + 1);
   const float start = std::stof(row), end = std::stof(row.substr(row.find("–") + std::string("–").size()));
   const fs::path shot = temp_file("text.png");
-  const CliRun r = run(std::string("timeout 120 xvfb-run -a ") + GESTURA_CLI + " view 'My name' --at " +
-                       std::to_string(0.5f * (start + end)) +
-                       " --size 320x240 --background '#808080' --frames 3 --screenshot " + shot.string());
+  const CliRun r = run_command(std::string("timeout 120 xvfb-run -a ") + GESTURA_CLI + " view 'My name' --at " +
+                               std::to_string(0.5f * (start + end)) +
+                               " --size 320x240 --background '#808080' --frames 3 --screenshot " + shot.string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_GT(skin_pixels_at_chest(shot.string()), 150) << "the hands in front of the chest";
   fs::remove(shot);
   // A name that looks like a motion file is read as one (and fails clearly when it is missing).
-  const CliRun missing = run(std::string(GESTURA_CLI) + " view no-such-clip.bvh --screenshot /dev/null");
+  const CliRun missing = run_cli("view no-such-clip.bvh --screenshot /dev/null");
   EXPECT_EQ(missing.status, 1);
   EXPECT_NE(missing.output.find("no-such-clip.bvh"), std::string::npos) << missing.output;
 }
 
 TEST(MotionOutputCli, ViewRejectsABadSignAndTwoSubjects) {
-  const CliRun bad = run(std::string(GESTURA_CLI) + " view --names hamflathand,hamnotasymbol --screenshot /dev/null");
+  const CliRun bad = run_cli("view --names hamflathand,hamnotasymbol --screenshot /dev/null");
   EXPECT_EQ(bad.status, 1);
   EXPECT_NE(bad.output.find("hamnotasymbol"), std::string::npos) << bad.output;
-  const CliRun both = run(std::string(GESTURA_CLI) + " view --rest --names hamflathand --screenshot /dev/null");
+  const CliRun both = run_cli("view --rest --names hamflathand --screenshot /dev/null");
   EXPECT_EQ(both.status, 1);
   EXPECT_NE(both.output.find("either a sign"), std::string::npos) << both.output;
 }
@@ -142,8 +131,8 @@ int video_frames(const std::string& path) {
 
 TEST(MotionOutputCli, ReachWritesAVideoWithOneFramePerMotionFrame) {
   const fs::path video = temp_file("reach.mp4");
-  const CliRun r = run(std::string(GESTURA_CLI) + " reach --target 0.25,1.2,0.35 --frames 12 --fps 24 --size 160x120 -o " +
-                       video.string());
+  const CliRun r =
+      run_cli("reach --target 0.25,1.2,0.35 --frames 12 --fps 24 --size 160x120 -o " + video.string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(video_frames(video.string()), 13) << r.output;  // frames 0..12 of the motion
   fs::remove(video);
@@ -151,12 +140,12 @@ TEST(MotionOutputCli, ReachWritesAVideoWithOneFramePerMotionFrame) {
 
 TEST(MotionOutputCli, UnknownOutputExtensionIsAClearErrorAndWritesNothing) {
   const fs::path out = temp_file("reach.avi");
-  const CliRun reach = run(std::string(GESTURA_CLI) + " reach --target 0.25,1.2,0.35 -o " + out.string());
+  const CliRun reach = run_cli("reach --target 0.25,1.2,0.35 -o " + out.string());
   EXPECT_EQ(reach.status, 1);
   EXPECT_NE(reach.output.find(out.string() + ": cannot write"), std::string::npos) << reach.output;
   EXPECT_NE(reach.output.find(".mp4"), std::string::npos) << "lists what it can write: " << reach.output;
   EXPECT_FALSE(fs::exists(out));
-  const CliRun sign = run(std::string(GESTURA_CLI) + " sign --names " + kFlatHandAtChest + " -o " + out.string());
+  const CliRun sign = run_cli(std::string("sign --names ") + kFlatHandAtChest + " -o " + out.string());
   EXPECT_EQ(sign.status, 1);
   EXPECT_NE(sign.output.find("cannot write"), std::string::npos) << sign.output;
   EXPECT_FALSE(fs::exists(out));

@@ -13,6 +13,7 @@ extern "C" {
 #include "gestura/core/error.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/render_job.hpp"
+#include "support/cli.hpp"
 #include "support/test_figure.hpp"
 #include "gestura/render/video_writer.hpp"
 
@@ -240,16 +241,15 @@ TEST_F(RenderOutput, FrameCountIncludesBothEnds) {
 
 TEST_F(RenderOutput, CommandLineRejectsBadFlagsWithoutWritingFiles) {
   const std::string out = path("cli.png");
-  const std::string cli = GESTURA_CLI;
   for (const char* flags : {"--size 0x0", "--size 100000x100000", "--size abc", "--fps 0", "--fps -1",
                                    "--fps 1000", "--camera nowhere", "--background '#12345'", "--color skin=blue",
                                    "--orbit 1,2"}) {
-    const std::string command = cli + " render --rest -o " + out + " " + std::string(flags) + " 2>/dev/null";
-    EXPECT_EQ(WEXITSTATUS(std::system(command.c_str())), 1) << flags;
+    EXPECT_EQ(test::run_cli("render --rest -o " + out + " " + flags).status, 1) << flags;
   }
-  EXPECT_EQ(WEXITSTATUS(std::system((cli + " render --rest -o " + path("no/such/dir/x.png") + " 2>/dev/null").c_str())), 1);
+  EXPECT_EQ(test::run_cli("render --rest -o " + path("no/such/dir/x.png")).status, 1);
   EXPECT_TRUE(files().empty());
-  EXPECT_EQ(WEXITSTATUS(std::system((cli + " render --rest --size 64x64 --camera front,top -o " + out).c_str())), 0);
+  const test::CliRun both = test::run_cli("render --rest --size 64x64 --camera front,top -o " + out);
+  EXPECT_EQ(both.status, 0) << both.output;
   EXPECT_EQ(files(), std::vector<std::string>{"cli.png"});
 }
 

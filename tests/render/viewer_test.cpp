@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include "support/cli.hpp"
+
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #pragma GCC diagnostic push
@@ -18,14 +20,15 @@
 namespace {
 
 namespace fs = std::filesystem;
+using gestura::test::run_command;
 
 TEST(RenderViewer, ScreenshotUnderXvfbShowsTheFigure) {
-  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run not installed";
+  if (run_command("command -v xvfb-run").status != 0) GTEST_SKIP() << "xvfb-run not installed";
   const fs::path shot = fs::temp_directory_path() / ("gestura_view_" + std::to_string(::getpid()) + ".png");
-  const std::string command = std::string("timeout 60 xvfb-run -a ") + GESTURA_CLI +
-                              " view --rest --size 320x240 --background '#808080' --frames 10 --screenshot " +
-                              shot.string() + " 2>/dev/null";
-  ASSERT_EQ(WEXITSTATUS(std::system(command.c_str())), 0);
+  const gestura::test::CliRun view =
+      run_command(std::string("timeout 60 xvfb-run -a ") + GESTURA_CLI +
+                  " view --rest --size 320x240 --background '#808080' --frames 10 --screenshot " + shot.string());
+  ASSERT_EQ(view.status, 0) << view.output;
   int w = 0, h = 0, n = 0;
   stbi_uc* pixels = stbi_load(shot.string().c_str(), &w, &h, &n, 3);
   fs::remove(shot);

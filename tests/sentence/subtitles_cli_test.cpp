@@ -6,32 +6,20 @@ extern "C" {
 
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 #include <unistd.h>
+
+#include "support/cli.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-  int status = -1;
-  std::string output;  // stdout and stderr
-};
+using gestura::test::CliRun;
 
-CliRun gestura(const std::string& args) {
-  CliRun run;
-  FILE* pipe = popen((std::string(GESTURA_CLI) + " subtitles " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return run;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), static_cast<int>(buf.size()), pipe)) run.output += buf.data();
-  run.status = WEXITSTATUS(pclose(pipe));
-  return run;
-}
+CliRun subtitles(const std::string& args) { return gestura::test::run_cli("subtitles " + args); }
 
 class SubtitlesCli : public ::testing::Test {
  protected:
@@ -68,24 +56,24 @@ int count_video_frames(const std::string& path) {
 
 TEST_F(SubtitlesCli, MalformedSubtitlesExitOneWithThePlace) {
   const std::string out = path("out.mp4");
-  const CliRun bad_time = gestura(file("a.srt", "1\n00:00:01,000 --> 00:00:0x,000\nHello\n") + " -o " + out);
+  const CliRun bad_time = subtitles(file("a.srt", "1\n00:00:01,000 --> 00:00:0x,000\nHello\n") + " -o " + out);
   EXPECT_EQ(bad_time.status, 1);
   EXPECT_NE(bad_time.output.find("a.srt:2:18: bad end time '00:00:0x,000'"), std::string::npos) << bad_time.output;
-  const CliRun no_header = gestura(file("b.vtt", "00:01.000 --> 00:02.000\nHi\n") + " -o " + out);
+  const CliRun no_header = subtitles(file("b.vtt", "00:01.000 --> 00:02.000\nHi\n") + " -o " + out);
   EXPECT_EQ(no_header.status, 1);
   EXPECT_NE(no_header.output.find("b.vtt:1:1: expected the 'WEBVTT' header"), std::string::npos) << no_header.output;
-  const CliRun binary = gestura(file("c.srt", std::string("\x7f" "ELF\x02\x01\x01\0\0", 9)) + " -o " + out);
+  const CliRun binary = subtitles(file("c.srt", std::string("\x7f" "ELF\x02\x01\x01\0\0", 9)) + " -o " + out);
   EXPECT_EQ(binary.status, 1);
   EXPECT_NE(binary.output.find("c.srt:1:1: binary data"), std::string::npos) << binary.output;
-  const CliRun empty = gestura(file("d.srt", "\n\n") + " -o " + out);
+  const CliRun empty = subtitles(file("d.srt", "\n\n") + " -o " + out);
   EXPECT_EQ(empty.status, 1);
   EXPECT_NE(empty.output.find("no subtitle cues"), std::string::npos) << empty.output;
-  const CliRun missing = gestura(path("none.srt") + " -o " + out);
+  const CliRun missing = subtitles(path("none.srt") + " -o " + out);
   EXPECT_EQ(missing.status, 1);
   EXPECT_NE(missing.output.find("none.srt"), std::string::npos) << missing.output;
   std::string words;
   for (int i = 0; i < 4000; ++i) words += "word ";
-  const CliRun too_long = gestura(file("e.srt", "1\n00:00:01,000 --> 00:00:05,000\n" + words + "\n") + " -o " + out);
+  const CliRun too_long = subtitles(file("e.srt", "1\n00:00:01,000 --> 00:00:05,000\n" + words + "\n") + " -o " + out);
   EXPECT_EQ(too_long.status, 1);
   EXPECT_NE(too_long.output.find("e.srt:2: cue 1: text too long"), std::string::npos) << too_long.output;
   EXPECT_FALSE(fs::exists(out));
@@ -98,11 +86,11 @@ TEST_F(SubtitlesCli, BadOptionsExitOne) {
         std::string("-o ") + path("x.mp4") + " --max-speed fast", std::string("-o ") + path("x.mp4") + " --size 321x240",
         std::string("-o ") + path("x.mp4") + " --fps 0", std::string("-o ") + path("x.mp4") + " --bogus",
         std::string("")}) {
-    const CliRun r = gestura(srt + " " + flags);
+    const CliRun r = subtitles(srt + " " + flags);
     EXPECT_EQ(r.status, 1) << flags << "\n" << r.output;
     EXPECT_NE(r.output.find("gestura subtitles: "), std::string::npos) << r.output;
   }
-  const CliRun unknown_ext = gestura(file("x.txt", "hello") + " -o " + path("x.mp4"));
+  const CliRun unknown_ext = subtitles(file("x.txt", "hello") + " -o " + path("x.mp4"));
   EXPECT_EQ(unknown_ext.status, 1);
   EXPECT_NE(unknown_ext.output.find("expected .srt or .vtt"), std::string::npos) << unknown_ext.output;
 }
@@ -112,7 +100,7 @@ TEST_F(SubtitlesCli, RendersTwoCuesToAVideoAsLongAsTheProgramme) {
                                "1\r\n00:00:00,500 --> 00:00:03,500\r\nHello.\r\n\r\n"
                                "2\r\n00:00:04,000 --> 00:00:07,000\r\n<i>Thank you.</i>\r\n");
   const std::string out = path("two.mp4");
-  const CliRun r = gestura(srt + " -o " + out + " --size 320x240 --fps 10");
+  const CliRun r = subtitles(srt + " -o " + out + " --size 320x240 --fps 10");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("2 cues, 0 not fitted; programme 7.00 s"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("HELLO"), std::string::npos) << r.output;

@@ -2,37 +2,21 @@
 // lines, and the synthesis hook (S is counted only when something is connected).
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
 
 #include "gestura/sign/sign_check.hpp"
-#include "shared_data.hpp"
+#include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
 using namespace gestura::sign;
 
-struct CliResult {
-  std::string out;
-  int status = -1;
-};
-
-CliResult run_cli(const std::string& args) {
-  const std::string command = std::string(GESTURA_CLI) + " " + args + " 2>&1";
-  CliResult r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using gestura::test::CliRun;
+using gestura::test::run_cli;
 
 std::string temp_file(const std::string& name, const std::string& content) {
   const auto path = std::filesystem::temp_directory_path() / ("gestura_check_" + name);
@@ -41,14 +25,14 @@ std::string temp_file(const std::string& name, const std::string& content) {
 }
 
 TEST(SignCheck, WholeLexiconFromTheCli) {
-  const CliResult r = run_cli("check --parse-only " + gestura::test::shared_data() + "/hamnosys/signs.jsonl");
-  EXPECT_NE(r.out.find("4070 signs: 4070 parsed, 0 synthesized, 0 failed"), std::string::npos) << r.out;
+  const CliRun r = run_cli("check --parse-only " + gestura::test::shared_data() + "/hamnosys/signs.jsonl");
+  EXPECT_NE(r.output.find("4070 signs: 4070 parsed, 0 synthesized, 0 failed"), std::string::npos) << r.output;
   EXPECT_EQ(r.status, 0);
 }
 
 TEST(SignCheck, SigmlSignIsSynthesizedFromTheCli) {
-  const CliResult r = run_cli("check " + gestura::test::shared_data() + "/sigml-isl/absorb.sigml");
-  EXPECT_NE(r.out.find("1 signs: 1 parsed, 1 synthesized, 0 failed"), std::string::npos) << r.out;
+  const CliRun r = run_cli("check " + gestura::test::shared_data() + "/sigml-isl/absorb.sigml");
+  EXPECT_NE(r.output.find("1 signs: 1 parsed, 1 synthesized, 0 failed"), std::string::npos) << r.output;
   EXPECT_EQ(r.status, 0);
 }
 
@@ -60,27 +44,27 @@ TEST(SignCheck, BadLinesAreReportedAndTheRestChecked) {
                                      "\n"
                                      "{\"gloss\":\"C\",\"names\":\"hamflathand,hamparend\"}\n"
                                      "\x01\x02\xff\n");
-  const CliResult r = run_cli("check " + path);
-  EXPECT_NE(r.out.find("bad.jsonl:2: not a JSON object"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("bad.jsonl:3: B: no `hamnosys`"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("bad.jsonl:5: C: symbol 1: hamparend without a matching opening bracket: expected hamparbegin"), std::string::npos)
-      << r.out;
-  EXPECT_NE(r.out.find("5 signs: 1 parsed, 1 synthesized, 4 failed"), std::string::npos) << r.out;
+  const CliRun r = run_cli("check " + path);
+  EXPECT_NE(r.output.find("bad.jsonl:2: not a JSON object"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("bad.jsonl:3: B: no `hamnosys`"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("bad.jsonl:5: C: symbol 1: hamparend without a matching opening bracket: expected hamparbegin"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("5 signs: 1 parsed, 1 synthesized, 4 failed"), std::string::npos) << r.output;
   EXPECT_EQ(r.status, 1);
 }
 
 TEST(SignCheck, MalformedSigmlAndBadArgumentsFailCleanly) {
   const std::string path = temp_file("broken.sigml", "<sigml>\n<hns_sign gloss=\"x\">\n<hamnosys_manual>\n");
-  CliResult r = run_cli("check " + path);
-  EXPECT_NE(r.out.find("broken.sigml:3:"), std::string::npos) << r.out;
+  CliRun r = run_cli("check " + path);
+  EXPECT_NE(r.output.find("broken.sigml:3:"), std::string::npos) << r.output;
   EXPECT_EQ(r.status, 1);
   r = run_cli("check");
-  EXPECT_NE(r.out.find("needs a FILE"), std::string::npos);
+  EXPECT_NE(r.output.find("needs a FILE"), std::string::npos);
   EXPECT_EQ(r.status, 1);
   r = run_cli("check --bogus x.sigml");
-  EXPECT_NE(r.out.find("unknown flag --bogus"), std::string::npos);
+  EXPECT_NE(r.output.find("unknown flag --bogus"), std::string::npos);
   r = run_cli("check " + temp_file("x.txt", "hello"));
-  EXPECT_NE(r.out.find("expected .jsonl or .sigml"), std::string::npos);
+  EXPECT_NE(r.output.find("expected .jsonl or .sigml"), std::string::npos);
 }
 
 TEST(SignCheck, SynthesisHookCountsWhenConnected) {

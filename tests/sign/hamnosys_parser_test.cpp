@@ -9,7 +9,7 @@
 
 #include "gestura/core/error.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
-#include "shared_data.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 

@@ -8,16 +8,13 @@
 
 #include "gestura/core/error.hpp"
 #include "gestura/sign/phonology_direction.hpp"
+#include "support/shared_data.hpp"
 
 using namespace gestura;
 
 namespace {
 
-// $GESTURA_SHARED_DATA when set (worktrees live outside the project root), else the configured path.
-std::string shared_data() {
-  if (const char* env = std::getenv("GESTURA_SHARED_DATA"); env && *env) return env;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 std::vector<Direction> all_directions() {
   std::vector<Direction> v;

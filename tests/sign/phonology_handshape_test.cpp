@@ -9,16 +9,13 @@
 
 #include "gestura/core/math.hpp"
 #include "gestura/sign/phonology_handshape.hpp"
+#include "support/shared_data.hpp"
 
 using namespace gestura;
 
 namespace {
 
-// $GESTURA_SHARED_DATA when set (worktrees live outside the project root), else the configured path.
-std::string shared_data() {
-  if (const char* env = std::getenv("GESTURA_SHARED_DATA"); env && *env) return env;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 std::vector<BasicHandshape> all_basic() {
   std::vector<BasicHandshape> v;

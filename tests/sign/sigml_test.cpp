@@ -7,7 +7,7 @@
 
 #include "gestura/core/error.hpp"
 #include "gestura/sign/sigml.hpp"
-#include "shared_data.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 

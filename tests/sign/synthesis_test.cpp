@@ -11,6 +11,7 @@
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sigml.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
+#include "support/shared_data.hpp"
 
 using namespace gestura;
 
@@ -25,10 +26,7 @@ const Fixture& fx() {
   return f;
 }
 
-std::string shared_data() {
-  const char* env = std::getenv("GESTURA_SHARED_DATA");
-  return env && std::filesystem::exists(env) ? env : GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 // The avatar's joint model matrices in the middle of the sign's held posture.
 std::vector<mat4> held_pose(const SignSynthesis& r, float at = -1.0f) {

@@ -10,15 +10,13 @@
 
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/skeleton/joint_names.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
 using namespace gestura;
 
-std::string shared_data() {
-  if (const char* dir = std::getenv("GESTURA_SHARED_DATA")) return dir;
-  return GESTURA_SHARED_DATA;
-}
+using gestura::test::shared_data;
 
 std::set<std::string> rig_bones(const std::string& rig) {
   std::ifstream file(shared_data() + "/makehuman/rigs/" + rig + ".mhskel");

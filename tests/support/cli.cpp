@@ -8,7 +8,7 @@
 namespace gestura::test {
 
 CliRun run_command(const std::string& command) {
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  FILE* pipe = popen(("exec 2>&1\n" + command).c_str(), "r");
   if (!pipe) return {-1, ""};
   std::string out;
   std::array<char, 4096> buffer{};
@@ -17,6 +17,8 @@ CliRun run_command(const std::string& command) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
-CliRun run_cli(const std::string& args) { return run_command(std::string(GESTURA_CLI) + " " + args); }
+CliRun run_cli(const std::string& args, const std::string& env) {
+  return run_command(env + " '" + GESTURA_CLI + "' " + args);
+}
 
 }  // namespace gestura::test

@@ -10,8 +10,11 @@ struct CliRun {
   std::string output;  // stdout and stderr together
 };
 
+// Runs `command` with sh. Its stderr goes to the captured stdout first, so redirections written in
+// `command` still apply after that: `CMD >/dev/null` captures stderr alone.
 CliRun run_command(const std::string& command);
-// `gestura ARGS` (the binary under test).
-CliRun run_cli(const std::string& args);
+// `gestura ARGS` (the binary under test); `env` is put before it as shell assignments, e.g.
+// "GESTURA_LEXICON='/tmp/x.sqlite'".
+CliRun run_cli(const std::string& args, const std::string& env = "");
 
 }  // namespace gestura::test
