@@ -6,10 +6,11 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
-std::string makehuman_dir() { return std::string(GESTURA_SHARED_DATA) + "/makehuman"; }
+std::string makehuman_dir() { return gestura::test::shared_data() + "/makehuman"; }
 
 // Largest distance the joint `name` travels from its first-frame position in a joint-position JSON.
 double travel(const nlohmann::json& motion, const std::string& name) {
