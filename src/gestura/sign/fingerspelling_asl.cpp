@@ -13,7 +13,9 @@ using D = Direction;
 using S = AslHandshape;
 
 // J: the little finger draws the letter — down, then a hook toward the signer's left (the body's
-// midline for the right hand) — while the forearm supinates so the palm ends facing the signer.
+// midline for the right hand) — while the forearm supinates so the palm ends facing the signer and
+// the midline (in-left: turning from out to that is the short way through the midline side, the
+// way a right forearm supinates; a full half turn to "in" would leave the direction to chance).
 // The wrist path is a 3 cm drop followed by a half circle of radius 1.5 cm. One smooth stroke
 // (no stop at the joins).
 MovementPath j_path() {
@@ -50,7 +52,7 @@ const std::array<AslLetter, 36>& table() {
       {'G', S::G, D::L, D::I, std::nullopt, std::nullopt},
       {'H', S::U, D::L, D::I, std::nullopt, std::nullopt},
       {'I', S::I, D::U, D::O, std::nullopt, std::nullopt},
-      {'J', S::I, D::U, D::O, j_path(), D::I},
+      {'J', S::I, D::U, D::O, j_path(), D::IL},
       {'K', S::K, D::U, D::O, std::nullopt, std::nullopt},
       {'L', S::L, D::U, D::O, std::nullopt, std::nullopt},
       {'M', S::M, D::U, D::O, std::nullopt, std::nullopt},
