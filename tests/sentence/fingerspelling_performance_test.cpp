@@ -11,7 +11,9 @@
 #include "gestura/core/error.hpp"
 #include "gestura/face/eye_gaze.hpp"
 #include "gestura/face/face_channels.hpp"
+#include "gestura/lexicon/lexicon_files.hpp"
 #include "gestura/sentence/fingerspelling_performance.hpp"
+#include "gestura/sentence/signer.hpp"
 
 namespace gestura {
 namespace {
@@ -260,6 +262,29 @@ TEST(FingerspellingGaze, EyesFollowTheSpellingHandThenReturnToTheViewer) {
   no_gaze.gaze = false;
   const FingerspellingPerformance q = perform_fingerspelling(plan_spelling("WORD", ManualAlphabet::Asl), world().rig, no_gaze);
   EXPECT_EQ(q.clip.find_channel(std::string(face::kGazeHands)), -1);
+}
+
+TEST(FingerspellingGaze, TheSignerLooksAtTheHandWhileSpellingAName) {
+  Lexicon builtin = load_builtin_lexicon(builtin_lexicon_files());
+  LayeredLexicon layers;
+  layers.push_layer(builtin);
+  const Signer signer(world().avatar, layers);
+  const SentencePerformance p = signer.say("My name is Zyx.");
+  const auto spelled = std::find_if(p.glosses.begin(), p.glosses.end(), [](const PerformedGloss& g) { return g.gloss == "FS-ZYX"; });
+  ASSERT_NE(spelled, p.glosses.end());
+  const auto m = model_at(p.clip, 0.5f * (spelled->start + spelled->end));
+  const vec3 hand = 0.5f * (at(m, "r_wrist") + at(m, "r_middle1"));
+  for (const char* eye : {"l_eyeball_joint", "r_eyeball_joint"})
+    EXPECT_LT(degrees_between(eye_forward(m, eye), hand - at(m, eye)), 10.0f) << eye;
+  // Before the spelled name (on MY, the first sign) the eyes are on the viewer.
+  const auto first = model_at(p.clip, 0.5f * (p.glosses.front().start + p.glosses.front().end));
+  EXPECT_LT(degrees_between(eye_forward(first, "r_eyeball_joint"), vec3(0, 0, 1)), 1.0f);
+  // Z is traced inside the sentence too: the index tip moves sideways over the Z.
+  const float z_start = spelled->start, z_end = z_start + 0.5f;  // careful rate: Z takes two 0.25 s slots
+  const std::vector<vec3> tip = path_of(p.clip, "r_index_tip", z_start, z_end, 16);
+  float span = 0.0f;
+  for (const vec3& a : tip) span = std::max(span, std::abs(a.x - tip.front().x));
+  EXPECT_GT(span, 0.04f);
 }
 
 TEST(FingerspellingGaze, BadInputIsRefused) {

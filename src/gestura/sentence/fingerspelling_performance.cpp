@@ -23,11 +23,12 @@ namespace {
 // ASL: the palm centre of the spelling hand relative to its shoulder (a little lower, 30 cm out).
 constexpr vec3 kAslSpellingOffset{-0.05f, -0.08f, 0.30f};
 // BSL: the non-dominant palm centre relative to the chest site: 4 cm to the signer's left of the
-// midline, 4 cm lower, 28 cm in front, where both hands meet comfortably.
-constexpr vec3 kBslBaseOffset{0.0f, -0.04f, 0.28f};
-// BSL: both hands' configurations turned 30° about the vertical toward the dominant side, so the
-// non-dominant hand presents its palm and fingers to the dominant hand (and the dominant forearm
-// need not turn fully palm-out to reach them; measured: 3.3 → see docs/sign-phonology.md).
+// midline, 2 cm lower, 20 cm in front (elbows bent), where both hands meet comfortably.
+constexpr vec3 kBslBaseOffset{0.0f, -0.02f, 0.20f};
+// BSL: the non-dominant hand turned 30° about the vertical toward the dominant side, presenting its
+// palm and fingers to the dominant hand; a dominant hand laid on that palm turns with it, so its
+// forearm need not turn fully palm-out (on this avatar the IK then reaches the L of "DLGN" exactly
+// instead of 3.3 cm short).
 constexpr float kBslPresentDegrees = 30.0f;
 constexpr float kContactGap = 0.008f;  // surface point of one finger to the other's: finger flesh
 constexpr float kAslDip = 0.015f;      // a doubled moving letter dips this far on its way back
@@ -160,7 +161,10 @@ class LetterPoser {
     LetterPose p;
     const quat present = glm::angleAxis(glm::radians(kBslPresentDegrees), vec3(0.0f, 1.0f, 0.0f));
     HandState& d = p.formed[0];
-    d.orientation = present * dominant_frame(letter, Hand::Right).rotation;
+    // The dominant hand turns with the base only to lay itself on the base's palm; pointing at a
+    // fingertip or an edge it keeps its own directions (turned, a pointing hand flares the elbow).
+    d.orientation = dominant_frame(letter, Hand::Right).rotation;
+    if (letter.site == BslContactSite::Palm) d.orientation = present * d.orientation;
     d.shape = letter.dominant.posture;
     d.active = true;
     HandState& n = p.formed[1];
