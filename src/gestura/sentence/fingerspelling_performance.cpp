@@ -22,8 +22,8 @@ namespace {
 
 // ASL: the palm centre of the spelling hand relative to its shoulder (a little lower, 30 cm out).
 constexpr vec3 kAslSpellingOffset{-0.05f, -0.08f, 0.30f};
-// BSL: the non-dominant palm centre relative to the chest site: 4 cm to the signer's left of the
-// midline, 2 cm lower, 20 cm in front (elbows bent), where both hands meet comfortably.
+// BSL: the non-dominant palm centre relative to the chest site: at the midline, 2 cm lower, 20 cm
+// in front (elbows bent), where both hands meet comfortably.
 constexpr vec3 kBslBaseOffset{0.0f, -0.02f, 0.20f};
 // BSL: the non-dominant hand turned 30° about the vertical toward the dominant side, presenting its
 // palm and fingers to the dominant hand; a dominant hand laid on that palm turns with it, so its

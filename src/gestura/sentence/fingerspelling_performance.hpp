@@ -10,8 +10,8 @@
 // the J; Z: the index hand draws a Z with stops at the corners). A doubled static letter slides 4 cm
 // toward the dominant side; a doubled moving letter dips 1.5 cm on its way back to the start.
 //
-// BSL (two-handed): the non-dominant (left) hand presents its configuration in front of the chest,
-// left of the midline; the dominant hand forms its configuration and puts the part of it that
+// BSL (two-handed): the non-dominant (left) hand presents its configuration in front of the chest
+// at the midline, turned 30° toward the dominant side; the dominant hand forms its configuration and puts the part of it that
 // touches (index tip, finger pads, fist, ...) on the letter's site of the non-dominant hand (a
 // fingertip, the palm, the index, ...), found from the two hands' actual finger geometry on this
 // avatar. One-handed C leaves the non-dominant hand where it was. H brushes and J traces after the
