@@ -212,6 +212,24 @@ TEST(FingerspellingPerformance, BslUsesBothHandsAndTouchesTheNamedFingertips) {
   }
 }
 
+TEST(FingerspellingPerformance, BslDoubledLetterTapsTwice) {
+  const FingerspellingPerformance p = spell("BOOK", ManualAlphabet::Bsl);
+  const LetterTarget& o1 = letter(p, 1, 'O');
+  const LetterTarget& o2 = letter(p, 2, 'O');
+  EXPECT_EQ(o2.doubled, DoubleMark::Bounce);
+  auto gap = [&](float t) {
+    const auto m = model_at(p.clip, t);
+    return glm::distance(at(m, "r_index_tip"), at(m, "l_ring_tip"));
+  };
+  const float touching = gap(0.5f * (o1.reached + o1.end));
+  EXPECT_LT(touching, 0.03f);
+  EXPECT_LT(gap(0.5f * (o2.reached + o2.end)), 0.03f);
+  // Between the two the index lifts off the ring fingertip and comes back.
+  float lifted = 0.0f;
+  for (float t = o2.start; t <= o2.reached; t += 0.01f) lifted = std::max(lifted, gap(t));
+  EXPECT_GT(lifted, touching + 0.012f);
+}
+
 TEST(FingerspellingPerformance, BslConsonantsPutTheHandsTogether) {
   const FingerspellingPerformance p = spell("DLGN", ManualAlphabet::Bsl);
   auto middle = [](const std::vector<mat4>& m, const char* a, const char* b) { return 0.5f * (at(m, a) + at(m, b)); };

@@ -11,11 +11,12 @@
 // toward the dominant side; a doubled moving letter dips 1.5 cm on its way back to the start.
 //
 // BSL (two-handed): the non-dominant (left) hand presents its configuration in front of the chest
-// at the midline, turned 30° toward the dominant side; the dominant hand forms its configuration and puts the part of it that
-// touches (index tip, finger pads, fist, ...) on the letter's site of the non-dominant hand (a
-// fingertip, the palm, the index, ...), found from the two hands' actual finger geometry on this
-// avatar. One-handed C leaves the non-dominant hand where it was. H brushes and J traces after the
-// contact. A doubled letter taps twice: the dominant hand lifts 2 cm off the site and comes back.
+// at the midline, turned 30° toward the dominant side; the dominant hand forms its configuration
+// and puts the part of it that touches (index tip, finger pads, fist, ...) on the letter's site of
+// the non-dominant hand (a fingertip, the palm, the index, ...), found from the two hands' actual
+// finger geometry on this avatar. One-handed C leaves the non-dominant hand where it was. H
+// brushes and J traces after the contact. A doubled letter taps twice: the dominant hand lifts
+// 2 cm off the site and comes back.
 //
 // Time: each letter's transition, hold and movement are the plan's, divided by `speed`; the gap
 // between words is held.
