@@ -161,10 +161,12 @@ class LetterPoser {
     LetterPose p;
     const quat present = glm::angleAxis(glm::radians(kBslPresentDegrees), vec3(0.0f, 1.0f, 0.0f));
     HandState& d = p.formed[0];
-    // The dominant hand turns with the base only to lay itself on the base's palm; pointing at a
-    // fingertip or an edge it keeps its own directions (turned, a pointing hand flares the elbow).
+    // The dominant hand turns with the base to lay itself on the base's palm; pointing at a
+    // fingertip or an edge it turns the other way, forward into the presented hand (turned with the
+    // base, a pointing hand had to reach round with its elbow out at shoulder height).
     d.orientation = dominant_frame(letter, Hand::Right).rotation;
     if (letter.site == BslContactSite::Palm) d.orientation = present * d.orientation;
+    else d.orientation = glm::inverse(present) * d.orientation;
     d.shape = letter.dominant.posture;
     d.active = true;
     HandState& n = p.formed[1];
