@@ -42,7 +42,7 @@ TEST(FingerspellingAsl, OnlyJAndZMoveAndTheyTraceTheirLetters) {
   const MovementPath& jp = *j.movement;
   EXPECT_LT(sample_path(jp, 0.5f).position.y, -0.02f);
   EXPECT_GT(path_end(jp).x, 0.01f);
-  EXPECT_EQ(j.end_palm, Direction::I);
+  EXPECT_EQ(j.end_palm, Direction::IL);  // toward the signer, turned through the midline side
   // Z: the index traces three strokes: right, down-left diagonal, right again; it ends lower and to the right.
   const AslLetter& z = *find_asl_letter('Z');
   EXPECT_EQ(z.handshape, AslHandshape::One);

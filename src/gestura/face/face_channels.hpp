@@ -30,8 +30,8 @@ inline constexpr std::string_view kBrowInnerUpL = "browInnerUp_L", kBrowInnerUpR
 // Channels without a morph target:
 //  jaw_open   0..1, opening of the jaw; drive temporomandibular x = jaw_open * kJawOpenMaxDegrees.
 //             Visemes shape the lips only, so mouthing and an expression never fight over the jaw.
-//  gaze_hands 0..1, how much the eyes look at the dominant hand (fingerspelling); the lead blends
-//             the eyeball joints between straight ahead (0) and aimed at the hand (1).
+//  gaze_hands 0..1, how much the eyes look at the dominant hand (fingerspelling); write_eye_gaze
+//             (eye_gaze.hpp) turns the eyeball joints from straight ahead (0) to the hand (1).
 inline constexpr std::string_view kJawOpen = "jaw_open";
 inline constexpr std::string_view kGazeHands = "gaze_hands";
 inline constexpr float kJawOpenMaxDegrees = 20.0f;  // well inside the joint's −2..28° limit

@@ -9,7 +9,7 @@
 //   negation         headshake: yaw ±10° at 2.5 Hz over the negated signs only, brows lowered 0.3.
 //   topic            brows raised 0.7, head tilted back 3°.
 //   affect           the expression's morph weights × intensity (expressions.hpp).
-//   fingerspelling   gaze_hands = 1 over each fingerspelled gloss (the lead aims the eyeball joints).
+//   fingerspelling   gaze_hands = 1 over each fingerspelled gloss (eye_gaze.hpp aims the eyes).
 //   blinks           eyeBlink_L/R, 150 ms, at every boundary and otherwise every 2–5 s (gaps from a
 //                    small hash of the plan's seed, so the same plan always blinks the same).
 //

@@ -7,10 +7,12 @@
 #include <optional>
 
 #include "gestura/core/error.hpp"
+#include "gestura/face/eye_gaze.hpp"
 #include "gestura/face/face_channels.hpp"
 #include "gestura/face/mouthing.hpp"
 #include "gestura/face/nonmanual.hpp"
 #include "gestura/face/nonmanual_from_translation.hpp"
+#include "gestura/sentence/fingerspelling_performance.hpp"
 #include "gestura/sign/fingerspelling_asl.hpp"
 #include "gestura/sign/fingerspelling_plan.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
@@ -36,8 +38,6 @@ constexpr float kPhraseFinalHold = 0.25f;         // … and at least this long
 constexpr float kSentencePause = 0.5f;            // between sentences ('.', '!', '?')
 constexpr float kClausePause = 0.25f;             // at a comma or other clause break
 constexpr float kMouthingAmplitude = 0.6f;        // ASL mouthing is reduced
-// Where the dominant hand fingerspells, relative to its shoulder: a little lower, 30 cm in front.
-constexpr vec3 kSpellingOffset{-0.05f, -0.08f, 0.30f};
 
 // Joins per-sign plans into one plan for the utterance: each sign is planned without rest at either
 // end, shifted to the utterance clock, and reached from the previous sign's last state by a
@@ -46,8 +46,6 @@ class UtteranceBuilder {
  public:
   UtteranceBuilder(const SigningRig& rig, float speed) : rig_(rig), speed_(speed) {
     for (int h = 0; h < 2; ++h) state_[h] = rest_hand_state(rig, hand_of(h));
-    const int shoulder = rig.hand(Hand::Right).shoulder;
-    spelling_origin_ = vec3(rig.bind_model[static_cast<std::size_t>(shoulder)][3]) + kSpellingOffset;
   }
 
   float now() const { return now_; }
@@ -103,24 +101,21 @@ class UtteranceBuilder {
     return {start, end};
   }
 
-  // Appends the letters of one word on the dominant hand; the other hand rests.
+  // Appends the letters of one word (fingerspelling_performance.hpp), reached from the hands'
+  // current state like the first posture of a sign.
   std::array<float, 2> add_spelling(const SpellingPlan& plan) {
-    float start = now_;
-    for (std::size_t i = 0; i < plan.letters.size(); ++i) {
-      const LetterTarget& l = plan.letters[i];
-      const AslLetter* letter = find_asl_letter(l.letter);
-      std::array<HandState, 2> target{letter_state(*letter, l.offset), rest_hand_state(rig_, Hand::Left)};
-      if (i == 0) {
-        transition_to(target);
-        start = now_;
-      } else {
-        const float t1 = now_ + (l.reached - l.start) / speed_;
-        for (int h = 0; h < 2; ++h) push(h, state_[h], target[h], now_, t1);
-        now_ = t1;
-        state_ = target;
+    const SpelledHands hands = spell_with_hands(plan, rig_, speed_);
+    transition_to({hands.first(Hand::Right), hands.first(Hand::Left)});
+    const float start = now_;
+    const std::array<const HandTimeline*, 2> spelled{&hands.right, &hands.left};
+    for (int h = 0; h < 2; ++h)
+      for (HandSegment seg : spelled[h]->segments) {
+        seg.start += start;
+        seg.end += start;
+        out_[h].segments.push_back(std::move(seg));
       }
-      hold((l.end - l.reached) / speed_);
-    }
+    state_ = {hands.right.final_state(), hands.left.final_state()};
+    now_ = start + hands.duration;
     return {start, now_};
   }
 
@@ -143,15 +138,6 @@ class UtteranceBuilder {
 
  private:
   static Hand hand_of(int h) { return h == 0 ? Hand::Right : Hand::Left; }
-
-  HandState letter_state(const AslLetter& letter, vec3 offset) const {
-    HandState s;
-    s.position = spelling_origin_ + offset;
-    s.orientation = letter_frame(letter, Hand::Right).rotation;
-    s.shape = asl_handshape(letter.handshape);
-    s.active = true;
-    return s;
-  }
 
   void push(int h, const HandState& from, const HandState& to, float t0, float t1) {
     HandSegment seg;
@@ -177,7 +163,6 @@ class UtteranceBuilder {
 
   const SigningRig& rig_;
   float speed_;
-  vec3 spelling_origin_{0.0f};
   float now_ = 0.0f;
   std::array<HandState, 2> state_;
   std::array<HandTimeline, 2> out_;
@@ -361,6 +346,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
     }
   }
   if (!face_actions.empty()) face::write_face_channels(face_actions, out.clip);
+  face::write_eye_gaze(skeleton, out.clip, options.fps);
   write_jaw(skeleton, out.clip);
   out.clip.duration = std::max(out.clip.duration, out.clip.end_time());
   out.duration = out.clip.duration;

@@ -13,13 +13,18 @@ using D = Direction;
 using S = AslHandshape;
 
 // J: the little finger draws the letter — down, then a hook toward the signer's left (the body's
-// midline for the right hand) — while the forearm supinates so the palm ends facing the signer.
-// The wrist path is a 3 cm drop followed by a half circle of radius 1.5 cm. One smooth stroke
-// (no stop at the joins).
+// midline for the right hand) — while the forearm supinates so the palm ends facing the signer and
+// the midline (in-left: turning from out to that is the short way through the midline side, the
+// way a right forearm supinates; a full half turn to "in" would leave the direction to chance).
+// The hand path is a 5 cm drop followed by a half circle of radius 1.5 cm. One smooth stroke
+// (no stop at the joins). The forearm's turn swings the little finger (6 cm to the side of the
+// palm centre) toward the midline as well, so the drop must be long enough for the J to keep
+// its stem: with 3 cm the traced letter was a shallow swoosh.
 MovementPath j_path() {
-  std::vector<vec3> points{{0.0f, 0.0f, 0.0f}, {0.0f, -0.03f, 0.0f}};
+  constexpr float drop = 0.05f;
+  std::vector<vec3> points{{0.0f, 0.0f, 0.0f}, {0.0f, -drop, 0.0f}};
   const float r = 0.015f;
-  const vec3 centre{r, -0.03f, 0.0f};
+  const vec3 centre{r, -drop, 0.0f};
   for (int k = 1; k <= 8; ++k) {
     const float a = kPi + kPi * static_cast<float>(k) / 8.0f;  // −X side of the centre, under it, up on its +X side
     points.push_back(centre + r * vec3{std::cos(a), std::sin(a), 0.0f});
@@ -50,7 +55,7 @@ const std::array<AslLetter, 36>& table() {
       {'G', S::G, D::L, D::I, std::nullopt, std::nullopt},
       {'H', S::U, D::L, D::I, std::nullopt, std::nullopt},
       {'I', S::I, D::U, D::O, std::nullopt, std::nullopt},
-      {'J', S::I, D::U, D::O, j_path(), D::I},
+      {'J', S::I, D::U, D::O, j_path(), D::IL},
       {'K', S::K, D::U, D::O, std::nullopt, std::nullopt},
       {'L', S::L, D::U, D::O, std::nullopt, std::nullopt},
       {'M', S::M, D::U, D::O, std::nullopt, std::nullopt},

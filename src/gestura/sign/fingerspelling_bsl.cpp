@@ -13,7 +13,7 @@ using D = Direction;
 // The hands that recur. For a right-handed signer the non-dominant (left) hand is held in front of
 // the chest, palm toward the signer, fingers pointing up and to the right (toward the dominant
 // hand), so its fingertips are easy for the dominant index to reach.
-BslHand pointer() { return {basic_handshape(BasicHandshape::Finger2), D::L, D::I}; }       // vowels
+BslHand pointer() { return {basic_handshape(BasicHandshape::Finger2), D::UL, D::I}; }      // vowels
 BslHand spread_base() { return {make_handshape(BasicHandshape::Finger2345, ThumbModifier::Out), D::UR, D::I}; }
 BslHand flat_base() { return {basic_handshape(BasicHandshape::Flat), D::UR, D::I}; }
 // Something laid on the base palm: the dominant hand points up-left with its palm facing the base.

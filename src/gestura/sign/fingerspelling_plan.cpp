@@ -110,7 +110,8 @@ SpellingPlan plan_spelling(std::string_view text, ManualAlphabet alphabet, Spell
     target.offset = vec3{-slide, 0.0f, 0.0f};
     const float length = slot * (letter.has_movement ? options.movement_letter_slots : 1.0f);
     target.start = clock;
-    target.reached = clock + options.transition_fraction * length;
+    // A moving letter's shape forms as fast as any other's; its extra slot goes to the movement.
+    target.reached = clock + options.transition_fraction * slot;
     target.end = clock + length;
     target.movement_end = target.end;
     clock = target.end;

@@ -6,8 +6,9 @@
 // Names and unfamiliar words are spelled more carefully: 4 letters/s. BSL letters are two-handed
 // and the dominant hand travels between contact sites, so its fluent default is 5 letters/s.
 // Each letter's slot is split into a transition (45 %) and a hold (55 %); letters with their own
-// movement (ASL J, Z; BSL H, J) take two slots; the last letter of a word is held 0.25 s longer,
-// and words are separated by a 0.35 s pause.
+// movement (ASL J, Z; BSL H, J) take two slots, formed in one slot's transition and moving for
+// the rest; the last letter of a word is held 0.25 s longer, and words are separated by a 0.35 s
+// pause.
 #include <cstdint>
 #include <string_view>
 #include <vector>

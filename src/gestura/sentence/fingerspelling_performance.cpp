@@ -1,0 +1,339 @@
+#include "gestura/sentence/fingerspelling_performance.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "gestura/body/body_sites.hpp"
+#include "gestura/core/error.hpp"
+#include "gestura/face/eye_gaze.hpp"
+#include "gestura/face/face_action.hpp"
+#include "gestura/face/face_channels.hpp"
+#include "gestura/sign/fingerspelling_asl.hpp"
+#include "gestura/sign/fingerspelling_bsl.hpp"
+#include "gestura/sign/movement_timing.hpp"
+#include "gestura/sign/sign_performer.hpp"
+
+namespace gestura {
+
+namespace {
+
+// ASL: the palm centre of the spelling hand relative to its shoulder (a little lower, 30 cm out).
+constexpr vec3 kAslSpellingOffset{-0.05f, -0.08f, 0.30f};
+// BSL: the non-dominant palm centre relative to the chest site: at the midline, 2 cm lower, 20 cm
+// in front (elbows bent), where both hands meet comfortably.
+constexpr vec3 kBslBaseOffset{0.0f, -0.02f, 0.20f};
+// BSL: the non-dominant hand turned 30° about the vertical toward the dominant side, presenting its
+// palm and fingers to the dominant hand; a dominant hand laid on that palm turns with it, so its
+// forearm need not turn fully palm-out (on this avatar the IK then reaches the L of "DLGN" exactly
+// instead of 3.3 cm short).
+constexpr float kBslPresentDegrees = 30.0f;
+constexpr float kContactGap = 0.008f;  // surface point of one finger to the other's: finger flesh
+constexpr float kAslDip = 0.015f;      // a doubled moving letter dips this far on its way back
+constexpr float kBslTapLift = 0.02f;   // a doubled BSL letter lifts off its site this far
+constexpr float kGazeRampOut = 0.25f;  // seconds for the eyes to come back to the viewer
+
+// Where a hand's parts are for a state: vectors from the palm centre, in the signer frame.
+struct HandParts {
+  std::array<vec3, 5> tips;      // thumb .. little finger
+  std::array<vec3, 4> knuckles;  // index .. little finger MCP
+  vec3 finger, palm, thumb_side;
+  float half_width = 0.04f;      // palm centre to its radial / ulnar edge
+  float half_thickness = 0.015f;
+};
+
+HandParts parts_of(const SigningRig& rig, Hand hand, const HandState& s, Pose& scratch) {
+  const HandRig& hr = rig.hand(hand);
+  apply_hand_posture(rig, hand, s.shape, scratch);
+  clamp_to_limits(rig.skeleton(), scratch);  // as the performer will
+  const HandGeometry g = hand_geometry(rig, hand, scratch);
+  const quat wrist = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), s.orientation}, hr.rest_frame.rotation,
+                                        hr.rest_wrist_rotation);
+  HandParts p;
+  for (std::size_t f = 0; f < 5; ++f) p.tips[f] = wrist * (g.tips[f] - g.palm_centre);
+  for (std::size_t f = 0; f < 4; ++f) p.knuckles[f] = wrist * (g.knuckles[f] - g.palm_centre);
+  p.finger = s.orientation * vec3(0, 1, 0);
+  p.palm = s.orientation * vec3(0, 0, 1);
+  p.thumb_side = hand_frame_from_vectors(p.finger, p.palm, hand).thumb_side;
+  p.half_width = 0.5f * glm::length(p.knuckles[0] - p.knuckles[3]) + 0.01f;
+  p.half_thickness = hr.palm_half_thickness;
+  return p;
+}
+
+// A contact site on the non-dominant hand: the point (relative to its palm centre) and the side
+// the dominant hand comes from.
+struct Site {
+  vec3 point{0.0f};
+  vec3 normal{0.0f, 0.0f, -1.0f};
+};
+
+Site site_on(const HandParts& n, BslContactSite site) {
+  const vec3 middle_of_index = 0.5f * (n.knuckles[0] + n.tips[1]);
+  switch (site) {
+    case BslContactSite::None: break;
+    case BslContactSite::ThumbTip: return {n.tips[0], n.palm};
+    case BslContactSite::IndexTip: return {n.tips[1], n.finger};
+    case BslContactSite::MiddleTip: return {n.tips[2], n.palm};
+    case BslContactSite::RingTip: return {n.tips[3], n.palm};
+    case BslContactSite::PinkyTip: return {n.tips[4], n.palm};
+    case BslContactSite::IndexFinger: return {middle_of_index, n.palm};
+    case BslContactSite::IndexMiddle:  // across the backs of the two fingers
+      return {0.25f * (n.knuckles[0] + n.knuckles[1] + n.tips[1] + n.tips[2]) - n.palm * 0.008f, -n.palm};
+    case BslContactSite::Palm: return {n.palm * n.half_thickness, n.palm};
+    case BslContactSite::PinkyEdge: return {-n.thumb_side * n.half_width, -n.thumb_side};
+    case BslContactSite::ThumbIndexWeb: return {0.5f * (n.tips[0] + n.knuckles[0]) * 0.6f, n.palm};
+    case BslContactSite::FistTop:
+    case BslContactSite::ThumbIndexSide: return {n.thumb_side * n.half_width, n.thumb_side};
+    case BslContactSite::LittleFinger: return {n.tips[4], n.finger};
+    case BslContactSite::Fingers: return {n.finger * 0.06f, n.palm};
+  }
+  return {};
+}
+
+// The point of the dominant hand that makes the contact, relative to its palm centre.
+vec3 part_of(const HandParts& d, BslDominantPart part) {
+  switch (part) {
+    case BslDominantPart::None: break;
+    case BslDominantPart::IndexTip: return d.tips[1];
+    case BslDominantPart::IndexPad: return 0.5f * (d.knuckles[0] + d.tips[1]) + d.palm * 0.008f;
+    case BslDominantPart::FingerPads:
+      return 0.25f * (d.knuckles[0] + d.knuckles[1] + d.tips[1] + d.tips[2]) + d.palm * 0.008f;
+    case BslDominantPart::ThumbIndex: return 0.5f * (d.tips[0] + d.tips[1]);
+    case BslDominantPart::FistSide: return -d.thumb_side * d.half_width;
+    case BslDominantPart::LittleFinger: return d.tips[4];
+    case BslDominantPart::Fingers: return d.finger * 0.06f;
+    case BslDominantPart::PalmSurface: return d.palm * d.half_thickness;
+  }
+  return vec3(0.0f);
+}
+
+// What the two hands do for one letter: the configuration formed, the dominant hand's own
+// movement after it (J, Z, BSL H and J), and where a doubled letter's bounce goes.
+struct LetterPose {
+  std::array<HandState, 2> formed;  // [0] dominant (right), [1] non-dominant (left)
+  std::array<HandState, 2> after;   // after the letter's movement (= formed without one)
+  std::optional<MovementPath> movement;
+  vec3 bounce{0.0f};                // displacement at the bottom of a bounce
+};
+
+class LetterPoser {
+ public:
+  LetterPoser(const SigningRig& rig) : rig_(rig), scratch_(rig.rest) {
+    const int shoulder = rig.hand(Hand::Right).shoulder;
+    asl_origin_ = vec3(rig.bind_model[static_cast<std::size_t>(shoulder)][3]) + kAslSpellingOffset;
+    const BodySite* chest = find_site(rig.sites, "chest");
+    const vec3 chest_point = chest ? site_position(*chest, rig.bind_model) : vec3(0.0f, 1.25f, 0.12f);
+    bsl_base_ = chest_point + kBslBaseOffset;
+  }
+
+  // `previous_left`: the non-dominant hand before this letter (a one-handed BSL letter keeps it).
+  LetterPose pose(ManualAlphabet alphabet, const LetterTarget& target, const HandState& previous_left) {
+    return alphabet == ManualAlphabet::Asl ? asl(target) : bsl(target, previous_left);
+  }
+
+ private:
+  LetterPose asl(const LetterTarget& target) const {
+    const AslLetter& letter = *find_asl_letter(target.letter);
+    LetterPose p;
+    HandState& s = p.formed[0];
+    s.position = asl_origin_ + target.offset;
+    s.orientation = letter_frame(letter, Hand::Right).rotation;
+    s.shape = asl_handshape(letter.handshape);
+    s.active = true;
+    p.formed[1] = rest_hand_state(rig_, Hand::Left);
+    p.after = p.formed;
+    p.movement = letter_movement(letter, Hand::Right);
+    if (p.movement) {
+      p.after[0].position += path_end(*p.movement);
+      if (letter.end_palm)
+        p.after[0].orientation =
+            hand_frame_from_vectors(direction_vector(letter.finger), direction_vector(*letter.end_palm), Hand::Right)
+                .rotation;
+    }
+    p.bounce = vec3(0.0f, -kAslDip, 0.0f);
+    return p;
+  }
+
+  LetterPose bsl(const LetterTarget& target, const HandState& previous_left) {
+    const BslLetter& letter = *find_bsl_letter(target.letter);
+    LetterPose p;
+    const quat present = glm::angleAxis(glm::radians(kBslPresentDegrees), vec3(0.0f, 1.0f, 0.0f));
+    HandState& d = p.formed[0];
+    // The dominant hand turns with the base to lay itself on the base's palm; pointing at a
+    // fingertip or an edge it turns the other way, forward into the presented hand (turned with the
+    // base, a pointing hand had to reach round with its elbow out at shoulder height).
+    d.orientation = dominant_frame(letter, Hand::Right).rotation;
+    if (letter.site == BslContactSite::Palm) d.orientation = present * d.orientation;
+    else d.orientation = glm::inverse(present) * d.orientation;
+    d.shape = letter.dominant.posture;
+    d.active = true;
+    HandState& n = p.formed[1];
+    if (const std::optional<HandFrame> frame = non_dominant_frame(letter, Hand::Right)) {
+      n.position = bsl_base_;
+      n.orientation = present * frame->rotation;
+      n.shape = letter.non_dominant->posture;
+      n.active = true;
+      const Site site = site_on(parts_of(rig_, Hand::Left, n, scratch_), letter.site);
+      const vec3 part = part_of(parts_of(rig_, Hand::Right, d, scratch_), letter.part);
+      d.position = n.position + site.point + site.normal * kContactGap - part;
+      p.bounce = site.normal * kBslTapLift;
+    } else {
+      // One-handed (C): formed beside the base, on the dominant side; the other hand stays.
+      n = previous_left;
+      d.position = bsl_base_ + vec3(-0.14f, 0.04f, 0.0f);
+      p.bounce = vec3(0.0f, -kAslDip, 0.0f);
+    }
+    p.after = p.formed;
+    if (letter.movement) {
+      p.movement = letter.movement;
+      p.after[0].position += path_end(*letter.movement);
+    }
+    return p;
+  }
+
+  const SigningRig& rig_;
+  Pose scratch_;
+  vec3 asl_origin_{0.0f}, bsl_base_{0.0f};
+};
+
+Movement timed(const MovementPath& path, float duration) {
+  Movement m;
+  m.path = path;
+  m.profile = default_profile(path);
+  m.duration = duration;
+  return m;
+}
+
+void push(HandTimeline& timeline, const HandState& from, const HandState& to, float t0, float t1,
+          std::vector<Movement> paths = {}) {
+  HandSegment seg;
+  seg.start = t0;
+  seg.end = t1;
+  seg.from = from;
+  seg.to = to;
+  seg.paths = std::move(paths);
+  timeline.segments.push_back(std::move(seg));
+}
+
+void check_speed(float speed) {
+  if (!(speed >= 0.25f && speed <= 4.0f)) throw Error("fingerspelling speed " + std::to_string(speed) + " is outside 0.25–4");
+}
+
+}  // namespace
+
+SpelledHands spell_with_hands(const SpellingPlan& plan, const SigningRig& rig, float speed) {
+  if (plan.letters.empty()) throw Error("cannot perform an empty fingerspelling plan");
+  check_speed(speed);
+  const float origin = plan.letters.front().reached;
+  auto clock = [&](float t) { return std::max(0.0f, (t - origin) / speed); };
+
+  SpelledHands out;
+  std::array<HandTimeline*, 2> timeline{&out.right, &out.left};
+  LetterPoser poser(rig);
+  std::array<HandState, 2> state{};
+  float now = 0.0f;
+  for (std::size_t k = 0; k < plan.letters.size(); ++k) {
+    const LetterTarget& target = plan.letters[k];
+    const HandState previous_left = k == 0 ? rest_hand_state(rig, Hand::Left) : state[1];
+    const LetterPose pose = poser.pose(plan.alphabet, target, previous_left);
+    LetterTarget timed_target = target;
+    if (k == 0) {
+      state = pose.formed;
+      timed_target.start = 0.0f;
+    } else {
+      // The pause between words: the last letter is held.
+      const float transition_start = std::max(now, clock(target.start));
+      if (transition_start > now)
+        for (int h = 0; h < 2; ++h) push(*timeline[h], state[h], state[h], now, transition_start);
+      const float reached = std::max(transition_start + 1e-3f, clock(target.reached));
+      for (int h = 0; h < 2; ++h) {
+        std::vector<Movement> bounce;
+        if (h == 0 && target.doubled == DoubleMark::Bounce)
+          bounce.push_back(timed(polyline_path({vec3(0.0f), pose.bounce, vec3(0.0f)}, true), reached - transition_start));
+        push(*timeline[h], state[h], pose.formed[h], transition_start, reached, std::move(bounce));
+      }
+      state = pose.formed;
+      now = reached;
+      timed_target.start = transition_start;
+    }
+    timed_target.reached = now;
+    if (pose.movement) {
+      const float moved = std::max(now + 1e-3f, clock(target.movement_end));
+      push(*timeline[0], state[0], pose.after[0], now, moved, {timed(*pose.movement, moved - now)});
+      push(*timeline[1], state[1], pose.after[1], now, moved);
+      state = pose.after;
+      now = moved;
+    }
+    timed_target.movement_end = now;
+    const float end = std::max(now, clock(target.end));
+    if (end > now || k + 1 == plan.letters.size())
+      for (int h = 0; h < 2; ++h) push(*timeline[h], state[h], state[h], now, std::max(end, now + 1e-3f));
+    now = std::max(end, now + (k + 1 == plan.letters.size() ? 1e-3f : 0.0f));
+    timed_target.end = now;
+    out.letters.push_back(timed_target);
+  }
+  out.duration = now;
+  return out;
+}
+
+FingerspellingPerformance perform_fingerspelling(const SpellingPlan& plan, const SigningRig& rig,
+                                                 const FingerspellingOptions& options) {
+  check_speed(options.speed);
+  if (!(options.fps >= 1.0f && options.fps <= 240.0f)) throw Error("fps " + std::to_string(options.fps) + " is outside 1–240");
+  const SpelledHands hands = spell_with_hands(plan, rig, options.speed);
+  const std::array<const HandTimeline*, 2> spelled{&hands.right, &hands.left};
+  std::array<HandState, 2> rest{rest_hand_state(rig, Hand::Right), rest_hand_state(rig, Hand::Left)};
+
+  // Approach from rest and return to rest as a single sign's would (sign_planner), both hands
+  // together, as long as the longer path needs.
+  auto travel = [&](const HandState& a, const HandState& b) {
+    return (transition_duration(glm::distance(a.position, b.position)) + 0.1f) / options.speed;
+  };
+  float approach = 0.0f, back = 0.0f;
+  for (int h = 0; h < 2; ++h) {
+    approach = std::max(approach, travel(rest[h], spelled[h]->segments.front().from));
+    back = std::max(back, travel(spelled[h]->final_state(), rest[h]));
+  }
+  SignPlan motion;
+  std::array<HandTimeline*, 2> out{&motion.right, &motion.left};
+  for (int h = 0; h < 2; ++h) {
+    push(*out[h], rest[h], spelled[h]->segments.front().from, 0.0f, approach);
+    for (HandSegment seg : spelled[h]->segments) {
+      seg.start += approach;
+      seg.end += approach;
+      out[h]->segments.push_back(std::move(seg));
+    }
+    push(*out[h], spelled[h]->final_state(), rest[h], approach + hands.duration, approach + hands.duration + back);
+  }
+  motion.sign_start = approach;
+  motion.sign_end = approach + hands.duration;
+
+  FingerspellingPerformance result;
+  result.clip = perform_plan(motion, rig, PerformOptions{options.fps});
+  result.clip.name = "fingerspell";
+  result.spelling_start = motion.sign_start;
+  result.spelling_end = motion.sign_end;
+  for (LetterTarget t : hands.letters) {
+    t.start += approach;
+    t.reached += approach;
+    t.movement_end += approach;
+    t.end += approach;
+    result.letters.push_back(t);
+  }
+  result.letters.front().start = 0.0f;  // the approach from rest is the first letter's transition
+  if (options.gaze) {
+    // The eyes go to the hand as it arrives (a glance, over the second half of the approach) and
+    // come back to the viewer as the last letter is released.
+    const float ramp_in = 0.5f * approach;
+    const face::FaceAction look{face::kGazeHands, approach - ramp_in, motion.sign_end + kGazeRampOut, 1.0f, ramp_in,
+                                kGazeRampOut};
+    face::write_face_channels(std::span<const face::FaceAction>(&look, 1), result.clip);
+    face::write_eye_gaze(rig.skeleton(), result.clip, options.fps);
+  }
+  result.clip.duration = std::max(result.clip.duration, result.clip.end_time());
+  return result;
+}
+
+}  // namespace gestura
