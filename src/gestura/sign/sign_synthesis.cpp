@@ -16,6 +16,14 @@ SignSynthesis synthesize_sign(const sign::HamSign& sign, const SigningRig& rig, 
   return out;
 }
 
+SignSynthesis synthesize_sign(const sign::HamSign& sign, std::span<const sign::NonManual> nonmanual,
+                              const SigningRig& rig, const PlanOptions& plan_options,
+                              const PerformOptions& perform_options) {
+  SignSynthesis out = synthesize_sign(sign, rig, plan_options, perform_options);
+  out.warnings = add_sign_nonmanuals(nonmanual, out.plan.sign_start, out.plan.sign_end, rig, perform_options.fps, out.clip);
+  return out;
+}
+
 std::optional<std::string> synthesis_problem(const SignSynthesis& result, const SigningRig& rig, float max_penetration) {
   const Skeleton& s = rig.skeleton();
   for (std::size_t j = 0; j < result.clip.rotations.size(); ++j) {
@@ -32,12 +40,13 @@ std::optional<std::string> synthesis_problem(const SignSynthesis& result, const 
 }
 
 void connect_synthesis_to_check() {
-  sign::set_synthesis_hook([](const sign::HamSign& sign) -> std::optional<std::string> {
+  sign::set_synthesis_hook([](const sign::HamSign& sign,
+                              std::span<const sign::NonManual> nonmanual) -> std::optional<std::string> {
     // One avatar and rig for the whole check run.
     static const Avatar avatar = build_avatar();
     static const SigningRig rig = make_signing_rig(avatar);
     try {
-      const SignSynthesis result = synthesize_sign(sign, rig);
+      const SignSynthesis result = synthesize_sign(sign, nonmanual, rig);
       return synthesis_problem(result, rig);
     } catch (const std::exception& e) {
       return std::string(e.what());
