@@ -21,6 +21,10 @@ namespace fc = face;
 constexpr std::string_view kLeftEye = "l_eyeball_joint", kRightEye = "r_eyeball_joint";
 constexpr std::string_view kLeftClavicle = "l_sternoclavicular", kRightClavicle = "r_sternoclavicular";
 constexpr float kBlinkSeconds = 0.15f;
+// Seconds per unit of relative phoneme duration (phoneme.hpp: a lax vowel is 1) when a mouth
+// picture is spoken: about 6–7 phonemes a second, as JASigning speaks them; slower than speech,
+// as mouthing with a sign is.
+constexpr float kMouthingSecondsPerUnit = 0.15f;
 
 // ---- the tables ------------------------------------------------------------------------------
 
@@ -322,7 +326,11 @@ class TierPlanner {
     if (!reading.unknown.empty())
       out_.warnings.push_back({nm.line, std::string(sign::nonmanual_tier_name(nm.tier)) + " '" + nm.value +
                                             "': '" + reading.unknown + "' is not SAMPA; skipped"});
-    fc::append_viseme_actions(reading.phonemes, start_, end_, 1.0f, out_.face);
+    // At most a natural mouthing rate: a long sign does not drag its word out.
+    float units = 0.0f;
+    for (const fc::Phoneme& p : reading.phonemes) units += p.duration;
+    const float end = std::min(end_, start_ + units * kMouthingSecondsPerUnit);
+    fc::append_viseme_actions(reading.phonemes, start_, end, 1.0f, out_.face);
   }
 
   bool mouth_gesture(const sign::NonManual& nm) {

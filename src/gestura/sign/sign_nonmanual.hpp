@@ -7,8 +7,9 @@
 //
 // Timing: SiGML's <hamnosys_nonmanual> gives no timing of its own, and JASigning performs several
 // elements of one tier together, so every tier value spans the sign's articulation [start, end]
-// (first posture reached → end of the final hold). Mouth gestures and mouth pictures stretch their
-// phonemes over that span as mouthing does.
+// (first posture reached → end of the final hold). Mouth pictures and spoken mouth gestures start
+// with the sign and share its span as mouthing does, but never run slower than about 6–7 phonemes
+// a second: in a long sign the word is said at the start and the mouth rests afterwards.
 //
 // Values (the ViSiCAST/eSIGN SiGML tag sets; "left"/"right" are the signer's):
 //   shoulder   UL UR UB raised, HL HR HB hunched forward, SL SR SB shrugged once (sternoclaviculars)
