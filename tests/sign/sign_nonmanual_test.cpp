@@ -261,3 +261,21 @@ TEST(SignNonManual, ALongSignSaysItsMouthPictureAtSpeakingPaceFromItsStart) {
   EXPECT_LT(open.times.back() - r.plan.sign_start, 2.0f);
   EXPECT_GT(open.times.back() - r.plan.sign_start, 0.8f);
 }
+
+TEST(SignNonManual, GesturalTierSequencesShareTheSign) {
+  // A nod in the first half, a shake in the second (gestural SiGML's tiers are sequences).
+  const std::string xml = R"(<sigml><hamgestural_sign gloss="g">
+<sign_nonmanual><head_tier><head_movement movement="NF"/><head_movement movement="SL"/></head_tier></sign_nonmanual>
+<sign_manual><handconfig handshape="flat"/><handconfig extfidir="u" palmor="l"/><location_bodyarm location="chest"/>
+<directedmotion direction="o"/></sign_manual></hamgestural_sign></sigml>)";
+  const sign::SigmlSign s = sign::read_sigml(xml).at(0);
+  const SignSynthesis r = synthesize_sign(s.manual, s.nonmanual, fx().rig);
+  EXPECT_TRUE(r.warnings.empty());
+  const float a = r.plan.sign_start, b = r.plan.sign_end;
+  const vec3 first = angles_at(r.clip, "skullbase", a + 0.25f * (b - a));
+  const vec3 second = angles_at(r.clip, "skullbase", a + 0.75f * (b - a));
+  EXPECT_GT(first.x, deg(3.0f));            // tilted forwards
+  EXPECT_NEAR(first.y, 0.0f, deg(0.5f));    // not yet turned
+  EXPECT_NEAR(second.x, 0.0f, deg(0.5f));   // no longer tilted
+  EXPECT_GT(second.y, deg(5.0f));           // turned to the signer's left
+}

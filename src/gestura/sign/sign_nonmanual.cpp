@@ -135,7 +135,15 @@ const MouthGesture* find_mouth_gesture(std::string_view code) {
 
 class TierPlanner {
  public:
-  TierPlanner(SignNonManualActions& out, float start, float end) : out_(out), start_(start), end_(end) {}
+  TierPlanner(SignNonManualActions& out, float start, float end) : out_(out), sign_start_(start), sign_end_(end) {}
+
+  // The part of the sign the next value spans (NonManual::from, to).
+  void select(const sign::NonManual& nm) {
+    const float from = std::clamp(std::isfinite(nm.from) ? nm.from : 0.0f, 0.0f, 1.0f);
+    const float to = std::clamp(std::isfinite(nm.to) ? nm.to : 1.0f, from, 1.0f);
+    start_ = sign_start_ + from * (sign_end_ - sign_start_);
+    end_ = sign_start_ + to * (sign_end_ - sign_start_);
+  }
 
   // Performs one value; false when it is not one this tier knows.
   bool perform(const sign::NonManual& nm) {
@@ -167,7 +175,8 @@ class TierPlanner {
 
  private:
   SignNonManualActions& out_;
-  float start_, end_;
+  float sign_start_, sign_end_;
+  float start_ = 0.0f, end_ = 0.0f;  // of the value being performed
   std::optional<Gaze> gaze_;  // the fixed eye direction, when the sign has one
 
   float span() const { return end_ - start_; }
@@ -262,6 +271,7 @@ class TierPlanner {
       return true;
     }
     if (v == "RO") {  // rolling: up, and across from one side to the other once
+      if (span() <= 0.0f) return true;
       joint(kLeftEye, {-15, 0, 0}), joint(kRightEye, {-15, 0, 0});
       joint(kLeftEye, {0, 20, 0}, 1.0f / span()), joint(kRightEye, {0, 20, 0}, 1.0f / span());
       return true;
@@ -400,6 +410,7 @@ SignNonManualActions plan_sign_nonmanuals(std::span<const sign::NonManual> tiers
   for (const sign::NonManual& nm : tiers) {
     if (nm.value.empty()) continue;  // an empty tag (tools write tag="") asks for nothing
     ++out.values;
+    planner.select(nm);
     if (nm.tier == sign::NonManualTier::head && nm.value == "LI") {
       linked.push_back(&nm);
       continue;
@@ -419,6 +430,7 @@ SignNonManualActions plan_sign_nonmanuals(std::span<const sign::NonManual> tiers
     }
   }
   for (const sign::NonManual* nm : linked) {
+    planner.select(*nm);
     if (planner.head_with_gaze()) ++out.mapped;
     else out.warnings.push_back({nm->line, "head 'LI' (head turned with the eyes) needs an eye gaze direction "
                                            "(UP, DN, LE, ...) in the sign; not performed"});

@@ -7,7 +7,8 @@
 //
 // Timing: SiGML's <hamnosys_nonmanual> gives no timing of its own, and JASigning performs several
 // elements of one tier together, so every tier value spans the sign's articulation [start, end]
-// (first posture reached → end of the final hold). Mouth pictures and spoken mouth gestures start
+// (first posture reached → end of the final hold). The gestural form's tiers are sequences: a
+// value spans its share of the sign (NonManual::from, to). Mouth pictures and spoken mouth gestures start
 // with the sign and share its span as mouthing does, but never run slower than about 6–7 phonemes
 // a second: in a long sign the word is said at the start and the mouth rests afterwards.
 //
