@@ -84,3 +84,23 @@ TEST(FaceJointOffsets, ReportMissingJointsAndRejectBadOffsets) {
   const JointOffset ok = make_offset("vt6", vec3(0.1f), 0.0f, 1.0f);
   EXPECT_THROW(add_joint_offsets({&ok, 1}, skeleton(), other), Error);
 }
+
+TEST(FaceJointOffsets, ChildrenCanKeepTheirOrientation) {
+  Clip clip = held_clavicle();
+  const int clavicle = skeleton().find("l_sternoclavicular"), shoulder = skeleton().find("l_shoulder");
+  // The upper arm bent 30° forward, keyed as the IK would.
+  const quat arm = joint_rotation(skeleton(), shoulder, vec3(deg(30.0f), 0, 0));
+  clip.rotations[static_cast<std::size_t>(shoulder)].add(0.0f, arm);
+  clip.rotations[static_cast<std::size_t>(shoulder)].add(3.0f, arm);
+  auto upper_arm_in_trunk = [&](const Clip& c, float t) {
+    return sample_track(c.rotations[static_cast<std::size_t>(clavicle)], t) *
+           sample_track(c.rotations[static_cast<std::size_t>(shoulder)], t);
+  };
+  const quat before = upper_arm_in_trunk(clip, 1.5f);
+  JointOffset raise = make_offset("l_sternoclavicular", vec3(0, 0, deg(12.0f)), 1.0f, 2.0f);
+  raise.children_keep_orientation = true;
+  add_joint_offsets({&raise, 1}, skeleton(), clip);
+  EXPECT_NEAR(angles_at(clip, "l_sternoclavicular", 1.5f).z, deg(17.0f), deg(0.1f));  // the clavicle rose
+  EXPECT_GT(std::abs(glm::dot(before, upper_arm_in_trunk(clip, 1.5f))), 0.99999f);     // the arm did not turn
+  EXPECT_GT(std::abs(glm::dot(arm, sample_track(clip.rotations[static_cast<std::size_t>(shoulder)], 0.5f))), 0.99999f);
+}

@@ -184,6 +184,10 @@ TEST(SignNonManual, RaisedShouldersLiftTheClaviclesWithinTheirLimits) {
   const auto a = model_at(plain.clip, mid), b = model_at(raised.clip, mid);
   EXPECT_GT(position(b, "l_shoulder").y - position(a, "l_shoulder").y, 0.015f);
   EXPECT_GT(position(b, "r_shoulder").y - position(a, "r_shoulder").y, 0.015f);
+  // The arms rise with the shoulders rather than swinging outwards about the clavicles.
+  const vec3 wrist_moved = position(b, "r_wrist") - position(a, "r_wrist");
+  EXPECT_LT(std::abs(wrist_moved.x), 0.01f);
+  EXPECT_LT(std::abs(wrist_moved.z), 0.01f);
   // Back down once the sign is over.
   const auto c = model_at(plain.clip, plain.clip.duration), d = model_at(raised.clip, raised.clip.duration);
   EXPECT_NEAR(position(d, "l_shoulder").y, position(c, "l_shoulder").y, 1e-3f);

@@ -33,6 +33,31 @@ vec3 one_offset(const JointOffset& o, float t) {
   return o.angles * w;
 }
 
+// Rewrites the tracks of `joint`'s children so that child model orientation is what it was before
+// the joint's track went from `before` to `after`: child' = after⁻¹ · before · child.
+void keep_children_orientation(const Skeleton& skeleton, int joint, const QuatTrack& before, const QuatTrack& after,
+                               std::span<const float> joint_times, Clip& clip) {
+  const quat rest = skeleton.rest_rotations[static_cast<std::size_t>(joint)];
+  std::vector<float> times;
+  for (std::size_t c = 0; c < skeleton.size(); ++c) {
+    if (skeleton.parents[c] != joint) continue;
+    const QuatTrack old = clip.rotations[c];
+    times.assign(joint_times.begin(), joint_times.end());
+    times.insert(times.end(), old.times.begin(), old.times.end());
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end(), [](float x, float y) { return y - x < 1e-4f; }), times.end());
+    QuatTrack track;
+    track.interpolation = Interpolation::Slerp;
+    for (float t : times) {
+      const quat was = before.empty() ? rest : sample_track(before, t);
+      const quat child = old.empty() ? skeleton.rest_rotations[c] : sample_track(old, t);
+      track.add(t, glm::normalize(glm::inverse(sample_track(after, t)) * was * child));
+    }
+    make_continuous(track);
+    clip.rotations[c] = std::move(track);
+  }
+}
+
 }  // namespace
 
 JointOffset make_offset(std::string_view joint, vec3 angles, float start, float end, float frequency) {
@@ -98,6 +123,10 @@ std::vector<std::string_view> add_joint_offsets(std::span<const JointOffset> off
       track.add(t, joint_rotation(skeleton, j, angles));
     }
     make_continuous(track);
+    const bool compensate = std::any_of(offsets.begin(), offsets.end(), [&](const JointOffset& o) {
+      return o.joint == name && o.children_keep_orientation;
+    });
+    if (compensate) keep_children_orientation(skeleton, j, old, track, times, clip);
     clip.rotations[ju] = std::move(track);
     if (!times.empty()) clip.duration = std::max(clip.duration, times.back());
   }

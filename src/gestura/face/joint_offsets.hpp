@@ -23,6 +23,9 @@ struct JointOffset {
   float start = 0.0f, end = 0.0f;   // seconds
   float ramp_in = 0.0f, ramp_out = 0.0f;  // seconds; ramp_in + ramp_out <= end - start
   float frequency = 0.0f;           // Hz; > 0: angles · sin(2πf(t − start)) under the ramps
+  // The joint's children keep their orientation in the parent's space (the offset is undone in
+  // their local rotations), so a raised clavicle lifts the arm without swinging it outwards.
+  bool children_keep_orientation = false;
 };
 
 // An offset with default_ramp (face_action.hpp) on both sides.

@@ -205,10 +205,13 @@ class TierPlanner {
     out_.joints.push_back(fc::JointOffset{name, glm::radians(degrees), start_, end_, 0.5f * span(), 0.5f * span()});
   }
   void clavicles(bool left, bool right, float raise, float forward, bool bump = false) {
-    // Left clavicle: + z raises it, − y brings the shoulder forward; the right one mirrors.
+    // Left clavicle: + z raises it, − y brings the shoulder forward; the right one mirrors. The
+    // arm keeps its direction (it rises with the shoulder instead of swinging out with the clavicle).
     const vec3 l(0.0f, -forward, raise), r(0.0f, forward, -raise);
     if (left) bump ? joint_bump(kLeftClavicle, l) : joint(kLeftClavicle, l);
+    if (left) out_.joints.back().children_keep_orientation = true;
     if (right) bump ? joint_bump(kRightClavicle, r) : joint(kRightClavicle, r);
+    if (right) out_.joints.back().children_keep_orientation = true;
   }
   // Spread a bend of the trunk over the lumbar and thoracic joints (x forward, y to the left, z to the right).
   void spine(vec3 degrees, bool bump = false, float frequency = 0.0f) {
