@@ -283,3 +283,17 @@ TEST(SignNonManual, GesturalTierSequencesShareTheSign) {
   EXPECT_NEAR(second.x, 0.0f, deg(0.5f));   // no longer tilted
   EXPECT_GT(second.y, deg(5.0f));           // turned to the signer's left
 }
+
+TEST(SignNonManual, PenetrationIsMeasuredAfterTheBodyMoved) {
+  // A fist touching the chin; pushing the head forwards pushes the chin into the hand.
+  auto chin = [](const std::string& nonmanual) {
+    const std::string xml = "<sigml><hns_sign gloss=\"c\"><hamnosys_nonmanual>" + nonmanual +
+                            "</hamnosys_nonmanual><hamnosys_manual><hamfist/><hamextfingeru/><hampalml/><hamchin/>"
+                            "<hamtouch/></hamnosys_manual></hns_sign></sigml>";
+    const sign::SigmlSign s = sign::read_sigml(xml).at(0);
+    return synthesize_sign(s.manual, s.nonmanual, fx().rig);
+  };
+  const SignSynthesis plain = chin(""), pushed = chin("<hnm_head tag=\"PF\"/>");
+  EXPECT_GT(pushed.stats.max_penetration, plain.stats.max_penetration + 0.002f)
+      << plain.stats.max_penetration << " vs " << pushed.stats.max_penetration;
+}

@@ -18,7 +18,8 @@ struct SignSynthesis {
 SignSynthesis synthesize_sign(const sign::HamSign& sign, const SigningRig& rig, const PlanOptions& plan_options = {},
                               const PerformOptions& perform_options = {});
 // The same with the sign's non-manual tiers (SiGML) performed over [plan.sign_start, plan.sign_end]
-// (sign_nonmanual.hpp); values it cannot perform end up in `warnings`, never as an error.
+// (sign_nonmanual.hpp); values it cannot perform end up in `warnings`, never as an error. The
+// hands' penetration (stats) is measured again on the final clip, as the body may have moved.
 SignSynthesis synthesize_sign(const sign::HamSign& sign, std::span<const sign::NonManual> nonmanual,
                               const SigningRig& rig, const PlanOptions& plan_options = {},
                               const PerformOptions& perform_options = {});
