@@ -170,6 +170,14 @@ TEST(SignNonManual, UnknownValuesAreWarnedWithTheirLineAndSkipped) {
   EXPECT_GE(peak_time(r.clip, face::kPP), 0.0f);
 }
 
+TEST(SignNonManual, KnownValuesTheAvatarCannotShowSaySo) {
+  const SignSynthesis r = perform("<hnm_mouthgesture tag=\"C09\"/>\n<hnm_nose tag=\"WI\"/>\n");
+  ASSERT_EQ(r.warnings.size(), 2u);
+  EXPECT_NE(r.warnings[0].message.find("tongue shape"), std::string::npos) << r.warnings[0].message;
+  EXPECT_NE(r.warnings[1].message.find("nostril shape"), std::string::npos) << r.warnings[1].message;
+  EXPECT_EQ(r.warnings[1].line, 5);
+}
+
 TEST(SignNonManual, EmptyTagsAskForNothing) {
   const SignSynthesis r = perform("<hnm_head tag=\"\"/>\n<hnm_mouthpicture picture=\"\"/>\n");
   EXPECT_TRUE(r.warnings.empty());

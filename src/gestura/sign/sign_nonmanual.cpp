@@ -382,7 +382,7 @@ std::string known_values(sign::NonManualTier tier) {
     case T::eye_gaze: return "AD FR NO UP DN LE RI LU LD RU RD HD HI HC RO";
     case T::eyebrows: return "RB RL RR FU";
     case T::eyelids: return "WB WL WR SB SL SR CB CL CR TB TL TR BB";
-    case T::nose: return "WR";
+    case T::nose: return "WR TW WI";
     case T::cheeks: return "C01–C13";
     case T::mouth_gesture: return "D01–D09 J01–J04 L01–L35 C01–C13 T01–T17";
     case T::mouth_picture: return "SAMPA";
@@ -418,14 +418,15 @@ SignNonManualActions plan_sign_nonmanuals(std::span<const sign::NonManual> tiers
       linked.push_back(&nm);
       continue;
     }
-    const bool unshaped = (nm.tier == sign::NonManualTier::mouth_gesture || nm.tier == sign::NonManualTier::cheeks) &&
-                          std::find(kUnshapedMouthGestures.begin(), kUnshapedMouthGestures.end(), nm.value) !=
-                              kUnshapedMouthGestures.end();
+    const bool mouth = nm.tier == sign::NonManualTier::mouth_gesture || nm.tier == sign::NonManualTier::cheeks;
+    const bool unshaped = mouth ? std::find(kUnshapedMouthGestures.begin(), kUnshapedMouthGestures.end(), nm.value) !=
+                                      kUnshapedMouthGestures.end()
+                                : nm.tier == sign::NonManualTier::nose && (nm.value == "TW" || nm.value == "WI");
     if (planner.perform(nm)) {
       ++out.mapped;
     } else if (unshaped) {
-      out.warnings.push_back({nm.line, std::string(sign::nonmanual_tier_name(nm.tier)) + " '" + nm.value +
-                                           "' needs a tongue shape the avatar does not have; not performed"});
+      out.warnings.push_back({nm.line, std::string(sign::nonmanual_tier_name(nm.tier)) + " '" + nm.value + "' needs a " +
+                                           (mouth ? "tongue" : "nostril") + " shape the avatar does not have; not performed"});
     } else {
       out.warnings.push_back({nm.line, "unknown " + std::string(sign::nonmanual_tier_name(nm.tier)) + " value '" +
                                            nm.value.substr(0, 40) + "' (known: " + known_values(nm.tier) +

@@ -22,7 +22,8 @@
 //              HC at the non-dominant hand, RO rolling
 //   eyebrows   RB raised, RL RR one raised, FU furrowed
 //   eyelids    WB WL WR wide, SB SL SR narrowed, CB CL CR closed, TB TL TR shut tight, BB a blink at the end
-//   nose       WR wrinkled (no nose morph: brows drawn down and eyes narrowed, as the wrinkle pulls them)
+//   nose       WR wrinkled (no nose morph: brows drawn down and eyes narrowed, as the wrinkle pulls
+//              them); TW twitching and WI widened nostrils need nostril shapes: warned, not performed
 //   cheeks     the cheek mouth gestures C01–C13
 //   mouth gesture  HamNoSys mouth gesture codes D01–D09 (teeth), J01–J04 (jaw), L01–L35 (lips),
 //              C01–C13 (cheeks), T01–T17 (tongue): sounds ("prrr", "bam") as SAMPA through the
