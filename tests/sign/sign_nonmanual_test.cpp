@@ -305,3 +305,24 @@ TEST(SignNonManual, PenetrationIsMeasuredAfterTheBodyMoved) {
   EXPECT_GT(pushed.stats.max_penetration, plain.stats.max_penetration + 0.002f)
       << plain.stats.max_penetration << " vs " << pushed.stats.max_penetration;
 }
+
+TEST(SignNonManual, GazeAtTheHandsLooksBetweenThemWhenBothAreUp) {
+  auto two_handed = [](const std::string& gaze) {
+    const std::string xml = "<sigml><hns_sign gloss=\"t\"><hamnosys_nonmanual><hnm_eyegaze tag=\"" + gaze +
+                            "\"/></hamnosys_nonmanual><hamnosys_manual><hamsymmlr/><hamflathand/><hamextfingeru/>"
+                            "<hampalml/><hamchest/><hammoveo/></hamnosys_manual></hns_sign></sigml>";
+    const sign::SigmlSign s = sign::read_sigml(xml).at(0);
+    return synthesize_sign(s.manual, s.nonmanual, fx().rig);
+  };
+  const SignSynthesis hands = two_handed("HD"), dominant = two_handed("HI"), other = two_handed("HC");
+  const float mid = 0.5f * (hands.plan.sign_start + hands.plan.sign_end);
+  // Yaw of the two eyes together (+ to the avatar's left; each eye also converges on the near
+  // target). The dominant (right) hand is on the avatar's right.
+  auto yaw = [&](const Clip& clip) {
+    return 0.5f * (angles_at(clip, "l_eyeball_joint", mid).y + angles_at(clip, "r_eyeball_joint", mid).y);
+  };
+  const float between = yaw(hands.clip);
+  EXPECT_LT(yaw(dominant.clip), between - deg(3.0f));
+  EXPECT_GT(yaw(other.clip), between + deg(3.0f));
+  EXPECT_NEAR(between, 0.0f, deg(3.0f));
+}

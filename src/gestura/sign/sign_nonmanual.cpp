@@ -270,7 +270,7 @@ class TierPlanner {
 
   bool eye_gaze(std::string_view v) {
     if (v == "HD" || v == "HI" || v == "HC") {
-      out_.gaze.push_back(HandGaze{v == "HC" ? Hand::Left : Hand::Right, start_, end_});
+      out_.gaze.push_back(HandGaze{v == "HC" ? Hand::Left : Hand::Right, start_, end_, v == "HD"});
       return true;
     }
     if (v == "RO") {  // rolling: up, and across from one side to the other once
@@ -391,6 +391,14 @@ std::string known_values(sign::NonManualTier tier) {
   return "";
 }
 
+// A hand this far (metres) from its bind-pose place is taking part in the sign.
+constexpr float kHandUpFromRest = 0.1f;
+
+vec3 palm_centre(const SigningRig& rig, Hand hand, std::span<const mat4> model) {
+  const HandRig& h = rig.hand(hand);
+  return vec3(model[static_cast<std::size_t>(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
+}
+
 // Shortest rotation taking unit vector a onto unit vector b.
 quat rotation_between(const vec3& a, const vec3& b) {
   const float c = std::clamp(glm::dot(a, b), -1.0f, 1.0f);
@@ -488,9 +496,14 @@ bool write_hand_gaze(std::span<const HandGaze> gaze, const SigningRig& rig, floa
       for (std::size_t g = 0; g < gaze.size(); ++g) {
         const float w = fc::action_weight(envelopes[g], t);
         if (w <= 0.0f) continue;
-        const HandRig& h = rig.hand(gaze[g].hand);
-        const vec3 palm(model[static_cast<std::size_t>(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
-        direction += w * glm::normalize(palm - centre);
+        vec3 target = palm_centre(rig, gaze[g].hand, model);
+        if (gaze[g].both_hands) {
+          const Hand other = gaze[g].hand == Hand::Right ? Hand::Left : Hand::Right;
+          const vec3 other_palm = palm_centre(rig, other, model);
+          if (glm::distance(other_palm, palm_centre(rig, other, rig.bind_model)) > kHandUpFromRest)
+            target = 0.5f * (target + other_palm);
+        }
+        direction += w * glm::normalize(target - centre);
         weight += w;
       }
       const quat parent = glm::normalize(glm::quat_cast(mat3(model[static_cast<std::size_t>(s.parents[eye])])));

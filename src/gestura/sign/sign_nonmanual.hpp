@@ -18,8 +18,8 @@
 //              ST straight, RD rounded (lumbar and thoracic spine)
 //   head       NO nod, SH shake, SL SR turned, TL TR tilted, NF NB tilted forwards/back, PF PB pushed
 //              forwards/back, LI turned with the eye gaze
-//   eye gaze   AD FR NO ahead, UP DN LE RI LU LD RU RD (and UL UR DL DR), HD HI at the dominant hand,
-//              HC at the non-dominant hand, RO rolling
+//   eye gaze   AD FR NO ahead, UP DN LE RI LU LD RU RD (and UL UR DL DR), HD at the hands (between
+//              them when both are up), HI at the dominant hand, HC at the non-dominant hand, RO rolling
 //   eyebrows   RB raised, RL RR one raised, FU furrowed
 //   eyelids    WB WL WR wide, SB SL SR narrowed, CB CL CR closed, TB TL TR shut tight, BB a blink at the end
 //   nose       WR wrinkled (no nose morph: brows drawn down and eyes narrowed, as the wrinkle pulls
@@ -48,10 +48,12 @@ struct NonManualWarning {
   std::string message;
 };
 
-// The eyes following one hand over [start, end] at full weight between §5.2.5 ramps.
+// The eyes following one hand over [start, end] at full weight between §5.2.5 ramps; with
+// `both_hands`, the point between the palms whenever the other hand is up from rest too.
 struct HandGaze {
   Hand hand = Hand::Right;
   float start = 0.0f, end = 0.0f;
+  bool both_hands = false;
 };
 
 struct SignNonManualActions {
