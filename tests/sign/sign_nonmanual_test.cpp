@@ -105,6 +105,15 @@ TEST(SignNonManual, HeadShakeTurnsNeckAndSkullbaseToAndFro) {
   }
 }
 
+TEST(SignNonManual, ARepeatedValueIsOneMovement) {
+  // Generators write <hnm_head tag="SH"/> several times to insist on it; the shake stays 10°.
+  const SignSynthesis once = perform("<hnm_head tag=\"SH\"/>\n");
+  const SignSynthesis thrice = perform("<hnm_head tag=\"SH\"/>\n<hnm_head tag=\"SH\"/>\n<hnm_head tag=\"SH\"/>\n");
+  EXPECT_TRUE(thrice.warnings.empty());
+  for (float t = once.plan.sign_start; t <= once.plan.sign_end; t += 0.05f)
+    EXPECT_NEAR(angles_at(thrice.clip, "skullbase", t).y, angles_at(once.clip, "skullbase", t).y, 1e-4f) << t;
+}
+
 TEST(SignNonManual, RaisedBrowsHoldOverTheSignAndAreGoneAtBothEnds) {
   const SignSynthesis r = perform("<hnm_eyebrows tag=\"RB\"/>\n");
   EXPECT_TRUE(r.warnings.empty());

@@ -418,9 +418,19 @@ SignNonManualActions plan_sign_nonmanuals(std::span<const sign::NonManual> tiers
   if (end <= start) return out;
   TierPlanner planner(out, start, end);
   std::vector<const sign::NonManual*> linked;  // LI waits for the gaze
-  for (const sign::NonManual& nm : tiers) {
+  for (std::size_t i = 0; i < tiers.size(); ++i) {
+    const sign::NonManual& nm = tiers[i];
     if (nm.value.empty()) continue;  // an empty tag (tools write tag="") asks for nothing
     ++out.values;
+    // The same value again over the same time (generators repeat <hnm_head tag="SH"/> to insist):
+    // one movement, not twice its amplitude.
+    const auto same = [&](const sign::NonManual& o) {
+      return o.tier == nm.tier && o.value == nm.value && o.from == nm.from && o.to == nm.to;
+    };
+    if (std::any_of(tiers.begin(), tiers.begin() + static_cast<std::ptrdiff_t>(i), same)) {
+      ++out.mapped;
+      continue;
+    }
     planner.select(nm);
     if (nm.tier == sign::NonManualTier::head && nm.value == "LI") {
       linked.push_back(&nm);
