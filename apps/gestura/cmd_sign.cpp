@@ -30,13 +30,16 @@ int run_sign(const std::vector<std::string>& args) {
     } else throw Error("unknown argument '" + a + "' (see gestura sign --help)");
   }
   const sign::HamSign parsed = cli::load_sign(source);
+  const std::vector<sign::NonManual> nonmanual = cli::load_nonmanuals(source);
   cli::check_motion_output(out);
 
   const Avatar avatar = load_avatar(avatar_spec);
   const SigningRig rig = make_signing_rig(avatar);
   PlanOptions plan;
   plan.speed = speed;
-  const SignSynthesis result = synthesize_sign(parsed, rig, plan, PerformOptions{static_cast<float>(out.fps)});
+  const SignSynthesis result = synthesize_sign(parsed, nonmanual, rig, plan, PerformOptions{static_cast<float>(out.fps)});
+  for (const NonManualWarning& w : result.warnings)
+    std::fprintf(stderr, "warning: %s:%d: %s\n", source.sigml_path.c_str(), w.line, w.message.c_str());
   if (const auto problem = synthesis_problem(result, rig)) std::fprintf(stderr, "warning: %s\n", problem->c_str());
 
   cli::write_motion(out, avatar.skeleton, result.clip, &avatar.mesh, 0.5f * (result.plan.sign_start + result.plan.sign_end));
@@ -52,8 +55,10 @@ const cli::Registration reg{{
     "                    [--avatar SPEC] [--speed S] [--fps N] [--camera LIST] [--size WxH] [--sheet]\n\n"
     "TEXT is HamNoSys 4 in Unicode; SYMBOLS a comma-separated list of HamNoSys symbol names\n"
     "(hamflathand,hamextfingeru,...). --speed scales the tempo (0.25–4). The dominant hand is the\n"
-    "right hand. --avatar is default (the generated avatar) or makehuman:DIR (MakeHuman base mesh and\n"
-    "default rig). A single .png shows the middle of the sign.\n" +
+    "right hand. A SiGML sign's non-manual tiers (head, shoulders, body, eye gaze, brows, eyelids,\n"
+    "nose, cheeks, mouth gestures and pictures) are performed over the sign; values that cannot be\n"
+    "are named with their line on stderr. --avatar is default (the generated avatar) or\n"
+    "makehuman:DIR (MakeHuman base mesh and default rig). A single .png shows the middle of the sign.\n" +
         std::string(cli::kMotionOutputUsage),
     run_sign,
 }};

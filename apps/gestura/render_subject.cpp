@@ -92,7 +92,11 @@ RenderSubject load_render_subject(Motion motion, const std::string& clip_path, c
   std::optional<MotionFile> file;
   if (motion == Motion::ClipFile) file = read_motion(clip_path);
   std::optional<sign::HamSign> notation;
-  if (motion == Motion::Sign && sign_source.text.empty()) notation = load_sign(sign_source);
+  std::vector<sign::NonManual> nonmanual;
+  if (motion == Motion::Sign && sign_source.text.empty()) {
+    notation = load_sign(sign_source);
+    nonmanual = load_nonmanuals(sign_source);
+  }
   Avatar avatar = load_avatar(avatar_spec, params);
   std::optional<Clip> performed;
   if (motion == Motion::Sign && !sign_source.text.empty()) {
@@ -104,7 +108,9 @@ RenderSubject load_render_subject(Motion motion, const std::string& clip_path, c
   }
   if (notation) {
     const SigningRig rig = make_signing_rig(avatar);
-    SignSynthesis result = synthesize_sign(*notation, rig);
+    SignSynthesis result = synthesize_sign(*notation, nonmanual, rig);
+    for (const NonManualWarning& w : result.warnings)
+      std::fprintf(stderr, "warning: %s:%d: %s\n", sign_source.sigml_path.c_str(), w.line, w.message.c_str());
     if (const auto problem = synthesis_problem(result, rig)) std::fprintf(stderr, "warning: %s\n", problem->c_str());
     performed = std::move(result.clip);
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gestura/sign/hamnosys_model.hpp"
+#include "gestura/sign/sigml.hpp"
 
 namespace gestura::cli {
 
@@ -23,5 +24,9 @@ bool parse_sign_source_flag(const std::vector<std::string>& args, std::size_t& i
 // The sign's manual part. Throws gestura::Error unless exactly one source is given, for parse errors
 // (symbol index or file:line:col from the parsers) and when the SiGML file has no (such) sign.
 sign::HamSign load_sign(const SignSource& source);
+
+// The non-manual tiers of the sign load_sign picks: those of the SiGML sign, none for HamNoSys
+// (its Unicode form has no non-manual tiers). Throws as load_sign does.
+std::vector<sign::NonManual> load_nonmanuals(const SignSource& source);
 
 }  // namespace gestura::cli

@@ -75,7 +75,7 @@ TEST(SignCheck, SynthesisHookCountsWhenConnected) {
   EXPECT_FALSE(r.synthesis_connected);
   EXPECT_EQ(r.synthesized, 0);
   // A stand-in synthesizer that handles only one-handed signs.
-  set_synthesis_hook([](const HamSign& s) -> std::optional<std::string> {
+  set_synthesis_hook([](const HamSign& s, std::span<const NonManual>) -> std::optional<std::string> {
     if (s.main().symmetry.kind != SymmetryKind::none) return "two-handed signs not supported";
     return std::nullopt;
   });

@@ -89,6 +89,43 @@ TEST(Sigml, AllNonManualTiersTyped) {
   EXPECT_EQ(signs[0].nonmanual[9].value, "haUs");
 }
 
+TEST(Sigml, GesturalNonManualTiersAreSequencesWithParallelGroups) {
+  const std::string xml = R"(<sigml><hamgestural_sign gloss="g">
+<sign_nonmanual>
+  <head_tier><head_movement movement="NO"/><head_movement movement="SH"/></head_tier>
+  <facialexpr_tier><facial_expr_par><eye_brows movement="RB"/><eye_lids movement="WB"/></facial_expr_par></facialexpr_tier>
+  <eyegaze_tier><eye_gaze direction="HI"/></eyegaze_tier>
+  <mouthing_tier><neutral/><mouth_picture picture="haUs"/></mouthing_tier>
+</sign_nonmanual>
+<sign_manual><handconfig handshape="fist"/><handconfig extfidir="o" palmor="d"/></sign_manual>
+</hamgestural_sign></sigml>)";
+  const std::vector<SigmlSign> signs = read_sigml(xml);
+  const std::vector<NonManual>& nm = signs.at(0).nonmanual;
+  ASSERT_EQ(nm.size(), 6u);
+  EXPECT_EQ(nm[0].tier, NonManualTier::head);
+  EXPECT_EQ(nm[0].value, "NO");
+  EXPECT_EQ(nm[0].line, 3);
+  EXPECT_FLOAT_EQ(nm[0].to, 0.5f);  // the first of two in its tier
+  EXPECT_FLOAT_EQ(nm[1].from, 0.5f);
+  EXPECT_FLOAT_EQ(nm[1].to, 1.0f);
+  EXPECT_EQ(nm[2].tier, NonManualTier::eyebrows);  // a parallel group: both over the whole sign
+  EXPECT_EQ(nm[3].tier, NonManualTier::eyelids);
+  EXPECT_FLOAT_EQ(nm[3].from, 0.0f);
+  EXPECT_FLOAT_EQ(nm[3].to, 1.0f);
+  EXPECT_EQ(nm[4].tier, NonManualTier::eye_gaze);
+  EXPECT_EQ(nm[4].value, "HI");
+  EXPECT_EQ(nm[5].tier, NonManualTier::mouth_picture);  // after a neutral first half
+  EXPECT_FLOAT_EQ(nm[5].from, 0.5f);
+  // Unknown elements are errors that name their line.
+  const std::string bad = R"(<sigml><hamgestural_sign gloss="g">
+<sign_nonmanual><head_tier>
+<wiggle movement="NO"/></head_tier></sign_nonmanual>
+<sign_manual><handconfig handshape="fist"/></sign_manual></hamgestural_sign></sigml>)";
+  const std::vector<SigmlEntry> entries = read_sigml_entries(bad, "bad.sigml");
+  ASSERT_TRUE(entries.at(0).error.has_value());
+  EXPECT_EQ(entries[0].error->where().line, 3);
+}
+
 TEST(Sigml, MalformedXmlNamesTheLine) {
   const std::string good = isl("absorb.sigml");
   // Truncated mid-document: the parser reports where it stopped.

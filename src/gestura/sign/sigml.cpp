@@ -158,7 +158,10 @@ class GesturalReader {
     for (const pugi::xml_node& part : node.children()) {
       if (part.type() != pugi::node_element) continue;
       const std::string_view name = part.name();
-      if (name == "sign_nonmanual") continue;  // gestural non-manual tiers are not modelled yet
+      if (name == "sign_nonmanual") {
+        read_nonmanual(part);
+        continue;
+      }
       if (name != "sign_manual") fail(part, "unexpected <" + std::string(name) + "> in <hamgestural_sign>");
       have_manual = true;
       if (part.attribute("both_hands").as_bool())
@@ -181,6 +184,48 @@ class GesturalReader {
 
   [[noreturn]] void fail(const pugi::xml_node& n, const std::string& message) const {
     fail_at(ctx_.file, ctx_.line_of(n), 0, "sign '" + sign_.gloss + "': " + message);
+  }
+
+  // <sign_nonmanual>: tiers (head_tier, facialexpr_tier, mouthing_tier, ...) of basic elements in
+  // sequence, or *_par groups of them performed together.
+  void read_nonmanual(const pugi::xml_node& node) {
+    for (const pugi::xml_node& tier : node.children()) {
+      if (tier.type() != pugi::node_element) continue;
+      const std::string_view tier_name = tier.name();
+      if (!tier_name.ends_with("_tier")) fail(tier, "unexpected <" + std::string(tier_name) + "> in <sign_nonmanual>: expected a *_tier element");
+      std::vector<pugi::xml_node> steps;
+      for (const pugi::xml_node& step : tier.children())
+        if (step.type() == pugi::node_element) steps.push_back(step);
+      for (std::size_t k = 0; k < steps.size(); ++k) {
+        const float from = static_cast<float>(k) / static_cast<float>(steps.size());
+        const float to = static_cast<float>(k + 1) / static_cast<float>(steps.size());
+        if (std::string_view(steps[k].name()).ends_with("_par")) {
+          for (const pugi::xml_node& e : steps[k].children())
+            if (e.type() == pugi::node_element) read_nonmanual_element(e, from, to);
+        } else {
+          read_nonmanual_element(steps[k], from, to);
+        }
+      }
+    }
+  }
+
+  void read_nonmanual_element(const pugi::xml_node& e, float from, float to) {
+    using T = NonManualTier;
+    constexpr std::pair<std::string_view, NonManualTier> table[] = {
+        {"shoulder_movement", T::shoulder}, {"body_movement", T::body},     {"head_movement", T::head},
+        {"eye_gaze", T::eye_gaze},          {"eye_brows", T::eyebrows},     {"eye_lids", T::eyelids},
+        {"nose", T::nose},                  {"mouth_gesture", T::mouth_gesture}, {"mouth_picture", T::mouth_picture},
+        {"extra_movement", T::extra}};
+    const std::string_view name = e.name();
+    if (name == "neutral") return;  // the face at rest: nothing to perform
+    for (const auto& [element, tier] : table) {
+      if (element != name) continue;
+      const char* attribute = tier == T::mouth_picture ? "picture" : e.attribute("movement") ? "movement" : "direction";
+      if (!e.attribute(attribute)) fail(e, "<" + std::string(name) + "> needs a " + attribute + " attribute");
+      sign_.nonmanual.push_back({tier, e.attribute(attribute).value(), ctx_.line_of(e), from, to});
+      return;
+    }
+    fail(e, "unknown non-manual element <" + std::string(name) + ">: expected head_movement, eye_brows, mouth_picture, ...");
   }
 
   Direction direction(const pugi::xml_node& n, const char* attribute) const {

@@ -14,7 +14,8 @@
 
 namespace gestura::sign {
 
-// Non-manual tiers of <hamnosys_nonmanual>, one per hnm_* element.
+// Non-manual tiers of <hamnosys_nonmanual>, one per hnm_* element (and of the gestural form's
+// <sign_nonmanual>: head_movement, eye_brows, mouth_picture, ... in *_tier elements).
 enum class NonManualTier : std::uint8_t {
   shoulder,       // hnm_shoulder tag, e.g. "UB" (both shoulders raised)
   body,           // hnm_body
@@ -37,6 +38,10 @@ struct NonManual {
   // Codes stay strings: the tier is typed, the value sets differ between SiGML producers.
   std::string value;
   int line = 0;
+  // The part of the sign it spans, as fractions of the sign's duration. <hamnosys_nonmanual> has
+  // no timing (0..1 for every element); in the gestural form's <sign_nonmanual> each tier is a
+  // sequence: its elements follow one another in equal shares, a *_par group taking one share.
+  float from = 0.0f, to = 1.0f;
 };
 
 struct SigmlSign {

@@ -15,11 +15,12 @@ SynthesisHook& hook_slot() {
 }
 
 // Counts a parsed sign and runs synthesis when connected.
-void after_parse(CheckReport& report, const HamSign& sign, const std::string& place, const CheckOptions& options) {
+void after_parse(CheckReport& report, const HamSign& sign, std::span<const NonManual> nonmanual,
+                 const std::string& place, const CheckOptions& options) {
   ++report.parsed;
   if (options.describe_parsed) report.descriptions.push_back(place + ": " + describe(sign));
   if (!report.synthesis_connected) return;
-  if (const auto why = synthesis_hook()(sign)) {
+  if (const auto why = synthesis_hook()(sign, nonmanual)) {
     ++report.failed;
     report.failures.push_back(place + ": synthesis failed: " + *why);
   } else {
@@ -75,7 +76,7 @@ CheckReport check_jsonl(std::string_view text, std::string_view file_name, const
     try {
       const HamSign sign = have_unicode ? parse_hamnosys_unicode(ham->get_ref<const std::string&>(), options.parse)
                                         : parse_hamnosys_names(names->get_ref<const std::string&>(), options.parse);
-      after_parse(report, sign, place, options);
+      after_parse(report, sign, {}, place, options);
     } catch (const Error& e) {
       parse_failed(report, place, e.what());
     }
@@ -89,7 +90,7 @@ CheckReport check_sigml(std::string_view text, std::string_view file_name, const
   for (const SigmlEntry& entry : read_sigml_entries(text, file_name, options.parse)) {
     ++report.signs;
     const std::string place = std::string(file_name) + ":" + std::to_string(entry.line) + ": " + entry.gloss;
-    if (entry.sign) after_parse(report, entry.sign->manual, place, options);
+    if (entry.sign) after_parse(report, entry.sign->manual, entry.sign->nonmanual, place, options);
     else parse_failed(report, place, entry.error->message());
   }
   return report;

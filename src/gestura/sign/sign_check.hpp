@@ -3,19 +3,22 @@
 // every sign and, once synthesis is connected, synthesize it. Backs `gestura check`.
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "gestura/sign/hamnosys_model.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
+#include "gestura/sign/sigml.hpp"
 
 namespace gestura::sign {
 
-// The synthesis step. Returns nullopt when the sign was synthesized, else the reason it was not.
+// The synthesis step: the manual sign and its non-manual tiers (empty outside SiGML). Returns
+// nullopt when the sign was synthesized, else the reason it was not.
 // Nothing is connected yet: while synthesis_hook() is empty, check reports 0 synthesized signs.
 // The synthesis module connects itself with set_synthesis_hook().
-using SynthesisHook = std::function<std::optional<std::string>(const HamSign&)>;
+using SynthesisHook = std::function<std::optional<std::string>(const HamSign&, std::span<const NonManual>)>;
 void set_synthesis_hook(SynthesisHook hook);
 const SynthesisHook& synthesis_hook();
 

@@ -1,5 +1,6 @@
 #include "gestura/sign/sign_synthesis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -13,6 +14,30 @@ SignSynthesis synthesize_sign(const sign::HamSign& sign, const SigningRig& rig, 
   SignSynthesis out;
   out.plan = plan_sign(sign, rig, plan_options);
   out.clip = perform_plan(out.plan, rig, perform_options, &out.stats);
+  return out;
+}
+
+SignSynthesis synthesize_sign(const sign::HamSign& sign, std::span<const sign::NonManual> nonmanual,
+                              const SigningRig& rig, const PlanOptions& plan_options,
+                              const PerformOptions& perform_options) {
+  SignSynthesis out = synthesize_sign(sign, rig, plan_options, perform_options);
+  if (nonmanual.empty()) return out;
+  out.warnings = add_sign_nonmanuals(nonmanual, out.plan.sign_start, out.plan.sign_end, rig, perform_options.fps, out.clip);
+  // A lean, a raised shoulder or a turned head moves the hands or the body after the arm solver
+  // kept them apart: measure again on the final clip.
+  const Skeleton& s = rig.skeleton();
+  Pose pose;
+  std::vector<mat4> model(s.size());
+  std::vector<vec3> points;
+  for (int f = 0; f < out.stats.frames; ++f) {
+    sample_clip(out.clip, static_cast<float>(f) / perform_options.fps, WrapMode::Clamp, rig.rest, pose);
+    local_to_model(s, pose, model);
+    for (const HandRig& h : rig.hands) {
+      hand_surface_points(rig, h.hand, model, points);
+      for (const vec3& p : points)
+        out.stats.max_penetration = std::max(out.stats.max_penetration, -body_signed_distance(rig, model, p));
+    }
+  }
   return out;
 }
 
@@ -32,12 +57,13 @@ std::optional<std::string> synthesis_problem(const SignSynthesis& result, const 
 }
 
 void connect_synthesis_to_check() {
-  sign::set_synthesis_hook([](const sign::HamSign& sign) -> std::optional<std::string> {
+  sign::set_synthesis_hook([](const sign::HamSign& sign,
+                              std::span<const sign::NonManual> nonmanual) -> std::optional<std::string> {
     // One avatar and rig for the whole check run.
     static const Avatar avatar = build_avatar();
     static const SigningRig rig = make_signing_rig(avatar);
     try {
-      const SignSynthesis result = synthesize_sign(sign, rig);
+      const SignSynthesis result = synthesize_sign(sign, nonmanual, rig);
       return synthesis_problem(result, rig);
     } catch (const std::exception& e) {
       return std::string(e.what());
