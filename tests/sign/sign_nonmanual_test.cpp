@@ -11,7 +11,7 @@
 #include "gestura/face/face_channels.hpp"
 #include "gestura/sign/sigml.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
-#include "shared_data.hpp"
+#include "support/shared_data.hpp"
 
 using namespace gestura;
 
