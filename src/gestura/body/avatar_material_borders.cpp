@@ -1,0 +1,50 @@
+#include "gestura/body/avatar_material_borders.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gestura {
+namespace {
+
+// Distance from p to the nearest union primitive of material `a`, minus that to material `b`:
+// negative where `a`'s surface is the nearer, as the per-vertex labelling decides.
+float nearer_material(const ImplicitBody& body, const vec3& p, MaterialId a, MaterialId b) {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  float da = inf, db = inf;
+  for (const Primitive& s : body.primitives) {
+    if (s.op != BlendOp::Union) continue;
+    const auto m = static_cast<MaterialId>(s.material);
+    if (m != a && m != b) continue;
+    const float d = primitive_distance(s, p);
+    (m == a ? da : db) = std::min(m == a ? da : db, d);
+  }
+  return da - db;
+}
+
+}  // namespace
+
+float eyebrow_field(const vec3& p, float k) {
+  const float ax = std::abs(p.x) / k, y = p.y / k;
+  if (p.z / k < 0.04f) return 1.0f;  // the brows are on the front of the head only
+  // Along the brow: u from −1 (inner end, near the nose) to +1 (outer tail).
+  const float u = (ax - 0.0320f) / 0.0195f;
+  // A gentle arch peaking two thirds of the way out, thick at the head and thinning to the tail.
+  const float centre = 1.6300f + 0.0032f * (1.0f - (u - 0.3f) * (u - 0.3f) / 1.69f);
+  const float half_thickness = 0.0058f - 0.0016f * (u + 1.0f);
+  const float t = (y - centre) / half_thickness;
+  return u * u * u * u + t * t - 1.0f;
+}
+
+std::vector<MaterialBorder> avatar_material_borders(const ImplicitBody& body, float k) {
+  const ImplicitBody* b = &body;
+  std::vector<MaterialBorder> borders;
+  borders.push_back({MaterialId::Hair, MaterialId::Skin,
+                     [b](const vec3& p) { return nearer_material(*b, p, MaterialId::Hair, MaterialId::Skin); }});
+  borders.push_back({MaterialId::Cloth, MaterialId::Skin,
+                     [b](const vec3& p) { return nearer_material(*b, p, MaterialId::Cloth, MaterialId::Skin); }});
+  borders.push_back({MaterialId::Brow, MaterialId::Skin, [k](const vec3& p) { return eyebrow_field(p, k); }});
+  return borders;
+}
+
+}  // namespace gestura
