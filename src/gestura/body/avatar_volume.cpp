@@ -147,7 +147,9 @@ void add_arm(VolumeBuilder& b, const AvatarParams& p, const std::string& s, floa
   const float g = p.build;
   const vec3 sh = b.at(s + "shoulder"), el = b.at(s + "elbow"), wr = b.at(s + "wrist");
   const vec3 down = glm::normalize(wr - el);
-  b.capsule(s + "shoulder", sh, el, 0.046f * k * g, 0.036f * k * g, MaterialId::Cloth, 0.03f * k);
+  // A narrow blend: the upper arm joins the trunk at the armpit only, not along the chest wall it
+  // hangs beside (a wide one would web them together and stretch the web when the arm rises).
+  b.capsule(s + "shoulder", sh, el, 0.046f * k * g, 0.036f * k * g, MaterialId::Cloth, 0.012f * k);
   b.capsule(s + "elbow", el, wr - down * (0.012f * k), 0.037f * k * g, proportions::kWristSleeveRadius * k * g, MaterialId::Cloth,
             proportions::kForearmBlend * k);
 

@@ -175,7 +175,43 @@ void two_layer_bending(const NearPrimitives& near, const Adjacency& adj, Mesh& m
   }
 }
 
-void field_diffused(const ImplicitBody& body, const NearPrimitives& near, const Adjacency& adj, Mesh& mesh) {
+// The bones a vertex may follow: those within two steps, in the skeleton tree, of the bone it lies
+// on. A farther bone can be near in space only — the upper arm hanging beside the chest wall — and
+// its share is handed to the bone two steps along the tree path towards it (the clavicle, for the
+// chest), which bends the region between without dragging it along: with the arm raised the chest
+// wall stays put and the armpit folds instead of stretching into a web.
+class TreeReach {
+ public:
+  explicit TreeReach(const Skeleton& skeleton) : parents_(skeleton.parents.begin(), skeleton.parents.end()) {}
+
+  int stand_in(int own, int joint) const {
+    // Steps from `own` up to each ancestor, then from `joint` up to the first shared one.
+    std::vector<int> up_own;
+    for (int a = own; a >= 0; a = parents_[static_cast<std::size_t>(a)]) up_own.push_back(a);
+    std::vector<int> up_joint;
+    int lca_steps = -1;
+    for (int a = joint; a >= 0; a = parents_[static_cast<std::size_t>(a)]) {
+      const auto it = std::find(up_own.begin(), up_own.end(), a);
+      if (it != up_own.end()) {
+        lca_steps = static_cast<int>(it - up_own.begin());
+        break;
+      }
+      up_joint.push_back(a);
+    }
+    if (lca_steps < 0) return own;  // separate trees
+    const int from_own = lca_steps, from_joint = static_cast<int>(up_joint.size());
+    if (from_own + from_joint <= 2) return joint;
+    if (from_own >= 2) return up_own[2];
+    // Two steps from `own`, going down towards `joint` (up_joint lists joint … child of the LCA).
+    return up_joint[static_cast<std::size_t>(from_joint - (2 - from_own))];
+  }
+
+ private:
+  std::vector<std::int16_t> parents_;
+};
+
+void field_diffused(const Skeleton& skeleton, const ImplicitBody& body, const NearPrimitives& near, const Adjacency& adj,
+                    Mesh& mesh) {
   const std::size_t n = mesh.vertex_count();
   // Dense per-vertex weights over the few joints near each vertex, kept sparse as Influences.
   std::vector<Influences> w(n);
@@ -192,6 +228,7 @@ void field_diffused(const ImplicitBody& body, const NearPrimitives& near, const 
     }
     if (w[v].items.empty()) w[v].add(near.label[v], 1.0f);
   }
+
   // Normalise, then diffuse: each round moves every vertex halfway to its neighbours' mean.
   auto normalise = [](Influences& in) {
     float t = 0.0f;
@@ -199,7 +236,8 @@ void field_diffused(const ImplicitBody& body, const NearPrimitives& near, const 
     for (auto& [j, x] : in.items) x /= t;
   };
   for (auto& in : w) normalise(in);
-  for (int round = 0; round < 6; ++round) {
+  auto diffuse = [&](int rounds) {
+  for (int round = 0; round < rounds; ++round) {
     std::vector<Influences> next(n);
     for (std::size_t v = 0; v < n; ++v) {
       const auto nb = adj.of(v);
@@ -216,6 +254,16 @@ void field_diffused(const ImplicitBody& body, const NearPrimitives& near, const 
     }
     w = std::move(next);
   }
+  };
+  diffuse(6);
+  // Only bones near in the skeleton; two more rounds soften the fold this leaves at the armpit.
+  const TreeReach reach(skeleton);
+  for (std::size_t v = 0; v < n; ++v) {
+    Influences kept;
+    for (auto [j, x] : w[v].items) kept.add(reach.stand_in(near.label[v], j), x);
+    w[v] = std::move(kept);
+  }
+  diffuse(2);
   for (std::size_t v = 0; v < n; ++v) store(w[v], near.label[v], mesh.joints[v], mesh.weights[v]);
 }
 
@@ -244,7 +292,7 @@ void compute_skin_weights(const Skeleton& skeleton, const ImplicitBody& body, Sk
   switch (method) {
     case SkinWeightMethod::InfluenceSpheres: influence_spheres(skeleton, body, near, mesh); break;
     case SkinWeightMethod::TwoLayerBending: two_layer_bending(near, Adjacency(mesh), mesh); break;
-    case SkinWeightMethod::FieldDiffused: field_diffused(body, near, Adjacency(mesh), mesh); break;
+    case SkinWeightMethod::FieldDiffused: field_diffused(skeleton, body, near, Adjacency(mesh), mesh); break;
   }
 }
 
