@@ -27,13 +27,15 @@ float nearer_material(const ImplicitBody& body, const vec3& p, MaterialId a, Mat
 float eyebrow_field(const vec3& p, float k) {
   const float ax = std::abs(p.x) / k, y = p.y / k;
   if (p.z / k < 0.04f) return 1.0f;  // the brows are on the front of the head only
-  // Along the brow: u from −1 (inner end, near the nose) to +1 (outer tail).
-  const float u = (ax - 0.0320f) / 0.0195f;
-  // A gentle arch peaking two thirds of the way out, thick at the head and thinning to the tail.
-  const float centre = 1.6300f + 0.0032f * (1.0f - (u - 0.3f) * (u - 0.3f) / 1.69f);
-  const float half_thickness = 0.0058f - 0.0016f * (u + 1.0f);
-  const float t = (y - centre) / half_thickness;
-  return u * u * u * u + t * t - 1.0f;
+  // Seen from the front, a brow is a thick stroke along a gentle arch from its head near the nose
+  // (inner, 5.5 mm half thickness) to its thin tail: a distance to the stroke's centre line minus
+  // the stroke's half thickness (so the field is close to metres everywhere, as the cutting wants).
+  constexpr float inner = 0.0140f, outer = 0.0490f;
+  const float x = std::clamp(ax, inner, outer);
+  const float u = (x - inner) / (outer - inner);  // 0 at the head, 1 at the tail
+  const float centre = 1.6300f + 0.0032f * (1.0f - (2.0f * u - 1.3f) * (2.0f * u - 1.3f) / 1.69f);
+  const float half_thickness = 0.0055f - 0.0025f * u;
+  return std::hypot(ax - x, y - centre) - half_thickness;
 }
 
 std::vector<MaterialBorder> avatar_material_borders(const ImplicitBody& body, float k) {
