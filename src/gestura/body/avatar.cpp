@@ -38,7 +38,7 @@ std::vector<vec3> surface_normals(const ImplicitBody& body, const Mesh& mesh) {
 }
 
 // Material of each vertex: that of the nearest union primitive; on eyeballs the iris and pupil
-// are the caps around the gaze direction (+Z at rest); brows are drawn by eyebrow_field.
+// are the caps around the gaze direction (+Z at rest); hair and brows are drawn by their fields.
 std::vector<std::uint8_t> surface_materials(const Skeleton& skeleton, const ImplicitBody& body, const Mesh& mesh,
                                             float k) {
   std::vector<std::uint8_t> out(mesh.vertex_count(), static_cast<std::uint8_t>(MaterialId::Skin));
@@ -61,8 +61,8 @@ std::vector<std::uint8_t> surface_materials(const Skeleton& skeleton, const Impl
         m = MaterialId::Pupil;
       else if (dir.z > std::cos(deg(30.0f)))
         m = MaterialId::Iris;
-    } else if (m == MaterialId::Skin && eyebrow_field(p, k) < 0.0f) {
-      m = MaterialId::Brow;
+    } else if (m == MaterialId::Skin || m == MaterialId::Hair) {
+      m = hair_field(p, k) < 0.0f ? MaterialId::Hair : eyebrow_field(p, k) < 0.0f ? MaterialId::Brow : MaterialId::Skin;
     }
     out[v] = static_cast<std::uint8_t>(m);
   }
