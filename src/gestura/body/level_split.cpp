@@ -1,5 +1,6 @@
 #include "gestura/body/level_split.hpp"
 
+#include <algorithm>
 #include <array>
 #include <unordered_map>
 
@@ -7,7 +8,7 @@
 
 namespace gestura {
 
-std::size_t split_at_level(LevelSplitMesh mesh, float level, float snap) {
+std::size_t split_at_level(LevelSplitMesh mesh, float level, float snap, const LevelCrossing& crossing) {
   const std::size_t nv = mesh.positions.size();
   if (mesh.values.size() != nv || mesh.eligible.size() != nv)
     throw Error("split_at_level: values and eligible must have one entry per vertex");
@@ -24,7 +25,8 @@ std::size_t split_at_level(LevelSplitMesh mesh, float level, float snap) {
     const std::uint64_t key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
     auto [it, fresh] = vertex_on_edge.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
     if (fresh) {
-      const float t = (level - mesh.values[a]) / (mesh.values[b] - mesh.values[a]);
+      float t = (level - mesh.values[a]) / (mesh.values[b] - mesh.values[a]);
+      if (crossing) t = std::clamp(crossing(a, b, t), 0.05f, 0.95f);
       mesh.positions.push_back(glm::mix(mesh.positions[a], mesh.positions[b], t));
       mesh.values.push_back(level);
       mesh.eligible.push_back(1);

@@ -75,9 +75,31 @@ void sharpen(const MaterialBorder& border, float half_width, std::vector<vec3>& 
   for (std::size_t v = 0; v < n; ++v)
     if (cut_eligible[v]) materials[v] = s[v] < 0.0f ? below : above;
 
+  // Each cut vertex goes where the field itself reaches the level (rescaled by the edge's slope),
+  // found by bisection along the edge: a linear guess misplaces it wherever the field bends within
+  // a triangle, as across a brow's thin tail.
+  const std::size_t original = n;
+  auto crossing_at = [&](float level) {
+    return [&, level](std::uint32_t a, std::uint32_t b, float t) {
+      float rate = 0.0f, known = 0.0f;
+      for (std::uint32_t v : {a, b})
+        if (v < original && count[v] > 0.0f) rate += slope[v] / count[v], known += 1.0f;
+      if (known == 0.0f) return t;
+      const float target = level * rate / known;
+      const vec3 pa = positions[a], pb = positions[b];
+      float lo = 0.0f, hi = 1.0f;
+      const float fa = border.field(pa) - target, fb = border.field(pb) - target;
+      if ((fa < 0.0f) == (fb < 0.0f)) return t;
+      for (int i = 0; i < 12; ++i) {
+        const float mid = 0.5f * (lo + hi);
+        ((border.field(glm::mix(pa, pb, mid)) - target < 0.0f) == (fa < 0.0f) ? lo : hi) = mid;
+      }
+      return 0.5f * (lo + hi);
+    };
+  };
   const float snap = 0.25f * half_width;
   for (float level : {-half_width, half_width}) {
-    split_at_level({positions, indices, s, cut_eligible}, level, snap);
+    split_at_level({positions, indices, s, cut_eligible}, level, snap, crossing_at(level));
     materials.resize(positions.size(), level < 0.0f ? below : above);
   }
 }
