@@ -228,7 +228,6 @@ void field_diffused(const Skeleton& skeleton, const ImplicitBody& body, const Ne
     }
     if (w[v].items.empty()) w[v].add(near.label[v], 1.0f);
   }
-
   // Normalise, then diffuse: each round moves every vertex halfway to its neighbours' mean.
   auto normalise = [](Influences& in) {
     float t = 0.0f;
@@ -237,23 +236,23 @@ void field_diffused(const Skeleton& skeleton, const ImplicitBody& body, const Ne
   };
   for (auto& in : w) normalise(in);
   auto diffuse = [&](int rounds) {
-  for (int round = 0; round < rounds; ++round) {
-    std::vector<Influences> next(n);
-    for (std::size_t v = 0; v < n; ++v) {
-      const auto nb = adj.of(v);
-      for (auto [j, x] : w[v].items) next[v].add(j, 0.5f * x);
-      if (nb.empty()) continue;
-      const float share = 0.5f / static_cast<float>(nb.size());
-      for (std::uint32_t u : nb)
-        for (auto [j, x] : w[u].items) next[v].add(j, share * x);
+    for (int round = 0; round < rounds; ++round) {
+      std::vector<Influences> next(n);
+      for (std::size_t v = 0; v < n; ++v) {
+        const auto nb = adj.of(v);
+        for (auto [j, x] : w[v].items) next[v].add(j, 0.5f * x);
+        if (nb.empty()) continue;
+        const float share = 0.5f / static_cast<float>(nb.size());
+        for (std::uint32_t u : nb)
+          for (auto [j, x] : w[u].items) next[v].add(j, share * x);
+      }
+      // Drop negligible influences so the vectors stay short.
+      for (auto& in : next) {
+        std::erase_if(in.items, [](auto& item) { return item.second < 0.01f; });
+        normalise(in);
+      }
+      w = std::move(next);
     }
-    // Drop negligible influences so the vectors stay short.
-    for (auto& in : next) {
-      std::erase_if(in.items, [](auto& item) { return item.second < 0.01f; });
-      normalise(in);
-    }
-    w = std::move(next);
-  }
   };
   diffuse(6);
   // Only bones near in the skeleton; two more rounds soften the fold this leaves at the armpit.
