@@ -12,15 +12,15 @@ using namespace gestura;
 
 namespace {
 
-const Avatar &avatar() {
+const Avatar& avatar() {
   static const Avatar a = build_avatar();
   return a;
 }
 
 // The mesh skinned (LBS) with the left upper arm turned outwards about the
 // forward axis by `angle` beyond its rest (A-pose) direction.
-std::vector<vec3> raised_left_arm(const Avatar &a, float angle) {
-  const Skeleton &s = a.skeleton;
+std::vector<vec3> raised_left_arm(const Avatar& a, float angle) {
+  const Skeleton& s = a.skeleton;
   const std::size_t n = s.size();
   Pose pose = rest_pose(s);
   std::vector<mat4> rest(n), model(n), skin(n), inverse_bind(n);
@@ -47,8 +47,8 @@ float segment_distance(vec3 p, vec3 a, vec3 b) {
 }  // namespace
 
 TEST(AvatarArmpit, RaisedArmLeavesTheChestWallInPlaceAndStretchesNoWeb) {
-  const Avatar &a = avatar();
-  const Mesh &m = a.mesh;
+  const Avatar& a = avatar();
+  const Mesh& m = a.mesh;
   const auto joints = rest_joint_positions(a.skeleton);
   const vec3 shoulder = joints[static_cast<std::size_t>(a.skeleton.find("l_shoulder"))];
   const vec3 elbow = joints[static_cast<std::size_t>(a.skeleton.find("l_elbow"))];
