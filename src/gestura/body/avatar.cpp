@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "gestura/body/avatar_material_borders.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/body/avatar_volume.hpp"
 #include "gestura/body/face_morphs.hpp"
@@ -37,7 +38,7 @@ std::vector<vec3> surface_normals(const ImplicitBody& body, const Mesh& mesh) {
 }
 
 // Material of each vertex: that of the nearest union primitive; on eyeballs the iris and pupil
-// are the caps around the gaze direction (+Z at rest); brows are a strip of the brow ridge.
+// are the caps around the gaze direction (+Z at rest); hair and brows are drawn by their fields.
 std::vector<std::uint8_t> surface_materials(const Skeleton& skeleton, const ImplicitBody& body, const Mesh& mesh,
                                             float k) {
   std::vector<std::uint8_t> out(mesh.vertex_count(), static_cast<std::uint8_t>(MaterialId::Skin));
@@ -60,10 +61,8 @@ std::vector<std::uint8_t> surface_materials(const Skeleton& skeleton, const Impl
         m = MaterialId::Pupil;
       else if (dir.z > std::cos(deg(30.0f)))
         m = MaterialId::Iris;
-    } else if (m == MaterialId::Skin) {
-      const float ax = std::abs(p.x) / k, y = p.y / k, z = p.z / k;
-      if (ax > 0.012f && ax < 0.050f && y > 1.624f && y < 1.637f && z > 0.072f)
-        m = MaterialId::Brow;
+    } else if (m == MaterialId::Skin || m == MaterialId::Hair) {
+      m = hair_field(p, k) < 0.0f ? MaterialId::Hair : eyebrow_field(p, k) < 0.0f ? MaterialId::Brow : MaterialId::Skin;
     }
     out[v] = static_cast<std::uint8_t>(m);
   }
@@ -98,12 +97,13 @@ Avatar build_avatar(const AvatarParams& params, const AvatarOptions& options) {
   poly.cell = options.cell * k;
   poly.detail = avatar_detail_boxes(avatar.skeleton, params);
   Polygonization surface = polygonize_with_detail(body, poly);
-  collapse_short_edges(surface.positions, surface.indices, 0.45f);
+  collapse_short_edges(surface.positions, surface.indices, 0.5f);
   Mesh& mesh = avatar.mesh;
   mesh.positions = std::move(surface.positions);
   mesh.indices = std::move(surface.indices);
-  mesh.normals = surface_normals(body, mesh);
   mesh.materials = surface_materials(avatar.skeleton, body, mesh, k);
+  sharpen_material_borders(avatar_material_borders(body, k), 0.0005f * k, mesh.positions, mesh.indices, mesh.materials);
+  mesh.normals = surface_normals(body, mesh);
   compute_skin_weights(avatar.skeleton, body, options.weights, mesh);
   mesh.morphs = build_face_morphs(avatar.skeleton, mesh, k);
   compute_morph_normal_deltas(mesh);

@@ -95,6 +95,10 @@ void add_trunk(VolumeBuilder& b, const AvatarParams& p, float k) {
               0.033f * k * g, 0.032f * k * g, cloth, 0.035f * k);
     b.ellipsoid(s + "shoulder", sh + vec3(dir * 0.010f, -0.025f, 0.0f) * k, vec3(0.050f, 0.068f, 0.052f) * k * g, cloth,
                 0.03f * k);
+    // The hollow of the armpit: the chest wall under the shoulder falls back a centimetre, so the
+    // hanging arm (added later, not carved) stays clear of it below the armpit.
+    b.ellipsoid("vt6", vec3(dir * (0.150f * chest * g + 0.012f), 1.230f, -0.010f) * k, vec3(0.022f, 0.075f, 0.050f) * k, cloth,
+                0.02f * k, BlendOp::Subtract);
   }
   // Neck: skin above the collar.
   b.capsule("vc4", vec3(0, 1.400f, -0.028f) * k, b.at("skullbase") + vec3(0, 0.0f, 0.0f), 0.054f * k, 0.050f * k,
@@ -147,7 +151,9 @@ void add_arm(VolumeBuilder& b, const AvatarParams& p, const std::string& s, floa
   const float g = p.build;
   const vec3 sh = b.at(s + "shoulder"), el = b.at(s + "elbow"), wr = b.at(s + "wrist");
   const vec3 down = glm::normalize(wr - el);
-  b.capsule(s + "shoulder", sh, el, 0.046f * k * g, 0.036f * k * g, MaterialId::Cloth, 0.03f * k);
+  // A narrow blend: the upper arm joins the trunk at the armpit only, not along the chest wall it
+  // hangs beside (a wide one would web them together and stretch the web when the arm rises).
+  b.capsule(s + "shoulder", sh, el, 0.046f * k * g, 0.036f * k * g, MaterialId::Cloth, 0.012f * k);
   b.capsule(s + "elbow", el, wr - down * (0.012f * k), 0.037f * k * g, proportions::kWristSleeveRadius * k * g, MaterialId::Cloth,
             proportions::kForearmBlend * k);
 

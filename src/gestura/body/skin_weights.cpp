@@ -175,7 +175,43 @@ void two_layer_bending(const NearPrimitives& near, const Adjacency& adj, Mesh& m
   }
 }
 
-void field_diffused(const ImplicitBody& body, const NearPrimitives& near, const Adjacency& adj, Mesh& mesh) {
+// The bones a vertex may follow: those within two steps, in the skeleton tree, of the bone it lies
+// on. A farther bone can be near in space only — the upper arm hanging beside the chest wall — and
+// its share is handed to the bone two steps along the tree path towards it (the clavicle, for the
+// chest), which bends the region between without dragging it along: with the arm raised the chest
+// wall stays put and the armpit folds instead of stretching into a web.
+class TreeReach {
+ public:
+  explicit TreeReach(const Skeleton& skeleton) : parents_(skeleton.parents.begin(), skeleton.parents.end()) {}
+
+  int stand_in(int own, int joint) const {
+    // Steps from `own` up to each ancestor, then from `joint` up to the first shared one.
+    std::vector<int> up_own;
+    for (int a = own; a >= 0; a = parents_[static_cast<std::size_t>(a)]) up_own.push_back(a);
+    std::vector<int> up_joint;
+    int lca_steps = -1;
+    for (int a = joint; a >= 0; a = parents_[static_cast<std::size_t>(a)]) {
+      const auto it = std::find(up_own.begin(), up_own.end(), a);
+      if (it != up_own.end()) {
+        lca_steps = static_cast<int>(it - up_own.begin());
+        break;
+      }
+      up_joint.push_back(a);
+    }
+    if (lca_steps < 0) return own;  // separate trees
+    const int from_own = lca_steps, from_joint = static_cast<int>(up_joint.size());
+    if (from_own + from_joint <= 2) return joint;
+    if (from_own >= 2) return up_own[2];
+    // Two steps from `own`, going down towards `joint` (up_joint lists joint … child of the LCA).
+    return up_joint[static_cast<std::size_t>(from_joint - (2 - from_own))];
+  }
+
+ private:
+  std::vector<std::int16_t> parents_;
+};
+
+void field_diffused(const Skeleton& skeleton, const ImplicitBody& body, const NearPrimitives& near, const Adjacency& adj,
+                    Mesh& mesh) {
   const std::size_t n = mesh.vertex_count();
   // Dense per-vertex weights over the few joints near each vertex, kept sparse as Influences.
   std::vector<Influences> w(n);
@@ -199,23 +235,34 @@ void field_diffused(const ImplicitBody& body, const NearPrimitives& near, const 
     for (auto& [j, x] : in.items) x /= t;
   };
   for (auto& in : w) normalise(in);
-  for (int round = 0; round < 6; ++round) {
-    std::vector<Influences> next(n);
-    for (std::size_t v = 0; v < n; ++v) {
-      const auto nb = adj.of(v);
-      for (auto [j, x] : w[v].items) next[v].add(j, 0.5f * x);
-      if (nb.empty()) continue;
-      const float share = 0.5f / static_cast<float>(nb.size());
-      for (std::uint32_t u : nb)
-        for (auto [j, x] : w[u].items) next[v].add(j, share * x);
+  auto diffuse = [&](int rounds) {
+    for (int round = 0; round < rounds; ++round) {
+      std::vector<Influences> next(n);
+      for (std::size_t v = 0; v < n; ++v) {
+        const auto nb = adj.of(v);
+        for (auto [j, x] : w[v].items) next[v].add(j, 0.5f * x);
+        if (nb.empty()) continue;
+        const float share = 0.5f / static_cast<float>(nb.size());
+        for (std::uint32_t u : nb)
+          for (auto [j, x] : w[u].items) next[v].add(j, share * x);
+      }
+      // Drop negligible influences so the vectors stay short.
+      for (auto& in : next) {
+        std::erase_if(in.items, [](auto& item) { return item.second < 0.01f; });
+        normalise(in);
+      }
+      w = std::move(next);
     }
-    // Drop negligible influences so the vectors stay short.
-    for (auto& in : next) {
-      std::erase_if(in.items, [](auto& item) { return item.second < 0.01f; });
-      normalise(in);
-    }
-    w = std::move(next);
+  };
+  diffuse(6);
+  // Only bones near in the skeleton; two more rounds soften the fold this leaves at the armpit.
+  const TreeReach reach(skeleton);
+  for (std::size_t v = 0; v < n; ++v) {
+    Influences kept;
+    for (auto [j, x] : w[v].items) kept.add(reach.stand_in(near.label[v], j), x);
+    w[v] = std::move(kept);
   }
+  diffuse(2);
   for (std::size_t v = 0; v < n; ++v) store(w[v], near.label[v], mesh.joints[v], mesh.weights[v]);
 }
 
@@ -244,7 +291,7 @@ void compute_skin_weights(const Skeleton& skeleton, const ImplicitBody& body, Sk
   switch (method) {
     case SkinWeightMethod::InfluenceSpheres: influence_spheres(skeleton, body, near, mesh); break;
     case SkinWeightMethod::TwoLayerBending: two_layer_bending(near, Adjacency(mesh), mesh); break;
-    case SkinWeightMethod::FieldDiffused: field_diffused(body, near, Adjacency(mesh), mesh); break;
+    case SkinWeightMethod::FieldDiffused: field_diffused(skeleton, body, near, Adjacency(mesh), mesh); break;
   }
 }
 

@@ -11,7 +11,9 @@
 //    rigid.
 //  FieldDiffused (default) — each bone's weight is the smooth share of its primitives in the field
 //    (exp(−d/σ) with σ tied to the primitive's size), then a few rounds of Laplacian diffusion over
-//    the mesh so that creases at elbows, wrists, knuckles and shoulders bend gradually.
+//    the mesh so that creases at elbows, wrists, knuckles and shoulders bend gradually. A vertex
+//    keeps only bones within two skeleton steps of its own (a farther bone's share goes to the bone
+//    two steps towards it), so the chest wall does not follow the upper arm hanging beside it.
 //
 // All methods keep at most four influences per vertex, sorted by weight, summing to 1.
 #include <cstdint>
