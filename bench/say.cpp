@@ -1,5 +1,7 @@
-// gestura say without rendering: a 15-word English sentence → the whole performance (translation,
-// lexicon, sign planning, joining, inverse kinematics every frame, face channels), and its parts.
+// gestura say without rendering (S1): a 15-word English sentence → the whole performance
+// (translation, lexicon, sign planning and joining, joint motion, face channels), and its parts.
+// Warm: the signer has performed these signs before (their citation motion is cached); cold: a
+// fresh signer, so every sign is planned and solved by IK first (docs/benchmarks.md).
 #include <benchmark/benchmark.h>
 
 #include <optional>
@@ -42,6 +44,21 @@ void BM_SaySentence(benchmark::State& state) {
   state.counters["performance_s"] = seconds;
 }
 BENCHMARK(BM_SaySentence)->Arg(1)->Arg(0)->ArgNames({"mouthing"})->Unit(benchmark::kMillisecond);
+
+// The first call on a new signer (building the signer itself is not timed).
+void BM_SaySentenceCold(benchmark::State& state) {
+  gestura::SayOptions options;
+  options.mouthing = state.range(0) != 0;
+  std::optional<gestura::Signer> signer;
+  for (auto _ : state) {
+    state.PauseTiming();
+    signer.reset();
+    signer.emplace(world().avatar, world().layers);
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(signer->say(kSentence, options).clip.rotations.data());
+  }
+}
+BENCHMARK(BM_SaySentenceCold)->Arg(1)->Arg(0)->ArgNames({"mouthing"})->Unit(benchmark::kMillisecond);
 
 // The translation step alone, with a fresh (uncached) inventory each time like say() uses.
 void BM_SayTranslate(benchmark::State& state) {

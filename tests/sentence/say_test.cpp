@@ -143,6 +143,84 @@ TEST(SaySentence, NumbersOutsideTheLexiconAreComposed) {
   EXPECT_GT(g[0]->end - g[0]->start, four[0]->end - four[0]->start + 0.08f);
 }
 
+// Articulation rate of an utterance as sign annotators time it: lexical signs per second from the
+// first sign's onset to the last sign's offset, without pauses and fingerspelled words. Each later
+// sign is counted from the end of whatever came before it (the previous sign, a pause, a spelled
+// word) to the end of its own final hold, so it carries its transition in.
+float signs_per_second(const SentencePerformance& p) {
+  float previous_end = p.glosses.empty() ? 0.0f : p.glosses.front().start, time = 0.0f;
+  int signs = 0;
+  for (const PerformedGloss& g : p.glosses) {
+    if (g.gloss != "PAUSE" && g.gloss.rfind("FS-", 0) != 0) {
+      time += g.end - previous_end;
+      ++signs;
+    }
+    previous_end = g.end;
+  }
+  return time > 0.0f ? static_cast<float>(signs) / time : 0.0f;
+}
+
+TEST(ProsodyRate, SentencesAreWithinTwentyPercentOfAFluentSigner) {
+  // Reference 2.0 signs/s (docs/say.md: sign_prosody.hpp kReferenceSignsPerSecond); ±20 % → 1.6–2.4.
+  const char* sentences[] = {
+      "Yesterday my mother went to the store.",
+      "My brother bought a new car.",
+      "Where do you live?",
+      "I don't like coffee, but I like tea.",
+      "Tomorrow my friend will visit the doctor.",
+      "The teacher is very happy today.",
+      "Do you want to eat pizza?",
+      "My sister and I went to the big store and bought a new book.",
+      "The dog and the cat sleep in the house.",
+      "Why are you tired?",
+  };
+  for (const char* text : sentences) {
+    const float rate = signs_per_second(say(text));
+    EXPECT_GE(rate, 0.8f * 2.0f) << text;
+    EXPECT_LE(rate, 1.2f * 2.0f) << text;
+  }
+}
+
+TEST(ProsodyRate, EverySignIsHeldLongEnoughToBeSeen) {
+  // POSS-1 (MY) and IX-1 (I) have no movement: they still last 0.3 s or more.
+  const SentencePerformance p = say("My brother and I bought a new car.");
+  for (const PerformedGloss* g : signed_glosses(p)) EXPECT_GE(g->end - g->start, 0.3f - 1e-4f) << g->gloss;
+}
+
+TEST(ProsodyRate, PhraseFinalSignIsLongerThanTheSameSignInside) {
+  const SentencePerformance inside_performance = say("My car is new, I like it.");
+  const SentencePerformance final_performance = say("I like my new car.");
+  const auto inside = signed_glosses(inside_performance), final = signed_glosses(final_performance);
+  auto span_of = [](const std::vector<const PerformedGloss*>& g, const std::string& gloss) {
+    for (const PerformedGloss* x : g)
+      if (x->gloss == gloss) return x->end - x->start;
+    return 0.0f;
+  };
+  ASSERT_EQ(final.back()->gloss, "CAR");
+  EXPECT_GT(span_of(final, "CAR"), span_of(inside, "CAR") + 0.1f);
+}
+
+TEST(ProsodyRate, FullStopPausesHalfASecond) {
+  const SentencePerformance p = say("I like coffee. My brother likes tea.");
+  bool found = false;
+  for (const PerformedGloss& g : p.glosses)
+    if (g.gloss == "PAUSE" && g.source == ".") {
+      EXPECT_NEAR(g.end - g.start, 0.5f, 0.02f);
+      found = true;
+    }
+  EXPECT_TRUE(found);
+}
+
+TEST(ProsodyRate, GlobalSpeedScalesTheWholeUtterance) {
+  const char* text = "Yesterday my mother went to the store.";
+  const float normal = say(text).duration;
+  for (float speed : {0.25f, 0.5f, 2.0f}) {
+    SayOptions o;
+    o.speed = speed;
+    EXPECT_NEAR(say(text, o).duration * speed / normal, 1.0f, 0.1f) << speed;
+  }
+}
+
 void expect_error(std::string_view text, const SayOptions& options, const std::string& needle) {
   try {
     say(text, options);

@@ -1,0 +1,148 @@
+#include "gestura/sentence/sign_motion_cache.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "gestura/core/error.hpp"
+#include "gestura/sign/hamnosys_parser.hpp"
+#include "gestura/sign/sign_performer.hpp"
+
+namespace gestura {
+
+namespace {
+
+// Samples per second of citation time. Running signing plays citation movements ~2.4× faster, so
+// at speed 1 this is ~25 samples per second of the sentence; joint angles are interpolated in
+// between, and the segment ends, where the hand is at a key posture, move slowly (minimum jerk).
+constexpr float kCitationRate = 60.0f;
+
+int side_of(Hand hand) { return hand == Hand::Right ? 0 : 1; }
+
+// The plan of a timeline from `start` on, shifted so that `start` becomes time 0.
+void shift_to_start(HandTimeline& timeline, float start) {
+  std::vector<HandSegment> kept;
+  for (HandSegment& seg : timeline.segments) {
+    if (seg.end <= start) continue;  // the planner's instant entry into the first posture
+    seg.start = std::max(seg.start, start) - start;
+    seg.end -= start;
+    kept.push_back(std::move(seg));
+  }
+  timeline.segments = std::move(kept);
+}
+
+void append(std::string& key, float v) {
+  char bytes[sizeof(float)];
+  std::memcpy(bytes, &v, sizeof v);
+  key.append(bytes, sizeof bytes);
+}
+
+std::string posture_key(Hand hand, const HandState& s) {
+  std::string key(1, hand == Hand::Right ? 'r' : 'l');
+  key.push_back(s.active ? 'a' : 'i');
+  for (int i = 0; i < 3; ++i) append(key, s.position[i]);
+  for (int i = 0; i < 4; ++i) append(key, s.orientation[i]);
+  const HandPosture& p = s.shape;
+  for (float v : {p.thumb.cmc_flexion, p.thumb.cmc_abduction, p.thumb.cmc_opposition, p.thumb.mcp, p.thumb.ip}) append(key, v);
+  for (const FingerFlexion& f : p.fingers) append(key, f.mcp), append(key, f.pip), append(key, f.dip);
+  for (float v : p.spread) append(key, v);
+  key.push_back(static_cast<char>(p.thumb_tip_contacts));
+  key.push_back(p.middle_crosses_index ? 'x' : '-');
+  return key;
+}
+
+}  // namespace
+
+std::vector<int> hand_motion_joints(const SigningRig& rig, Hand hand) {
+  const HandRig& h = rig.hand(hand);
+  std::vector<int> joints(h.arm.joints.begin(), h.arm.joints.end());
+  for (const auto& finger : h.fingers) joints.insert(joints.end(), finger.begin(), finger.end());
+  return joints;
+}
+
+void CitationMotion::sample(Hand hand, float t, std::span<quat> out) const {
+  const int side = side_of(hand);
+  const std::size_t n = joints[static_cast<std::size_t>(side)];
+  const std::vector<quat>& s = samples[static_cast<std::size_t>(side)];
+  // perform_plan keys at least two frames.
+  const float f = std::clamp(t * rate, 0.0f, static_cast<float>(frames - 1));
+  const auto i = static_cast<std::size_t>(std::min(static_cast<int>(f), frames - 2));
+  const float w = f - static_cast<float>(i);
+  const quat* a = &s[i * n];
+  const quat* b = &s[(i + 1) * n];
+  for (std::size_t j = 0; j < n; ++j) out[j] = nlerp(a[j], b[j], w);
+}
+
+SignMotionCache::SignMotionCache(const SigningRig& rig) : rig_(&rig) {
+  joints_[0] = hand_motion_joints(rig, Hand::Right);
+  joints_[1] = hand_motion_joints(rig, Hand::Left);
+}
+
+std::size_t SignMotionCache::signs_stored() const {
+  std::lock_guard lock(mutex_);
+  return signs_.size();
+}
+
+const CitationMotion& SignMotionCache::sign(std::string_view notation) {
+  const std::string key(notation);
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
+  }
+  // Computed outside the lock: two threads may both compute a new sign; the first stored wins.
+  auto motion = std::make_unique<CitationMotion>();
+  PlanOptions options;
+  options.from_rest = false;
+  options.to_rest = false;
+  options.initial_hold = 0.0f;
+  options.final_hold = 0.0f;
+  SignPlan plan = plan_sign(sign::parse_hamnosys_unicode(notation), *rig_, options);
+  shift_to_start(plan.right, plan.sign_start);
+  shift_to_start(plan.left, plan.sign_start);
+  plan.sign_end -= plan.sign_start;
+  plan.sign_start = 0.0f;
+  const Clip clip = perform_plan(plan, *rig_, PerformOptions{kCitationRate});
+  motion->plan = std::move(plan);
+  motion->rate = kCitationRate;
+  for (int side = 0; side < 2; ++side) {
+    const std::vector<int>& joints = joints_[static_cast<std::size_t>(side)];
+    const std::size_t frames = clip.rotations[static_cast<std::size_t>(joints.front())].size();
+    motion->frames = static_cast<int>(frames);
+    motion->joints[static_cast<std::size_t>(side)] = joints.size();
+    std::vector<quat>& out = motion->samples[static_cast<std::size_t>(side)];
+    out.resize(frames * joints.size());
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+      const QuatTrack& track = clip.rotations[static_cast<std::size_t>(joints[j])];
+      for (std::size_t f = 0; f < frames; ++f) out[f * joints.size() + j] = track.values[f];
+    }
+  }
+  std::lock_guard lock(mutex_);
+  return *signs_.emplace(key, std::move(motion)).first->second;
+}
+
+HandJointPosture SignMotionCache::solve(Hand hand, const HandState& state) const {
+  // A plan that holds the state for an instant, performed like any sign (IK, joint limits, the
+  // hand kept out of the body); the other hand rests.
+  SignPlan plan;
+  HandSegment hold;
+  hold.from = hold.to = state;
+  (hand == Hand::Right ? plan.right : plan.left).segments.push_back(hold);
+  const Clip clip = perform_plan(plan, *rig_, PerformOptions{});
+  const std::vector<int>& joints = this->joints(hand);
+  HandJointPosture out(joints.size());
+  for (std::size_t j = 0; j < joints.size(); ++j) out[j] = clip.rotations[static_cast<std::size_t>(joints[j])].values.front();
+  return out;
+}
+
+const HandJointPosture& SignMotionCache::posture(Hand hand, const HandState& state) {
+  const std::string key = posture_key(hand, state);
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = postures_.find(key); it != postures_.end()) return *it->second;
+  }
+  auto solved = std::make_unique<HandJointPosture>(solve(hand, state));
+  std::lock_guard lock(mutex_);
+  return *postures_.emplace(key, std::move(solved)).first->second;
+}
+
+}  // namespace gestura

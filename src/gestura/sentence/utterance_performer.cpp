@@ -1,0 +1,216 @@
+#include "gestura/sentence/utterance_performer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gestura/core/error.hpp"
+#include "gestura/sign/movement_timing.hpp"
+#include "gestura/sign/sign_performer.hpp"
+
+namespace gestura {
+
+namespace {
+
+constexpr float kTimeEpsilon = 1e-4f;
+// A joint-space transition counts as entering the body when a hand point is this deep inside.
+constexpr float kPenetrationTolerance = 0.004f;
+
+// What one hand does over one interval of the utterance.
+struct Piece {
+  enum class Kind : std::uint8_t { Cached, Blend, Solved };
+  Kind kind = Kind::Blend;
+  float t0 = 0.0f, t1 = 0.0f;
+  const CachedSignSpan* sign = nullptr;  // Cached
+  std::size_t a = 0, b = 0;              // Blend: offsets of the end postures in HandMotion::keys
+  bool linear = false;                   // Blend: constant speed (the plan's linear_blend)
+  bool escape = false;                   // Blend: fade to the IK-solved Cartesian path in the middle
+  const HandSegment* segment = nullptr;  // Solved and escape: the plan's segment
+};
+
+struct HandMotion {
+  std::vector<Piece> pieces;
+  std::vector<quat> keys;  // postures at segment ends, joints() each
+};
+
+float citation_time(const CachedSignSpan& s, float t) {
+  return std::clamp((t - s.moving) * s.tempo, 0.0f, s.motion->movement());
+}
+
+class HandPerformer {
+ public:
+  HandPerformer(Hand hand, const HandTimeline& timeline, std::vector<const CachedSignSpan*> spans, SignMotionCache& cache)
+      : hand_(hand), timeline_(timeline), spans_(std::move(spans)), cache_(cache), n_(cache.joints(hand).size()) {}
+
+  HandMotion build(UtteranceStats& stats) {
+    HandMotion m;
+    std::size_t k = 0;  // the first span that has not ended before the segment
+    std::size_t emitted = 0;
+    for (const HandSegment& seg : timeline_.segments) {
+      while (k < spans_.size() && spans_[k]->end <= seg.start + kTimeEpsilon && seg.end > spans_[k]->end + kTimeEpsilon) ++k;
+      if (k < spans_.size() && seg.start >= spans_[k]->start - kTimeEpsilon && seg.end <= spans_[k]->end + kTimeEpsilon) {
+        if (emitted <= k) {
+          Piece p;
+          p.kind = Piece::Kind::Cached;
+          p.t0 = spans_[k]->start, p.t1 = spans_[k]->end;
+          p.sign = spans_[k];
+          m.pieces.push_back(p);
+          emitted = k + 1;
+        }
+        continue;
+      }
+      Piece p;
+      p.t0 = seg.start, p.t1 = seg.end;
+      p.segment = &seg;
+      if (!seg.paths.empty() || seg.oscillation != Oscillation::None) {
+        p.kind = Piece::Kind::Solved;  // a path outside the cached signs: solved frame by frame
+        m.pieces.push_back(p);
+        continue;
+      }
+      p.linear = seg.linear_blend;
+      p.a = add_key(m, seg.start, seg.from);
+      p.b = add_key(m, seg.end, seg.to);
+      if (seg.from.active || seg.to.active) {
+        ++stats.transitions;
+        p.escape = enters_body(m, p);
+        stats.escaped += p.escape ? 1 : 0;
+      }
+      m.pieces.push_back(p);
+    }
+    return m;
+  }
+
+  // The hand's joint rotations at time t; `cursor` walks the pieces forward as t grows.
+  void evaluate(const HandMotion& m, float t, std::size_t& cursor, std::span<quat> out) const {
+    while (cursor + 1 < m.pieces.size() && t > m.pieces[cursor].t1) ++cursor;
+    const Piece& p = m.pieces[cursor];
+    const float u = p.t1 > p.t0 ? std::clamp((t - p.t0) / (p.t1 - p.t0), 0.0f, 1.0f) : 1.0f;
+    switch (p.kind) {
+      case Piece::Kind::Cached: p.sign->motion->sample(hand_, citation_time(*p.sign, t), out); return;
+      case Piece::Kind::Solved: {
+        const HandJointPosture q = cache_.solve(hand_, sample_hand(timeline_, t));
+        std::copy(q.begin(), q.end(), out.begin());
+        return;
+      }
+      case Piece::Kind::Blend: break;
+    }
+    blend(m, p, u, out);
+    if (!p.escape) return;
+    // Fade from the joint-space path to the Cartesian one solved with the hand kept out of the
+    // body, and back: the weight is 0 at both ends, so the piece still starts and ends exactly
+    // at its postures.
+    const HandJointPosture q = cache_.solve(hand_, sample_hand(timeline_, t));
+    const float w = std::sin(kPi * u);
+    for (std::size_t j = 0; j < n_; ++j) out[j] = nlerp(out[j], q[j], w);
+  }
+
+ private:
+  void blend(const HandMotion& m, const Piece& p, float u, std::span<quat> out) const {
+    const float s = p.linear ? u : minimum_jerk(u);
+    for (std::size_t j = 0; j < n_; ++j) out[j] = nlerp(m.keys[p.a + j], m.keys[p.b + j], s);
+  }
+
+  // Appends the posture at a segment end: a cached sign's first or last posture when one starts
+  // or ends there, else the state solved once by IK (stored in the cache).
+  std::size_t add_key(HandMotion& m, float time, const HandState& state) {
+    const std::size_t offset = m.keys.size();
+    m.keys.resize(offset + n_);
+    const std::span<quat> out(m.keys.data() + offset, n_);
+    for (const CachedSignSpan* s : spans_) {
+      if (std::abs(s->start - time) < kTimeEpsilon || std::abs(s->end - time) < kTimeEpsilon) {
+        s->motion->sample(hand_, citation_time(*s, time), out);
+        return offset;
+      }
+      if (s->start > time) break;
+    }
+    const HandJointPosture& q = cache_.posture(hand_, state);
+    std::copy(q.begin(), q.end(), out.begin());
+    return offset;
+  }
+
+  // Whether the joint-space path of a piece takes a hand point into the body (checked at u = ¼, ½, ¾;
+  // the ends are postures already kept out of the body).
+  bool enters_body(const HandMotion& m, const Piece& p) const {
+    const SigningRig& rig = cache_.rig();
+    Pose pose = rig.neutral;
+    std::vector<mat4> model(rig.skeleton().size());
+    std::vector<vec3> points;
+    std::vector<quat> q(n_);
+    const std::vector<int>& joints = cache_.joints(hand_);
+    for (float u : {0.25f, 0.5f, 0.75f}) {
+      blend(m, p, u, q);
+      for (std::size_t j = 0; j < n_; ++j) pose.rotations[static_cast<std::size_t>(joints[j])] = q[j];
+      local_to_model(rig.skeleton(), pose, model);
+      hand_surface_points(rig, hand_, model, points);
+      for (const vec3& x : points)
+        if (body_signed_distance(rig, model, x) < -kPenetrationTolerance) return true;
+    }
+    return false;
+  }
+
+  Hand hand_;
+  const HandTimeline& timeline_;
+  std::vector<const CachedSignSpan*> spans_;
+  SignMotionCache& cache_;
+  std::size_t n_;
+};
+
+}  // namespace
+
+Clip perform_utterance(const SignPlan& plan, std::span<const CachedSignSpan> signs, SignMotionCache& cache,
+                       float fps, UtteranceStats* stats) {
+  if (!(fps >= 1.0f && fps <= 240.0f)) throw Error("fps must be between 1 and 240");
+  const SigningRig& rig = cache.rig();
+  const Skeleton& s = rig.skeleton();
+  const int frames = std::max(2, static_cast<int>(std::ceil(plan.duration() * fps)) + 1);
+  UtteranceStats st;
+  st.frames = frames;
+
+  Clip clip;
+  clip.name = "sign";
+  clip.duration = static_cast<float>(frames - 1) / fps;
+  clip.resize_joints(s.size());
+  for (int side = 0; side < 2; ++side) {
+    const Hand hand = side == 0 ? Hand::Right : Hand::Left;
+    const HandTimeline& timeline = side == 0 ? plan.right : plan.left;
+    const std::vector<int>& joints = cache.joints(hand);
+    std::vector<QuatTrack*> tracks;
+    for (int j : joints) {
+      QuatTrack& tr = clip.rotations[static_cast<std::size_t>(j)];
+      tr.interpolation = Interpolation::Linear;
+      tr.times.resize(static_cast<std::size_t>(frames));
+      tr.values.resize(static_cast<std::size_t>(frames));
+      tracks.push_back(&tr);
+    }
+    std::vector<quat> posture(joints.size());
+    if (timeline.segments.empty()) {
+      // A hand the utterance never uses rests throughout.
+      const HandJointPosture& rest = cache.posture(hand, rest_hand_state(rig, hand));
+      std::copy(rest.begin(), rest.end(), posture.begin());
+      for (int f = 0; f < frames; ++f)
+        for (std::size_t j = 0; j < joints.size(); ++j) {
+          tracks[j]->times[static_cast<std::size_t>(f)] = static_cast<float>(f) / fps;
+          tracks[j]->values[static_cast<std::size_t>(f)] = posture[j];
+        }
+      continue;
+    }
+    std::vector<const CachedSignSpan*> spans;
+    for (const CachedSignSpan& sign : signs)
+      if (sign.hand == hand) spans.push_back(&sign);
+    HandPerformer performer(hand, timeline, std::move(spans), cache);
+    const HandMotion motion = performer.build(st);
+    std::size_t cursor = 0;
+    for (int f = 0; f < frames; ++f) {
+      const float t = static_cast<float>(f) / fps;
+      performer.evaluate(motion, t, cursor, posture);
+      for (std::size_t j = 0; j < joints.size(); ++j) {
+        tracks[j]->times[static_cast<std::size_t>(f)] = t;
+        tracks[j]->values[static_cast<std::size_t>(f)] = posture[j];
+      }
+    }
+    for (QuatTrack* tr : tracks) make_continuous(*tr);
+  }
+  if (stats) *stats = st;
+  return clip;
+}
+
+}  // namespace gestura

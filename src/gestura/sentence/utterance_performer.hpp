@@ -1,0 +1,38 @@
+#pragma once
+// From an utterance plan to motion without inverse kinematics per frame: the signs play their
+// cached citation motion time-scaled (sign_motion_cache.hpp), everything between them — transitions
+// (movement epenthesis), holds, fingerspelled letters, the drift of an unused hand to rest — is a
+// minimum-jerk interpolation in joint space between postures at the ends of the plan's segments.
+// A transition whose joint-space path would take the hand into the body is checked at three points
+// and, if it does, replaced in its middle by the Cartesian path solved by IK with the hand pushed
+// out of the body (as perform_plan does for every frame), faded in and out so that it starts and
+// ends at the same postures.
+#include <span>
+
+#include "gestura/anim/clip.hpp"
+#include "gestura/sentence/sign_motion_cache.hpp"
+
+namespace gestura {
+
+// A sign whose motion on one hand comes from the cache: on [start, end] the hand plays the
+// citation motion at citation time c = clamp((t − moving) · tempo, 0, motion.movement()): held at
+// its first posture until `moving`, then its movement compressed by `tempo`, then held at its last.
+struct CachedSignSpan {
+  Hand hand = Hand::Right;
+  float start = 0.0f, moving = 0.0f, end = 0.0f;
+  float tempo = 1.0f;
+  const CitationMotion* motion = nullptr;
+};
+
+struct UtteranceStats {
+  int frames = 0;
+  int transitions = 0;        // joint-space pieces with the hand signing at either end
+  int escaped = 0;            // of those, the ones whose path went into the body and were re-solved
+};
+
+// Contract: `plan` was built so that each span's hand timeline, over [start, end], is the cached
+// sign's (time-scaled) plan; spans of one hand are in time order and do not overlap; fps in [1, 240].
+Clip perform_utterance(const SignPlan& plan, std::span<const CachedSignSpan> signs, SignMotionCache& cache,
+                       float fps, UtteranceStats* stats = nullptr);
+
+}  // namespace gestura
