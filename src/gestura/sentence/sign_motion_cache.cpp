@@ -23,7 +23,7 @@ int side_of(Hand hand) { return hand == Hand::Right ? 0 : 1; }
 void shift_to_start(HandTimeline& timeline, float start) {
   std::vector<HandSegment> kept;
   for (HandSegment& seg : timeline.segments) {
-    if (seg.end <= start) continue;  // the planner's instant entry into the first posture
+    if (seg.end <= start) continue;  // the approach from rest
     seg.start = std::max(seg.start, start) - start;
     seg.end -= start;
     kept.push_back(std::move(seg));
@@ -65,7 +65,7 @@ void CitationMotion::sample(Hand hand, float t, std::span<quat> out) const {
   const std::size_t n = joints[static_cast<std::size_t>(side)];
   const std::vector<quat>& s = samples[static_cast<std::size_t>(side)];
   // perform_plan keys at least two frames.
-  const float f = std::clamp(t * rate, 0.0f, static_cast<float>(frames - 1));
+  const float f = std::clamp((first_posture + t) * rate, first_posture * rate, static_cast<float>(frames - 1));
   const auto i = static_cast<std::size_t>(std::min(static_cast<int>(f), frames - 2));
   const float w = f - static_cast<float>(i);
   const quat* a = &s[i * n];
@@ -76,6 +76,58 @@ void CitationMotion::sample(Hand hand, float t, std::span<quat> out) const {
 SignMotionCache::SignMotionCache(const SigningRig& rig) : rig_(&rig) {
   joints_[0] = hand_motion_joints(rig, Hand::Right);
   joints_[1] = hand_motion_joints(rig, Hand::Left);
+}
+
+std::unique_ptr<CitationMotion> SignMotionCache::perform_citation(SignPlan plan) const {
+  auto motion = std::make_unique<CitationMotion>();
+  const Clip clip = perform_plan(plan, *rig_, PerformOptions{kCitationRate});
+  motion->first_posture = plan.sign_start;
+  shift_to_start(plan.right, plan.sign_start);
+  shift_to_start(plan.left, plan.sign_start);
+  plan.sign_end -= plan.sign_start;
+  plan.sign_start = 0.0f;
+  motion->plan = std::move(plan);
+  motion->rate = kCitationRate;
+  for (int side = 0; side < 2; ++side) {
+    const std::vector<int>& joints = joints_[static_cast<std::size_t>(side)];
+    const std::size_t frames = clip.rotations[static_cast<std::size_t>(joints.front())].size();
+    motion->frames = static_cast<int>(frames);
+    motion->joints[static_cast<std::size_t>(side)] = joints.size();
+    std::vector<quat>& out = motion->samples[static_cast<std::size_t>(side)];
+    out.resize(frames * joints.size());
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+      const QuatTrack& track = clip.rotations[static_cast<std::size_t>(joints[j])];
+      for (std::size_t f = 0; f < frames; ++f) out[f * joints.size() + j] = track.values[f];
+    }
+  }
+  return motion;
+}
+
+float SignMotionCache::plan_error(const CitationMotion& motion) const {
+  // Largest distance of a signing palm from its planned place, over the sign's samples.
+  const Skeleton& skeleton = rig_->skeleton();
+  Pose pose = rig_->neutral;
+  std::vector<mat4> model(skeleton.size());
+  std::vector<quat> posture;
+  float worst = 0.0f;
+  for (float t = 0.0f; t <= motion.movement() + 0.5f / motion.rate; t += 1.0f / motion.rate) {
+    for (int side = 0; side < 2; ++side) {
+      const Hand hand = side == 0 ? Hand::Right : Hand::Left;
+      const HandTimeline& timeline = side == 0 ? motion.plan.right : motion.plan.left;
+      if (timeline.segments.empty()) continue;
+      const HandState planned = sample_hand(timeline, t);
+      if (!planned.active) continue;
+      const std::vector<int>& joints = this->joints(hand);
+      posture.resize(joints.size());
+      motion.sample(hand, t, posture);
+      for (std::size_t j = 0; j < joints.size(); ++j) pose.rotations[static_cast<std::size_t>(joints[j])] = posture[j];
+      local_to_model(skeleton, pose, model);
+      const HandRig& h = rig_->hand(hand);
+      const vec3 palm = vec3(model[static_cast<std::size_t>(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
+      worst = std::max(worst, glm::distance(palm, planned.position));
+    }
+  }
+  return worst;
 }
 
 std::size_t SignMotionCache::signs_stored() const {
@@ -90,31 +142,21 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
   }
   // Computed outside the lock: two threads may both compute a new sign; the first stored wins.
-  auto motion = std::make_unique<CitationMotion>();
-  PlanOptions options;
-  options.from_rest = false;
-  options.to_rest = false;
-  options.initial_hold = 0.0f;
-  options.final_hold = 0.0f;
-  SignPlan plan = plan_sign(sign::parse_hamnosys_unicode(notation), *rig_, options);
-  shift_to_start(plan.right, plan.sign_start);
-  shift_to_start(plan.left, plan.sign_start);
-  plan.sign_end -= plan.sign_start;
-  plan.sign_start = 0.0f;
-  const Clip clip = perform_plan(plan, *rig_, PerformOptions{kCitationRate});
-  motion->plan = std::move(plan);
-  motion->rate = kCitationRate;
-  for (int side = 0; side < 2; ++side) {
-    const std::vector<int>& joints = joints_[static_cast<std::size_t>(side)];
-    const std::size_t frames = clip.rotations[static_cast<std::size_t>(joints.front())].size();
-    motion->frames = static_cast<int>(frames);
-    motion->joints[static_cast<std::size_t>(side)] = joints.size();
-    std::vector<quat>& out = motion->samples[static_cast<std::size_t>(side)];
-    out.resize(frames * joints.size());
-    for (std::size_t j = 0; j < joints.size(); ++j) {
-      const QuatTrack& track = clip.rotations[static_cast<std::size_t>(joints[j])];
-      for (std::size_t f = 0; f < frames; ++f) out[f * joints.size() + j] = track.values[f];
-    }
+  // The solver's result depends on where it starts from. The sign is performed twice — started at
+  // its first posture from the relaxed signing posture, and with its approach from rest — and the
+  // performance whose palms stay closer to the plan is kept.
+  const sign::HamSign parsed = sign::parse_hamnosys_unicode(notation);
+  std::unique_ptr<CitationMotion> motion;
+  float best = 0.0f;
+  for (bool from_rest : {false, true}) {
+    PlanOptions options;
+    options.from_rest = from_rest;
+    options.to_rest = false;
+    options.initial_hold = 0.0f;
+    options.final_hold = 0.0f;
+    auto candidate = perform_citation(plan_sign(parsed, *rig_, options));
+    const float error = plan_error(*candidate);
+    if (!motion || error < best) motion = std::move(candidate), best = error;
   }
   std::lock_guard lock(mutex_);
   return *signs_.emplace(key, std::move(motion)).first->second;

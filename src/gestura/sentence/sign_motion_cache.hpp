@@ -36,7 +36,8 @@ using HandJointPosture = std::vector<quat>;
 struct CitationMotion {
   SignPlan plan;          // sign_start = 0; sign_end = seconds of movement
   float rate = 60.0f;     // samples per second of citation time
-  int frames = 0;
+  float first_posture = 0.0f;  // sample time of the first posture (the approach from rest comes before)
+  int frames = 0;             // at least 2
   std::array<std::vector<quat>, 2> samples;  // per hand [0] right, [1] left: frames × joints, frame-major
   std::array<std::size_t, 2> joints{};       // joints per hand
 
@@ -66,6 +67,9 @@ class SignMotionCache {
   std::size_t signs_stored() const;
 
  private:
+  std::unique_ptr<CitationMotion> perform_citation(SignPlan plan) const;
+  float plan_error(const CitationMotion& motion) const;
+
   const SigningRig* rig_;
   std::array<std::vector<int>, 2> joints_;
   mutable std::mutex mutex_;

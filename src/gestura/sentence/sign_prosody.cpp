@@ -10,6 +10,9 @@ SignTiming running_sign_timing(float citation_movement, bool phrase_final, float
   const float effective = std::min(citation_movement, kLongMovementSeconds) +
                           0.5f * std::max(0.0f, citation_movement - kLongMovementSeconds);
   t.movement = effective / t.tempo;
+  // One uniform time scale for the whole movement (the plan's segments and the cached motion are
+  // both mapped with it), so a long movement is played faster rather than cut.
+  if (citation_movement > 0.0f) t.tempo = citation_movement / t.movement;
   t.initial_hold = kInitialHold / speed;
   t.final_hold = (phrase_final ? std::max(kFinalHold, kPhraseFinalHold) : kFinalHold) / speed;
   // A short sign is held, not rushed: the missing time goes to the final hold, where the hand

@@ -321,8 +321,8 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
     out.glosses.push_back({g.gloss, source, (*span)[0], (*span)[1]});
   }
 
-  const SignPlan plan = builder.finish(std::max(first_start, 0.0f), last_end);
-  out.clip = perform_utterance(plan, builder.spans(), *cache_, options.fps);
+  out.plan = builder.finish(std::max(first_start, 0.0f), last_end);
+  out.clip = perform_utterance(out.plan, builder.spans(), *cache_, options.fps, &out.motion);
   out.clip.name = "say";
   const Skeleton& skeleton = avatar_->skeleton;
 

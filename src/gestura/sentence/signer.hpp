@@ -20,6 +20,7 @@
 #include "gestura/body/avatar.hpp"
 #include "gestura/lexicon/layered_lexicon.hpp"
 #include "gestura/sentence/sign_motion_cache.hpp"
+#include "gestura/sentence/utterance_performer.hpp"
 #include "gestura/sign/signing_rig.hpp"
 
 namespace gestura {
@@ -45,6 +46,8 @@ struct SentencePerformance {
   std::vector<PerformedGloss> glosses;
   float duration = 0.0f;                // seconds, including the return to rest
   std::vector<std::string> notes;       // e.g. "'zyx' fingerspelled: not in the lexicon"
+  SignPlan plan;                        // what each hand does, in space (the plan the clip performs)
+  UtteranceStats motion;                // how the joint motion was made (transitions bent around the body)
 };
 
 // Limits on one utterance (docs/say.md): longer text is refused with an error, never truncated

@@ -14,6 +14,9 @@ namespace {
 constexpr float kTimeEpsilon = 1e-4f;
 // A joint-space transition counts as entering the body when a hand point is this deep inside.
 constexpr float kPenetrationTolerance = 0.004f;
+// Transitions whose ends keep the palm centre farther than this from the body are not checked: the
+// hand (palm centre to fingertip ≤ ~12 cm) cannot reach it between two such postures.
+constexpr float kNearBody = 0.15f;
 
 // What one hand does over one interval of the utterance.
 struct Piece {
@@ -23,6 +26,8 @@ struct Piece {
   const CachedSignSpan* sign = nullptr;  // Cached
   std::size_t a = 0, b = 0;              // Blend: offsets of the end postures in HandMotion::keys
   bool linear = false;                   // Blend: constant speed (the plan's linear_blend)
+  int vias = 0;                          // Blend: bent through 0, 1 or 3 via postures, evenly spaced
+  std::size_t v = 0;                     // offset of the first via posture in HandMotion::keys
   bool escape = false;                   // Blend: fade to the IK-solved Cartesian path in the middle
   const HandSegment* segment = nullptr;  // Solved and escape: the plan's segment
 };
@@ -69,10 +74,29 @@ class HandPerformer {
       p.linear = seg.linear_blend;
       p.a = add_key(m, seg.start, seg.from);
       p.b = add_key(m, seg.end, seg.to);
-      if (seg.from.active || seg.to.active) {
+      const bool moves = !std::equal(m.keys.begin() + static_cast<std::ptrdiff_t>(p.a),
+                                     m.keys.begin() + static_cast<std::ptrdiff_t>(p.a + n_),
+                                     m.keys.begin() + static_cast<std::ptrdiff_t>(p.b));
+      if ((seg.from.active || seg.to.active) && moves) {
         ++stats.transitions;
-        p.escape = enters_body(m, p);
-        stats.escaped += p.escape ? 1 : 0;
+        if (near_body(seg) && enters_body(m, p)) {
+          // Bend the path through points of the Cartesian transition solved by IK with the hand
+          // pushed out of the body (stored, so once per pair of signs): the midpoint, else three
+          // points; if that is still not enough, solve every frame.
+          ++stats.via;
+          for (int vias : {1, 3}) {
+            p.vias = vias;
+            p.v = m.keys.size();
+            for (int k = 1; k <= vias; ++k) {
+              const float t = seg.start + (seg.end - seg.start) * static_cast<float>(k) / static_cast<float>(vias + 1);
+              const HandJointPosture& q = cache_.posture(hand_, sample_hand(timeline_, t));
+              m.keys.insert(m.keys.end(), q.begin(), q.end());
+            }
+            if (!enters_body(m, p)) break;
+          }
+          p.escape = enters_body(m, p);
+          stats.escaped += p.escape ? 1 : 0;
+        }
       }
       m.pieces.push_back(p);
     }
@@ -106,7 +130,29 @@ class HandPerformer {
  private:
   void blend(const HandMotion& m, const Piece& p, float u, std::span<quat> out) const {
     const float s = p.linear ? u : minimum_jerk(u);
-    for (std::size_t j = 0; j < n_; ++j) out[j] = nlerp(m.keys[p.a + j], m.keys[p.b + j], s);
+    if (p.vias == 0) {
+      for (std::size_t j = 0; j < n_; ++j) out[j] = nlerp(m.keys[p.a + j], m.keys[p.b + j], s);
+      return;
+    }
+    // The straight joint-space blend, rotated by a correction that is the identity at the ends and
+    // turns the blend into each via posture at its instant, eased between (zero slope at the knots).
+    const float knots = static_cast<float>(p.vias + 1);
+    const int k = std::min(static_cast<int>(u * knots), p.vias);  // interval [k, k + 1] / knots
+    const float w = std::clamp(u * knots - static_cast<float>(k), 0.0f, 1.0f);
+    const float ease = w * w * (3.0f - 2.0f * w);
+    const float sk = p.linear ? static_cast<float>(k) / knots : minimum_jerk(static_cast<float>(k) / knots);
+    const float sk1 = p.linear ? static_cast<float>(k + 1) / knots : minimum_jerk(static_cast<float>(k + 1) / knots);
+    for (std::size_t j = 0; j < n_; ++j) {
+      const quat& a = m.keys[p.a + j];
+      const quat& b = m.keys[p.b + j];
+      // Correction at knot i: via posture · inverse(straight blend there); identity at the ends.
+      auto correction = [&](int i, float si) {
+        if (i <= 0 || i > p.vias) return quat(1, 0, 0, 0);
+        return m.keys[p.v + static_cast<std::size_t>(i - 1) * n_ + j] * glm::inverse(nlerp(a, b, si));
+      };
+      const quat c = nlerp(correction(k, sk), correction(k + 1, sk1), ease);
+      out[j] = glm::normalize(c * nlerp(a, b, s));
+    }
   }
 
   // Appends the posture at a segment end: a cached sign's first or last posture when one starts
@@ -127,24 +173,36 @@ class HandPerformer {
     return offset;
   }
 
-  // Whether the joint-space path of a piece takes a hand point into the body (checked at u = ¼, ½, ¾;
-  // the ends are postures already kept out of the body).
-  bool enters_body(const HandMotion& m, const Piece& p) const {
+  // Whether a segment starts or ends with the palm close enough to the body for a joint-space path
+  // to reach it (the collision body does not move while the arms sign, so the bind pose places it).
+  bool near_body(const HandSegment& seg) const {
     const SigningRig& rig = cache_.rig();
-    Pose pose = rig.neutral;
-    std::vector<mat4> model(rig.skeleton().size());
-    std::vector<vec3> points;
-    std::vector<quat> q(n_);
-    const std::vector<int>& joints = cache_.joints(hand_);
-    for (float u : {0.25f, 0.5f, 0.75f}) {
-      blend(m, p, u, q);
-      for (std::size_t j = 0; j < n_; ++j) pose.rotations[static_cast<std::size_t>(joints[j])] = q[j];
-      local_to_model(rig.skeleton(), pose, model);
-      hand_surface_points(rig, hand_, model, points);
-      for (const vec3& x : points)
-        if (body_signed_distance(rig, model, x) < -kPenetrationTolerance) return true;
-    }
+    for (const HandState* s : {&seg.from, &seg.to})
+      if (s->active && body_signed_distance(rig, rig.bind_model, s->position) < kNearBody) return true;
     return false;
+  }
+
+  // Whether the joint-space path of a piece takes a hand point deeper into the body than its ends
+  // are (a sign touching the body may end a few millimetres in), checked at u = ¼, ½, ¾.
+  bool enters_body(const HandMotion& m, const Piece& p) const {
+    float allowed = kPenetrationTolerance;
+    for (float u : {0.0f, 1.0f}) allowed = std::max(allowed, penetration(m, p, u) + kPenetrationTolerance);
+    for (float u : {0.25f, 0.5f, 0.75f})
+      if (penetration(m, p, u) > allowed) return true;
+    return false;
+  }
+
+  // How deep the hand's deepest point is inside the body at u along the piece (≤ 0 when outside).
+  float penetration(const HandMotion& m, const Piece& p, float u) const {
+    const SigningRig& rig = cache_.rig();
+    const std::vector<int>& joints = cache_.joints(hand_);
+    blend(m, p, u, scratch_posture_);
+    for (std::size_t j = 0; j < n_; ++j) scratch_pose_.rotations[static_cast<std::size_t>(joints[j])] = scratch_posture_[j];
+    local_to_model(rig.skeleton(), scratch_pose_, scratch_model_);
+    hand_surface_points(rig, hand_, scratch_model_, scratch_points_);
+    float deepest = -1.0f;
+    for (const vec3& x : scratch_points_) deepest = std::max(deepest, -body_signed_distance(rig, scratch_model_, x));
+    return deepest;
   }
 
   Hand hand_;
@@ -152,6 +210,11 @@ class HandPerformer {
   std::vector<const CachedSignSpan*> spans_;
   SignMotionCache& cache_;
   std::size_t n_;
+  // Scratch for the body checks (the rest of the body stays in the signing rig's neutral pose).
+  mutable Pose scratch_pose_ = cache_.rig().neutral;
+  mutable std::vector<mat4> scratch_model_ = std::vector<mat4>(cache_.rig().skeleton().size());
+  mutable std::vector<vec3> scratch_points_;
+  mutable std::vector<quat> scratch_posture_ = std::vector<quat>(n_);
 };
 
 }  // namespace

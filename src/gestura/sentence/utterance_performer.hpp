@@ -3,10 +3,11 @@
 // cached citation motion time-scaled (sign_motion_cache.hpp), everything between them — transitions
 // (movement epenthesis), holds, fingerspelled letters, the drift of an unused hand to rest — is a
 // minimum-jerk interpolation in joint space between postures at the ends of the plan's segments.
-// A transition whose joint-space path would take the hand into the body is checked at three points
-// and, if it does, replaced in its middle by the Cartesian path solved by IK with the hand pushed
-// out of the body (as perform_plan does for every frame), faded in and out so that it starts and
-// ends at the same postures.
+// Each transition's joint-space path is checked against the body at three points; one that would
+// take the hand into the body is bent through a via posture: the Cartesian midpoint of the
+// transition solved by IK with the hand pushed out of the body (as perform_plan does for every
+// frame; stored in the cache, so once per pair of signs). Should the bent path still enter the body,
+// the piece fades in its middle to the Cartesian path solved by IK every frame.
 #include <span>
 
 #include "gestura/anim/clip.hpp"
@@ -26,8 +27,9 @@ struct CachedSignSpan {
 
 struct UtteranceStats {
   int frames = 0;
-  int transitions = 0;        // joint-space pieces with the hand signing at either end
-  int escaped = 0;            // of those, the ones whose path went into the body and were re-solved
+  int transitions = 0;        // joint-space moves with the hand signing at either end
+  int via = 0;                // of those, the ones bent through a via posture to stay out of the body
+  int escaped = 0;            // of those, the ones that still needed IK every frame
 };
 
 // Contract: `plan` was built so that each span's hand timeline, over [start, end], is the cached
