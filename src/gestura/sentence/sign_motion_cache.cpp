@@ -17,6 +17,9 @@ namespace {
 // between, and the segment ends, where the hand is at a key posture, move slowly (minimum jerk).
 constexpr float kCitationRate = 60.0f;
 
+// A cached performance whose palms stay this close to the plan is not tried from another start.
+constexpr float kPlanTolerance = 0.01f;
+
 int side_of(Hand hand) { return hand == Hand::Right ? 0 : 1; }
 
 // The plan of a timeline from `start` on, shifted so that `start` becomes time 0.
@@ -142,9 +145,9 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
   }
   // Computed outside the lock: two threads may both compute a new sign; the first stored wins.
-  // The solver's result depends on where it starts from. The sign is performed twice — started at
-  // its first posture from the relaxed signing posture, and with its approach from rest — and the
-  // performance whose palms stay closer to the plan is kept.
+  // The solver's result depends on where it starts from. The sign is performed started at its
+  // first posture from the relaxed signing posture; if a palm strays more than 1 cm from the plan,
+  // it is performed again with its approach from rest, and the closer of the two is kept.
   const sign::HamSign parsed = sign::parse_hamnosys_unicode(notation);
   std::unique_ptr<CitationMotion> motion;
   float best = 0.0f;
@@ -157,6 +160,7 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     auto candidate = perform_citation(plan_sign(parsed, *rig_, options));
     const float error = plan_error(*candidate);
     if (!motion || error < best) motion = std::move(candidate), best = error;
+    if (best <= kPlanTolerance) break;
   }
   std::lock_guard lock(mutex_);
   return *signs_.emplace(key, std::move(motion)).first->second;
