@@ -61,8 +61,8 @@ float max_skull_yaw_degrees(const SentencePerformance& p) {
 }
 
 TEST(SaySentence, FiveSignSentenceTakesAsLongAsFluentSigning) {
-  // Reference: running ASL at ~2–2.5 signs/s (Bellugi & Fischer 1972, from memory) → 5 signs in
-  // 2.0–2.5 s; we accept ±20 %: 1.6–3.0 s from the first sign's posture to the last sign's end.
+  // Reference: 2.0 signs/s (docs/say.md) → 5 signs in 2.5 s; ±20 % with slack for the phrase-final
+  // sign: 1.6–3.0 s from the first sign's posture to the last sign's end.
   const SentencePerformance p = say("Yesterday my mother went to the store.");
   const auto g = signed_glosses(p);
   ASSERT_EQ(g.size(), 5u);

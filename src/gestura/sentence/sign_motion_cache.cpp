@@ -145,13 +145,15 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
   }
   // Computed outside the lock: two threads may both compute a new sign; the first stored wins.
-  // The solver's result depends on where it starts from. The sign is performed started at its
-  // first posture from the relaxed signing posture; if a palm strays more than 1 cm from the plan,
-  // it is performed again with its approach from rest, and the closer of the two is kept.
+  // The solver's result depends on where it starts from. The sign is performed with its approach
+  // from rest (the arm arrives continuously, elbow low, as in running signing); if a palm strays
+  // more than 1 cm from the plan, it is performed again started at its first posture from the
+  // relaxed signing posture, which is kept only if it is closer to the plan by more than 1 cm (it
+  // may raise the elbow where the continuous solution keeps it down).
   const sign::HamSign parsed = sign::parse_hamnosys_unicode(notation);
   std::unique_ptr<CitationMotion> motion;
   float best = 0.0f;
-  for (bool from_rest : {false, true}) {
+  for (bool from_rest : {true, false}) {
     PlanOptions options;
     options.from_rest = from_rest;
     options.to_rest = false;
@@ -159,7 +161,7 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     options.final_hold = 0.0f;
     auto candidate = perform_citation(plan_sign(parsed, *rig_, options));
     const float error = plan_error(*candidate);
-    if (!motion || error < best) motion = std::move(candidate), best = error;
+    if (!motion || error < best - kPlanTolerance) motion = std::move(candidate), best = error;
     if (best <= kPlanTolerance) break;
   }
   std::lock_guard lock(mutex_);
