@@ -8,6 +8,7 @@
 
 #include "gestura/lexicon/lexicon_files.hpp"
 #include "gestura/sentence/signer.hpp"
+#include "gestura/sign/sign_performer.hpp"
 #include "gestura/text/lexicon_inventory.hpp"
 #include "gestura/text/translator.hpp"
 
@@ -61,6 +62,15 @@ void BM_SaySentenceCold(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_SaySentenceCold)->Arg(1)->Arg(0)->ArgNames({"mouthing"})->Unit(benchmark::kMillisecond);
+
+// The former motion step for comparison: the same utterance plan performed with IK every frame
+// (sign_performer's perform_plan), instead of stitching cached motion.
+void BM_SayPlanWithIkEveryFrame(benchmark::State& state) {
+  const gestura::SentencePerformance p = world().signer->say(kSentence);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(gestura::perform_plan(p.plan, world().signer->rig(), {}).rotations.data());
+}
+BENCHMARK(BM_SayPlanWithIkEveryFrame)->Unit(benchmark::kMillisecond);
 
 // The translation step alone, with a fresh (uncached) inventory each time like say() uses.
 void BM_SayTranslate(benchmark::State& state) {
