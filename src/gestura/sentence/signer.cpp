@@ -35,6 +35,19 @@ class UtteranceBuilder {
  public:
   UtteranceBuilder(const SigningRig& rig, float speed) : rig_(rig), speed_(speed) {
     for (int h = 0; h < 2; ++h) state_[h] = rest_hand_state(rig, hand_of(h));
+    // Where a hand that has signed waits while the other signs alone: low in front, as in the rig's
+    // relaxed signing posture (a signer does not drop it to the hip between signs).
+    std::vector<mat4> model(rig.skeleton().size());
+    local_to_model(rig.skeleton(), rig.neutral, model);
+    for (int h = 0; h < 2; ++h) {
+      const HandRig& hand = rig.hand(hand_of(h));
+      const mat4& wrist = model[static_cast<std::size_t>(hand.wrist)];
+      idle_[h] = rest_hand_state(rig, hand_of(h));
+      idle_[h].position = vec3(wrist * vec4(hand.palm_centre_local, 1.0f));
+      idle_[h].orientation = glm::normalize(glm::quat_cast(mat3(wrist)) * glm::inverse(hand.rest_wrist_rotation) *
+                                            hand.rest_frame.rotation);
+      idle_[h].active = true;
+    }
     const int shoulder = rig.hand(Hand::Right).shoulder;
     spelling_origin_ = vec3(rig.bind_model[static_cast<std::size_t>(shoulder)][3]) + kSpellingOffset;
   }
@@ -53,8 +66,9 @@ class UtteranceBuilder {
       const HandTimeline& t = *timeline[h];
       first[h] = t.segments.empty() ? rest_hand_state(rig_, hand_of(h)) : sample_hand(t, 0.0f);
     }
-    // The hands the sign uses set the transition time; a hand it does not use drifts to rest over
-    // as long as it needs (up to the whole sign) instead of snapping there.
+    // The hands the sign uses set the transition time; a hand it does not use drifts to rest — or,
+    // once it has signed, to its idle place low in front — over as long as it needs (up to the
+    // whole sign) instead of snapping there.
     const float t0 = now_;
     float d = 0.0f;
     for (int h = 0; h < 2; ++h)
@@ -76,8 +90,11 @@ class UtteranceBuilder {
       spans_.push_back({hand_of(h), start, moving, end, timing.tempo, &motion});
     }
     for (int h = 0; h < 2; ++h) {
-      if (first[h].active) continue;
-      const HandState rest = rest_hand_state(rig_, hand_of(h));
+      if (first[h].active) {
+        signed_[h] = true;
+        continue;
+      }
+      const HandState rest = signed_[h] ? idle_[h] : rest_hand_state(rig_, hand_of(h));
       const float arrival = std::min(std::max(start, t0 + move_time(state_[h], rest)), end);
       push(h, state_[h], rest, t0, arrival);
       state_[h] = rest;
@@ -168,6 +185,8 @@ class UtteranceBuilder {
   std::array<HandState, 2> state_;
   std::array<HandTimeline, 2> out_;
   std::vector<CachedSignSpan> spans_;
+  std::array<HandState, 2> idle_;
+  std::array<bool, 2> signed_{false, false};  // the hand has signed in this utterance
 };
 
 std::string letters_only(std::string_view text) {
