@@ -35,7 +35,7 @@ using HandJointPosture = std::vector<quat>;
 // and performed once.
 struct CitationMotion {
   SignPlan plan;          // sign_start = 0; sign_end = seconds of movement
-  float rate = 60.0f;     // samples per second of citation time
+  float rate = 40.0f;     // samples per second of citation time
   float first_posture = 0.0f;  // sample time of the first posture (the approach from rest comes before)
   int frames = 0;             // at least 2
   std::array<std::vector<quat>, 2> samples;  // per hand [0] right, [1] left: frames × joints, frame-major
