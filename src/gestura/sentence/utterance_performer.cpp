@@ -29,7 +29,6 @@ struct Piece {
   int vias = 0;                          // Blend: bent through 0, 1 or 3 via postures, evenly spaced
   std::size_t v = 0;                     // offset of the first via posture in HandMotion::keys
   bool escape = false;                   // Blend: fade to the IK-solved Cartesian path in the middle
-  const HandSegment* segment = nullptr;  // Solved and escape: the plan's segment
 };
 
 struct HandMotion {
@@ -48,10 +47,10 @@ class HandPerformer {
 
   HandMotion build(UtteranceStats& stats) {
     HandMotion m;
-    std::size_t k = 0;  // the first span that has not ended before the segment
+    std::size_t k = 0;  // the span that may contain the segment (spans are in time order)
     std::size_t emitted = 0;
     for (const HandSegment& seg : timeline_.segments) {
-      while (k < spans_.size() && spans_[k]->end <= seg.start + kTimeEpsilon && seg.end > spans_[k]->end + kTimeEpsilon) ++k;
+      while (k < spans_.size() && seg.end > spans_[k]->end + kTimeEpsilon) ++k;
       if (k < spans_.size() && seg.start >= spans_[k]->start - kTimeEpsilon && seg.end <= spans_[k]->end + kTimeEpsilon) {
         if (emitted <= k) {
           Piece p;
@@ -65,7 +64,6 @@ class HandPerformer {
       }
       Piece p;
       p.t0 = seg.start, p.t1 = seg.end;
-      p.segment = &seg;
       if (!seg.paths.empty() || seg.oscillation != Oscillation::None) {
         p.kind = Piece::Kind::Solved;  // a path outside the cached signs: solved frame by frame
         m.pieces.push_back(p);
@@ -84,17 +82,18 @@ class HandPerformer {
           // pushed out of the body (stored, so once per pair of signs): the midpoint, else three
           // points; if that is still not enough, solve every frame.
           ++stats.via;
+          bool inside = true;
           for (int vias : {1, 3}) {
             p.vias = vias;
             p.v = m.keys.size();
-            for (int k = 1; k <= vias; ++k) {
-              const float t = seg.start + (seg.end - seg.start) * static_cast<float>(k) / static_cast<float>(vias + 1);
+            for (int i = 1; i <= vias; ++i) {
+              const float t = seg.start + (seg.end - seg.start) * static_cast<float>(i) / static_cast<float>(vias + 1);
               const HandJointPosture& q = cache_.posture(hand_, sample_hand(timeline_, t));
               m.keys.insert(m.keys.end(), q.begin(), q.end());
             }
-            if (!enters_body(m, p)) break;
+            if (!(inside = enters_body(m, p))) break;
           }
-          p.escape = enters_body(m, p);
+          p.escape = inside;
           stats.escaped += p.escape ? 1 : 0;
         }
       }
