@@ -283,6 +283,42 @@ TEST(SayMotion, CachedMotionReachesTheTargetsAtLeastAsWellAsIkEveryFrame) {
   RecordProperty("cached_not_worse_than_per_frame_by_1cm", not_worse);
 }
 
+// Deepest any hand point goes inside the signing rig's collision body over a clip (metres, ≤ 0 outside).
+float deepest_penetration(const Clip& clip, float duration) {
+  const Avatar& a = world().avatar;
+  const SigningRig& rig = world().signer->rig();
+  const RenderSubject subject{a.skeleton, a.mesh, clip};
+  Animator animator(subject);
+  std::vector<vec3> points;
+  float deepest = -1.0f;
+  for (float t = 0.0f; t <= duration; t += 1.0f / 30.0f) {
+    animator.pose_at(t);
+    for (const HandRig& h : rig.hands) {
+      hand_surface_points(rig, h.hand, animator.model(), points);
+      for (const vec3& x : points) deepest = std::max(deepest, -body_signed_distance(rig, animator.model(), x));
+    }
+  }
+  return deepest;
+}
+
+TEST(SayMotion, HandsStayOutOfTheBodyAsWellAsWithIkEveryFrame) {
+  // Joint-space transitions are checked against the body and bent around it (utterance_performer.hpp);
+  // over whole sentences the hands may not go deeper into the body than with IK every frame, which
+  // pushes the hand out at every frame, plus 5 mm.
+  for (const char* text : {"Where do you live?", "Do you want to eat pizza?", "The dog and the cat sleep in the house.",
+                           "My brother bought a new car."}) {
+    const SentencePerformance p = say(text);
+    const Clip reference = perform_plan(p.plan, world().signer->rig(), PerformOptions{30.0f});
+    // Only the arms and hands: the head's non-manual motion is not part of either arm motion.
+    Clip arms = p.clip;
+    for (std::size_t j = 0; j < arms.rotations.size(); ++j)
+      if (!reference.rotations[j].size()) arms.rotations[j] = {};
+    const float cached = deepest_penetration(arms, p.duration);
+    const float per_frame = deepest_penetration(reference, p.duration);
+    EXPECT_LE(cached, std::max(per_frame, 0.0f) + 0.005f) << text << " (per-frame IK " << per_frame << " m)";
+  }
+}
+
 void expect_error(std::string_view text, const SayOptions& options, const std::string& needle) {
   try {
     say(text, options);

@@ -61,6 +61,10 @@ class SignMotionCache {
   const HandJointPosture& posture(Hand hand, const HandState& state);
   // The same, solved now and not stored (for states that occur once, like points on a path).
   HandJointPosture solve(Hand hand, const HandState& state) const;
+  // The same, solved from `seed` (joint rotations in joints(hand) order) by damped least squares
+  // alone, with the hand pushed out of the body as perform_plan does every frame: for points near
+  // a known posture, where starting from the relaxed posture could end in another arm configuration.
+  HandJointPosture solve_from(Hand hand, const HandState& state, std::span<const quat> seed) const;
 
   const SigningRig& rig() const { return *rig_; }
   const std::vector<int>& joints(Hand hand) const { return joints_[hand == Hand::Right ? 0 : 1]; }

@@ -17,6 +17,8 @@ constexpr float kPenetrationTolerance = 0.004f;
 // Transitions whose ends keep the palm centre farther than this from the body are not checked: the
 // hand (palm centre to fingertip ≤ ~12 cm) cannot reach it between two such postures.
 constexpr float kNearBody = 0.15f;
+// Fraction of a re-solved transition over which it fades from and back to the joint-space path.
+constexpr float kEscapeFade = 0.15f;
 
 // What one hand does over one interval of the utterance.
 struct Piece {
@@ -26,7 +28,7 @@ struct Piece {
   const CachedSignSpan* sign = nullptr;  // Cached
   std::size_t a = 0, b = 0;              // Blend: offsets of the end postures in HandMotion::keys
   bool linear = false;                   // Blend: constant speed (the plan's linear_blend)
-  int vias = 0;                          // Blend: bent through 0, 1 or 3 via postures, evenly spaced
+  int vias = 0;                          // Blend: bent through 0, 1, 3 or 7 via postures, evenly spaced
   std::size_t v = 0;                     // offset of the first via posture in HandMotion::keys
   bool escape = false;                   // Blend: fade to the IK-solved Cartesian path in the middle
 };
@@ -77,21 +79,25 @@ class HandPerformer {
                                      m.keys.begin() + static_cast<std::ptrdiff_t>(p.b));
       if ((seg.from.active || seg.to.active) && moves) {
         ++stats.transitions;
-        if (near_body(seg) && enters_body(m, p)) {
+        if (near_body(seg) && enters_body(m, p, seg)) {
           // Bend the path through points of the Cartesian transition solved by IK with the hand
-          // pushed out of the body (stored, so once per pair of signs): the midpoint, else three
-          // points; if that is still not enough, solve every frame.
+          // pushed out of the body (stored, so once per pair of signs): the midpoint, else three,
+          // else seven points; if that is still not enough, solve every frame.
           ++stats.via;
           bool inside = true;
           for (int vias : {1, 3}) {
             p.vias = vias;
             p.v = m.keys.size();
+            Piece straight = p;
+            straight.vias = 0;
             for (int i = 1; i <= vias; ++i) {
-              const float t = seg.start + (seg.end - seg.start) * static_cast<float>(i) / static_cast<float>(vias + 1);
-              const HandJointPosture& q = cache_.posture(hand_, sample_hand(timeline_, t));
+              const float u = static_cast<float>(i) / static_cast<float>(vias + 1);
+              blend(m, straight, u, scratch_posture_);
+              const HandJointPosture q =
+                  cache_.solve_from(hand_, sample_hand(timeline_, seg.start + (seg.end - seg.start) * u), scratch_posture_);
               m.keys.insert(m.keys.end(), q.begin(), q.end());
             }
-            if (!(inside = enters_body(m, p))) break;
+            if (!(inside = enters_body(m, p, seg))) break;
           }
           p.escape = inside;
           stats.escaped += p.escape ? 1 : 0;
@@ -119,10 +125,12 @@ class HandPerformer {
     blend(m, p, u, out);
     if (!p.escape) return;
     // Fade from the joint-space path to the Cartesian one solved with the hand kept out of the
-    // body, and back: the weight is 0 at both ends, so the piece still starts and ends exactly
-    // at its postures.
-    const HandJointPosture q = cache_.solve(hand_, sample_hand(timeline_, t));
-    const float w = std::sin(kPi * u);
+    // body, and back, each over the first and last 15 % of the piece (a hand leaving a sign made
+    // on the face must follow the pushed-out path almost at once): the weight is 0 with zero slope
+    // at both ends, so the piece still starts and ends exactly at its postures.
+    const HandJointPosture q = cache_.solve_from(hand_, sample_hand(timeline_, t), out);
+    auto ease = [](float x) { return x * x * (3.0f - 2.0f * x); };
+    const float w = ease(std::min(1.0f, u / kEscapeFade)) * ease(std::min(1.0f, (1.0f - u) / kEscapeFade));
     for (std::size_t j = 0; j < n_; ++j) out[j] = nlerp(out[j], q[j], w);
   }
 
@@ -182,12 +190,20 @@ class HandPerformer {
   }
 
   // Whether the joint-space path of a piece takes a hand point deeper into the body than its ends
-  // are (a sign touching the body may end a few millimetres in), checked at u = ¼, ½, ¾.
-  bool enters_body(const HandMotion& m, const Piece& p) const {
+  // are (a sign touching the body may end a few millimetres in), checked at u = ¼, ½, ¾ (and
+  // halfway between the via postures once bent). An end at rest does not count, nor the half next to it: the hanging hand lies inside
+  // the coarse torso capsule, which the real body does not fill there.
+  bool enters_body(const HandMotion& m, const Piece& p, const HandSegment& seg) const {
     float allowed = kPenetrationTolerance;
-    for (float u : {0.0f, 1.0f}) allowed = std::max(allowed, penetration(m, p, u) + kPenetrationTolerance);
-    for (float u : {0.25f, 0.5f, 0.75f})
+    if (seg.from.active) allowed = std::max(allowed, penetration(m, p, 0.0f) + kPenetrationTolerance);
+    if (seg.to.active) allowed = std::max(allowed, penetration(m, p, 1.0f) + kPenetrationTolerance);
+    // A bent path is checked between its via postures too.
+    const int steps = p.vias == 0 ? 4 : 2 * (p.vias + 1);
+    for (int i = 1; i < steps; ++i) {
+      const float u = static_cast<float>(i) / static_cast<float>(steps);
+      if ((u < 0.5f && !seg.from.active) || (u > 0.5f && !seg.to.active)) continue;
       if (penetration(m, p, u) > allowed) return true;
+    }
     return false;
   }
 

@@ -3,11 +3,12 @@
 // cached citation motion time-scaled (sign_motion_cache.hpp), everything between them — transitions
 // (movement epenthesis), holds, fingerspelled letters, the drift of an unused hand to rest — is a
 // minimum-jerk interpolation in joint space between postures at the ends of the plan's segments.
-// Each transition's joint-space path is checked against the body at three points; one that would
-// take the hand into the body is bent through a via posture: the Cartesian midpoint of the
-// transition solved by IK with the hand pushed out of the body (as perform_plan does for every
-// frame; stored in the cache, so once per pair of signs). Should the bent path still enter the body,
-// the piece fades in its middle to the Cartesian path solved by IK every frame.
+// Each transition's joint-space path is checked against the body (points along it, when either
+// end is near the body); one that would take the hand deeper into the body than its ends is bent
+// through via postures: points of the Cartesian transition solved by IK from the straight path's
+// posture there, with the hand pushed out of the body (as perform_plan does for every frame) — the
+// midpoint, else three points. Should the bent path still enter the body, the piece fades in its
+// middle to the Cartesian path solved by IK every frame (from the joint-space posture).
 #include <span>
 
 #include "gestura/anim/clip.hpp"
