@@ -48,6 +48,20 @@ void BM_SaySentence(benchmark::State& state) {
 }
 BENCHMARK(BM_SaySentence)->Arg(1)->Arg(0)->ArgNames({"mouthing"})->Unit(benchmark::kMillisecond);
 
+// A sentence two of whose transitions would pass through the head (SLEEP at the face): they are bent
+// through via postures and re-solved by IK in their middle, every call.
+void BM_SayBentTransitions(benchmark::State& state) {
+  gestura::SentencePerformance p;
+  for (auto _ : state) {
+    p = world().signer->say("The dog and the cat sleep in the house.");
+    benchmark::DoNotOptimize(p.clip.rotations.data());
+  }
+  state.counters["transitions"] = p.motion.transitions;
+  state.counters["bent"] = p.motion.via;
+  state.counters["ik_every_frame"] = p.motion.escaped;
+}
+BENCHMARK(BM_SayBentTransitions)->Unit(benchmark::kMillisecond);
+
 // The first call on a new signer (building the signer itself is not timed).
 void BM_SaySentenceCold(benchmark::State& state) {
   gestura::SayOptions options;
