@@ -108,7 +108,8 @@ class HandPerformer {
     return m;
   }
 
-  // The hand's joint rotations at time t; `cursor` walks the pieces forward as t grows.
+  // The hand's joint rotations at time t; `cursor` walks the pieces forward as t grows. Contract:
+  // `out` holds the posture of the previous frame (or the rest posture before the first).
   void evaluate(const HandMotion& m, float t, std::size_t& cursor, std::span<quat> out) const {
     while (cursor + 1 < m.pieces.size() && t > m.pieces[cursor].t1) ++cursor;
     const Piece& p = m.pieces[cursor];
@@ -116,7 +117,8 @@ class HandPerformer {
     switch (p.kind) {
       case Piece::Kind::Cached: p.sign->motion->sample(hand_, citation_time(*p.sign, t), out); return;
       case Piece::Kind::Solved: {
-        const HandJointPosture q = cache_.solve(hand_, sample_hand(timeline_, t));
+        // `out` still holds the previous frame's posture: the solver continues from it.
+        const HandJointPosture q = cache_.solve_from(hand_, sample_hand(timeline_, t), out);
         std::copy(q.begin(), q.end(), out.begin());
         return;
       }
@@ -259,11 +261,10 @@ Clip perform_utterance(const SignPlan& plan, std::span<const CachedSignSpan> sig
       tr.values.resize(static_cast<std::size_t>(frames));
       tracks.push_back(&tr);
     }
-    std::vector<quat> posture(joints.size());
+    const HandJointPosture& rest = cache.posture(hand, rest_hand_state(rig, hand));
+    std::vector<quat> posture(rest.begin(), rest.end());
     if (timeline.segments.empty()) {
       // A hand the utterance never uses rests throughout.
-      const HandJointPosture& rest = cache.posture(hand, rest_hand_state(rig, hand));
-      std::copy(rest.begin(), rest.end(), posture.begin());
       for (int f = 0; f < frames; ++f)
         for (std::size_t j = 0; j < joints.size(); ++j) {
           tracks[j]->times[static_cast<std::size_t>(f)] = static_cast<float>(f) / fps;
