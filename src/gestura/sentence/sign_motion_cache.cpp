@@ -21,6 +21,8 @@ constexpr float kCitationRate = 40.0f;
 
 // A cached performance whose palms stay this close to the plan is not tried from another start.
 constexpr float kPlanTolerance = 0.01f;
+// Seconds of the approach from the relaxed posture a sign is performed with before its first posture.
+constexpr float kApproachSeconds = 0.4f;
 
 int side_of(Hand hand) { return hand == Hand::Right ? 0 : 1; }
 
@@ -65,6 +67,19 @@ std::vector<int> hand_motion_joints(const SigningRig& rig, Hand hand) {
   return joints;
 }
 
+HandState relaxed_hand_state(const SigningRig& rig, Hand hand) {
+  std::vector<mat4> model(rig.skeleton().size());
+  local_to_model(rig.skeleton(), rig.neutral, model);
+  const HandRig& h = rig.hand(hand);
+  const mat4& wrist = model[static_cast<std::size_t>(h.wrist)];
+  HandState s = rest_hand_state(rig, hand);
+  s.position = vec3(wrist * vec4(h.palm_centre_local, 1.0f));
+  // The hand frame turns with the wrist from its bind-pose relation.
+  s.orientation = glm::normalize(glm::quat_cast(mat3(wrist)) * glm::inverse(h.rest_wrist_rotation) * h.rest_frame.rotation);
+  s.active = true;
+  return s;
+}
+
 void CitationMotion::sample(Hand hand, float t, std::span<quat> out) const {
   const int side = side_of(hand);
   const std::size_t n = joints[static_cast<std::size_t>(side)];
@@ -81,6 +96,26 @@ void CitationMotion::sample(Hand hand, float t, std::span<quat> out) const {
 SignMotionCache::SignMotionCache(const SigningRig& rig) : rig_(&rig) {
   joints_[0] = hand_motion_joints(rig, Hand::Right);
   joints_[1] = hand_motion_joints(rig, Hand::Left);
+}
+
+SignPlan SignMotionCache::approached_from_relaxed(const SignPlan& plan) const {
+  // Each hand the sign uses first moves from its relaxed posture to the sign's first posture
+  // (replacing the planner's instant entry from rest).
+  SignPlan out = plan;
+  for (int side = 0; side < 2; ++side) {
+    HandTimeline& timeline = side == 0 ? out.right : out.left;
+    shift_to_start(timeline, plan.sign_start);
+    if (timeline.segments.empty()) continue;
+    for (HandSegment& seg : timeline.segments) seg.start += kApproachSeconds, seg.end += kApproachSeconds;
+    HandSegment approach;
+    approach.end = kApproachSeconds;
+    approach.to = timeline.segments.front().from;
+    approach.from = approach.to.active ? relaxed_hand_state(*rig_, side == 0 ? Hand::Right : Hand::Left) : approach.to;
+    timeline.segments.insert(timeline.segments.begin(), approach);
+  }
+  out.sign_start = kApproachSeconds;
+  out.sign_end = plan.sign_end - plan.sign_start + kApproachSeconds;
+  return out;
 }
 
 std::unique_ptr<CitationMotion> SignMotionCache::perform_citation(SignPlan plan) const {
@@ -147,24 +182,29 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
   }
   // Computed outside the lock: two threads may both compute a new sign; the first stored wins.
-  // The solver's result depends on where it starts from. The sign is performed with its approach
-  // from rest (the arm arrives continuously, elbow low, as in running signing); if a palm strays
-  // more than 1 cm from the plan, it is performed again started at its first posture from the
-  // relaxed signing posture, which is kept only if it is closer to the plan by more than 1 cm (it
-  // may raise the elbow where the continuous solution keeps it down).
+  // The solver's result depends on where it starts from. The sign is performed approached from the
+  // relaxed signing posture in front (as in running signing, where the hands arrive from the
+  // signing space — starting at the first posture itself, the solver may end in another arm
+  // configuration, e.g. the hand behind the head for SLEEP); if a palm strays more than 1 cm from
+  // the plan, it is performed again started cold at its first posture, which is kept only if it is
+  // closer to the plan by more than 1 cm.
   const sign::HamSign parsed = sign::parse_hamnosys_unicode(notation);
-  std::unique_ptr<CitationMotion> motion;
-  float best = 0.0f;
-  for (bool from_rest : {true, false}) {
-    PlanOptions options;
-    options.from_rest = from_rest;
-    options.to_rest = false;
-    options.initial_hold = 0.0f;
-    options.final_hold = 0.0f;
-    auto candidate = perform_citation(plan_sign(parsed, *rig_, options));
-    const float error = plan_error(*candidate);
-    if (!motion || error < best - kPlanTolerance) motion = std::move(candidate), best = error;
-    if (best <= kPlanTolerance) break;
+  PlanOptions options;
+  options.from_rest = false;
+  options.to_rest = false;
+  options.initial_hold = 0.0f;
+  options.final_hold = 0.0f;
+  const SignPlan plan = plan_sign(parsed, *rig_, options);
+  std::unique_ptr<CitationMotion> motion = perform_citation(approached_from_relaxed(plan));
+  const float error = plan_error(*motion);
+  if (error > kPlanTolerance) {
+    SignPlan at_first_posture = plan;  // without the planner's instant entry from rest
+    shift_to_start(at_first_posture.right, plan.sign_start);
+    shift_to_start(at_first_posture.left, plan.sign_start);
+    at_first_posture.sign_end -= plan.sign_start;
+    at_first_posture.sign_start = 0.0f;
+    auto cold = perform_citation(std::move(at_first_posture));
+    if (plan_error(*cold) < error - kPlanTolerance) motion = std::move(cold);
   }
   std::lock_guard lock(mutex_);
   return *signs_.emplace(key, std::move(motion)).first->second;

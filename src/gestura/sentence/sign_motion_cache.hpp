@@ -28,6 +28,10 @@ namespace gestura {
 // wrist), then thumb1..3, index1..3, … pinky1..3.
 std::vector<int> hand_motion_joints(const SigningRig& rig, Hand hand);
 
+// The hand as it is in the rig's relaxed signing posture (rig.neutral: low, in front), active: where
+// a hand waits between signs and where a sign's cached performance is approached from.
+HandState relaxed_hand_state(const SigningRig& rig, Hand hand);
+
 // One hand's joint rotations, in hand_motion_joints order.
 using HandJointPosture = std::vector<quat>;
 
@@ -71,6 +75,7 @@ class SignMotionCache {
   std::size_t signs_stored() const;
 
  private:
+  SignPlan approached_from_relaxed(const SignPlan& plan) const;
   std::unique_ptr<CitationMotion> perform_citation(SignPlan plan) const;
   float plan_error(const CitationMotion& motion) const;
 

@@ -37,19 +37,7 @@ class UtteranceBuilder {
     for (int h = 0; h < 2; ++h) state_[h] = rest_hand_state(rig, hand_of(h));
     // Where a hand that has signed waits while the other signs alone: low in front, as in the rig's
     // relaxed signing posture (a signer does not drop it to the hip between signs).
-    std::vector<mat4> model(rig.skeleton().size());
-    local_to_model(rig.skeleton(), rig.neutral, model);
-    for (int h = 0; h < 2; ++h) {
-      const HandRig& hand = rig.hand(hand_of(h));
-      const mat4& wrist = model[static_cast<std::size_t>(hand.wrist)];
-      idle_[h] = rest_hand_state(rig, hand_of(h));
-      idle_[h].position = vec3(wrist * vec4(hand.palm_centre_local, 1.0f));
-      idle_[h].orientation = glm::normalize(glm::quat_cast(mat3(wrist)) * glm::inverse(hand.rest_wrist_rotation) *
-                                            hand.rest_frame.rotation);
-      idle_[h].active = true;
-    }
-    const int shoulder = rig.hand(Hand::Right).shoulder;
-    spelling_origin_ = vec3(rig.bind_model[static_cast<std::size_t>(shoulder)][3]) + kSpellingOffset;
+    for (int h = 0; h < 2; ++h) idle_[h] = relaxed_hand_state(rig, hand_of(h));
   }
 
   float now() const { return now_; }

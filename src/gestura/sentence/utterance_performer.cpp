@@ -44,8 +44,9 @@ float citation_time(const CachedSignSpan& s, float t) {
 
 class HandPerformer {
  public:
-  HandPerformer(Hand hand, const HandTimeline& timeline, std::vector<const CachedSignSpan*> spans, SignMotionCache& cache)
-      : hand_(hand), timeline_(timeline), spans_(std::move(spans)), cache_(cache), n_(cache.joints(hand).size()) {}
+  HandPerformer(Hand hand, const HandTimeline& timeline, std::vector<const CachedSignSpan*> spans, SignMotionCache& cache,
+                float fps)
+      : hand_(hand), timeline_(timeline), spans_(std::move(spans)), cache_(cache), n_(cache.joints(hand).size()), fps_(fps) {}
 
   HandMotion build(UtteranceStats& stats) {
     HandMotion m;
@@ -192,18 +193,17 @@ class HandPerformer {
   }
 
   // Whether the joint-space path of a piece takes a hand point deeper into the body than its ends
-  // are (a sign touching the body may end a few millimetres in), checked at u = ¼, ½, ¾ (and
-  // halfway between the via postures once bent). An end at rest does not count, nor the half next to it: the hanging hand lies inside
-  // the coarse torso capsule, which the real body does not fill there.
+  // are (a sign touching the body may end a few millimetres in), checked at every output frame. An
+  // end at rest does not count, nor the half next to it: the hanging hand lies inside the coarse
+  // torso capsule, which the real body does not fill there.
   bool enters_body(const HandMotion& m, const Piece& p, const HandSegment& seg) const {
     float allowed = kPenetrationTolerance;
     if (seg.from.active) allowed = std::max(allowed, penetration(m, p, 0.0f) + kPenetrationTolerance);
     if (seg.to.active) allowed = std::max(allowed, penetration(m, p, 1.0f) + kPenetrationTolerance);
-    // A bent path is checked between its via postures too.
-    const int steps = p.vias == 0 ? 4 : 2 * (p.vias + 1);
-    for (int i = 1; i < steps; ++i) {
-      const float u = static_cast<float>(i) / static_cast<float>(steps);
-      if ((u < 0.5f && !seg.from.active) || (u > 0.5f && !seg.to.active)) continue;
+    // At the frames that will be shown (a hand sweeping past the chin crosses it in two frames).
+    for (float t = std::ceil(p.t0 * fps_) / fps_; t < p.t1; t += 1.0f / fps_) {
+      const float u = (t - p.t0) / (p.t1 - p.t0);
+      if (u <= 0.0f || (u < 0.5f && !seg.from.active) || (u > 0.5f && !seg.to.active)) continue;
       if (penetration(m, p, u) > allowed) return true;
     }
     return false;
@@ -227,6 +227,7 @@ class HandPerformer {
   std::vector<const CachedSignSpan*> spans_;
   SignMotionCache& cache_;
   std::size_t n_;
+  float fps_;
   // Scratch for the body checks (the rest of the body stays in the signing rig's neutral pose).
   mutable Pose scratch_pose_ = cache_.rig().neutral;
   mutable std::vector<mat4> scratch_model_ = std::vector<mat4>(cache_.rig().skeleton().size());
@@ -275,7 +276,7 @@ Clip perform_utterance(const SignPlan& plan, std::span<const CachedSignSpan> sig
     std::vector<const CachedSignSpan*> spans;
     for (const CachedSignSpan& sign : signs)
       if (sign.hand == hand) spans.push_back(&sign);
-    HandPerformer performer(hand, timeline, std::move(spans), cache);
+    HandPerformer performer(hand, timeline, std::move(spans), cache, fps);
     const HandMotion motion = performer.build(st);
     std::size_t cursor = 0;
     for (int f = 0; f < frames; ++f) {
