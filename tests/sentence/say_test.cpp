@@ -132,6 +132,20 @@ TEST(SaySentence, UnknownWordIsFingerspelledLetterByLetter) {
   EXPECT_EQ(g[0]->gloss, "FS-ZYXQ");
   EXPECT_GT(g[0]->end - g[0]->start, 4 * 0.15f);  // four letters at a careful ~4 letters/s
   EXPECT_GT(channel_max(p.clip, face::kGazeHands, g[0]->start, g[0]->end), 0.5f);
+  // The spelling hand is in front of the body, between the hips and the head, 30 cm out.
+  const Avatar& a = world().avatar;
+  const RenderSubject subject{a.skeleton, a.mesh, p.clip};
+  Animator animator(subject);
+  const auto wrist = static_cast<std::size_t>(a.skeleton.find("r_wrist"));
+  const auto hip = static_cast<std::size_t>(a.skeleton.find("r_hip"));
+  const auto skull = static_cast<std::size_t>(a.skeleton.find("skullbase"));
+  for (float t = g[0]->start; t <= g[0]->end; t += 0.1f) {
+    animator.pose_at(t);
+    const vec3 w = animator.model()[wrist][3];
+    EXPECT_GT(w.y, animator.model()[hip][3].y + 0.1f) << t;
+    EXPECT_LT(w.y, animator.model()[skull][3].y) << t;
+    EXPECT_GT(w.z, 0.15f) << t;
+  }
 }
 
 TEST(SaySentence, NumbersOutsideTheLexiconAreComposed) {

@@ -38,6 +38,8 @@ class UtteranceBuilder {
     // Where a hand that has signed waits while the other signs alone: low in front, as in the rig's
     // relaxed signing posture (a signer does not drop it to the hip between signs).
     for (int h = 0; h < 2; ++h) idle_[h] = relaxed_hand_state(rig, hand_of(h));
+    const int shoulder = rig.hand(Hand::Right).shoulder;
+    spelling_origin_ = vec3(rig.bind_model[static_cast<std::size_t>(shoulder)][3]) + kSpellingOffset;
   }
 
   float now() const { return now_; }
