@@ -273,6 +273,17 @@ HandJointPosture SignMotionCache::solve_from(Hand hand, const HandState& state, 
   return out;
 }
 
+const HandJointPosture& SignMotionCache::posture_from(Hand hand, const HandState& state, std::span<const quat> seed) {
+  const std::string key = "seeded " + posture_key(hand, state);
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = postures_.find(key); it != postures_.end()) return *it->second;
+  }
+  auto solved = std::make_unique<HandJointPosture>(solve_from(hand, state, seed));
+  std::lock_guard lock(mutex_);
+  return *postures_.emplace(key, std::move(solved)).first->second;
+}
+
 const HandJointPosture& SignMotionCache::posture(Hand hand, const HandState& state) {
   const std::string key = posture_key(hand, state);
   {

@@ -69,6 +69,9 @@ class SignMotionCache {
   // alone, with the hand pushed out of the body as perform_plan does every frame: for points near
   // a known posture, where starting from the relaxed posture could end in another arm configuration.
   HandJointPosture solve_from(Hand hand, const HandState& state, std::span<const quat> seed) const;
+  // solve_from, stored by state: for states that recur with the same seed (the via postures of a
+  // transition between two given signs), so the first solution is reused.
+  const HandJointPosture& posture_from(Hand hand, const HandState& state, std::span<const quat> seed);
 
   const SigningRig& rig() const { return *rig_; }
   const std::vector<int>& joints(Hand hand) const { return joints_[hand == Hand::Right ? 0 : 1]; }

@@ -94,8 +94,8 @@ class HandPerformer {
             for (int i = 1; i <= vias; ++i) {
               const float u = static_cast<float>(i) / static_cast<float>(vias + 1);
               blend(m, straight, u, scratch_posture_);
-              const HandJointPosture q =
-                  cache_.solve_from(hand_, sample_hand(timeline_, seg.start + (seg.end - seg.start) * u), scratch_posture_);
+              const HandJointPosture& q =
+                  cache_.posture_from(hand_, sample_hand(timeline_, seg.start + (seg.end - seg.start) * u), scratch_posture_);
               m.keys.insert(m.keys.end(), q.begin(), q.end());
             }
             if (!(inside = enters_body(m, p, seg))) break;
