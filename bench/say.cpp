@@ -1,11 +1,14 @@
-// gestura say without rendering: a 15-word English sentence → the whole performance (translation,
-// lexicon, sign planning, joining, inverse kinematics every frame, face channels), and its parts.
+// gestura say without rendering (S1): a 15-word English sentence → the whole performance
+// (translation, lexicon, sign planning and joining, joint motion, face channels), and its parts.
+// Warm: the signer has performed these signs before (their citation motion is cached); cold: a
+// fresh signer, so every sign is planned and solved by IK first (docs/benchmarks.md).
 #include <benchmark/benchmark.h>
 
 #include <optional>
 
 #include "gestura/lexicon/lexicon_files.hpp"
 #include "gestura/sentence/signer.hpp"
+#include "gestura/sign/sign_performer.hpp"
 #include "gestura/text/lexicon_inventory.hpp"
 #include "gestura/text/translator.hpp"
 
@@ -33,15 +36,55 @@ World& world() {
 void BM_SaySentence(benchmark::State& state) {
   gestura::SayOptions options;
   options.mouthing = state.range(0) != 0;
-  double seconds = 0.0;
+  gestura::SentencePerformance p;
   for (auto _ : state) {
-    gestura::SentencePerformance p = world().signer->say(kSentence, options);
-    seconds = p.duration;
+    p = world().signer->say(kSentence, options);
     benchmark::DoNotOptimize(p.clip.rotations.data());
   }
-  state.counters["performance_s"] = seconds;
+  state.counters["performance_s"] = p.duration;
+  state.counters["transitions"] = p.motion.transitions;
+  state.counters["bent"] = p.motion.via;
+  state.counters["ik_every_frame"] = p.motion.escaped;
 }
 BENCHMARK(BM_SaySentence)->Arg(1)->Arg(0)->ArgNames({"mouthing"})->Unit(benchmark::kMillisecond);
+
+// A sentence two of whose transitions would pass through the head (SLEEP at the face): they are bent
+// through via postures and re-solved by IK in their middle, every call.
+void BM_SayBentTransitions(benchmark::State& state) {
+  gestura::SentencePerformance p;
+  for (auto _ : state) {
+    p = world().signer->say("The dog and the cat sleep in the house.");
+    benchmark::DoNotOptimize(p.clip.rotations.data());
+  }
+  state.counters["transitions"] = p.motion.transitions;
+  state.counters["bent"] = p.motion.via;
+  state.counters["ik_every_frame"] = p.motion.escaped;
+}
+BENCHMARK(BM_SayBentTransitions)->Unit(benchmark::kMillisecond);
+
+// The first call on a new signer (building the signer itself is not timed).
+void BM_SaySentenceCold(benchmark::State& state) {
+  gestura::SayOptions options;
+  options.mouthing = state.range(0) != 0;
+  std::optional<gestura::Signer> signer;
+  for (auto _ : state) {
+    state.PauseTiming();
+    signer.reset();
+    signer.emplace(world().avatar, world().layers);
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(signer->say(kSentence, options).clip.rotations.data());
+  }
+}
+BENCHMARK(BM_SaySentenceCold)->Arg(1)->Arg(0)->ArgNames({"mouthing"})->Unit(benchmark::kMillisecond);
+
+// The former motion step for comparison: the same utterance plan performed with IK every frame
+// (sign_performer's perform_plan), instead of stitching cached motion.
+void BM_SayPlanWithIkEveryFrame(benchmark::State& state) {
+  const gestura::SentencePerformance p = world().signer->say(kSentence);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(gestura::perform_plan(p.plan, world().signer->rig(), {}).rotations.data());
+}
+BENCHMARK(BM_SayPlanWithIkEveryFrame)->Unit(benchmark::kMillisecond);
 
 // The translation step alone, with a fresh (uncached) inventory each time like say() uses.
 void BM_SayTranslate(benchmark::State& state) {

@@ -28,6 +28,8 @@ void print_timeline(const SentencePerformance& p) {
   for (const PerformedGloss& g : p.glosses)
     std::printf("%6.2f–%6.2f s  %-14s %s\n", g.start, g.end, g.gloss.c_str(), g.source.c_str());
   std::printf("duration %.2f s (including the approach from and return to rest)\n", p.duration);
+  std::printf("%d transitions: %d bent around the body, %d solved by IK every frame\n", p.motion.transitions,
+              p.motion.via, p.motion.escaped);
 }
 
 int run_say(const std::vector<std::string>& args) {

@@ -62,6 +62,7 @@ void print_table(const SubtitleTrack& track) {
   for (const FittedCue& c : track.cues) {
     std::string glosses;
     for (const std::string& g : c.glosses) glosses += (glosses.empty() ? "" : " ") + g;
+    if (c.coarticulated) glosses = "(joined) " + glosses;
     std::printf("%5d  %-12s %-12s %-12s %5.2fx  %-11s %s\n", c.index, clock(c.cue_start).c_str(),
                 clock(c.cue_end).c_str(), c.fit == CueFit::Skipped ? "-" : clock(c.start).c_str(), c.speed,
                 to_string(c.fit), glosses.c_str());

@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
+#include "gestura/anim/track.hpp"
 #include "gestura/core/error.hpp"
 
 using namespace gestura;
@@ -187,4 +190,49 @@ TEST(SubtitleTrack, SignerErrorsNameTheCue) {
   } catch (const Error& e) {
     EXPECT_STREQ(e.what(), "line 7: cue 7: text refused");
   }
+}
+
+namespace {
+
+// A signer whose hands are raised (elbow at 0.5 rad) from its first sign's start (0.1 s) to its last
+// sign's end, at rest before and after.
+SentencePerformance raised_arm_performance(const Skeleton& s, std::string_view text) {
+  SentencePerformance p;
+  const float signing = 0.5f * static_cast<float>(std::count(text.begin(), text.end(), ' ') + 1);
+  p.glosses.push_back({"SIGN", std::string(text), 0.1f, 0.1f + signing});
+  p.duration = 0.1f + signing + 0.4f;
+  p.clip.resize_joints(s.size());
+  p.clip.duration = p.duration;
+  QuatTrack& elbow = p.clip.rotations[static_cast<std::size_t>(s.find("r_elbow"))];
+  const quat raised = glm::angleAxis(0.5f, vec3(1, 0, 0));
+  elbow.add(0.0f, quat(1, 0, 0, 0));
+  elbow.add(0.1f, raised);
+  elbow.add(0.1f + signing, raised);
+  elbow.add(p.duration, quat(1, 0, 0, 0));
+  return p;
+}
+
+float elbow_angle(const SubtitleTrack& t, const Skeleton& s, float time) {
+  const quat q = sample_track(t.clip.rotations[static_cast<std::size_t>(s.find("r_elbow"))], time);
+  return 2.0f * std::acos(std::min(1.0f, std::abs(q.w)));
+}
+
+}  // namespace
+
+TEST(SubtitleTrack, CloseCuesAreCoarticulatedWithoutRest) {
+  Skeleton s;
+  s.add_joint("root", -1, vec3(0.0f, 1.0f, 0.0f));
+  s.add_joint("r_elbow", 0, vec3(0.2f, 0.0f, 0.0f));
+  const auto sign = [&](std::string_view text, float) { return raised_arm_performance(s, text); };
+  // Cue 1 signs 0.1–0.6 s and is back at rest at 1.0 s; cue 2 starts at 1.2 s, its first sign at
+  // 1.3 s: 0.7 s after cue 1's last sign, so the hands stay up.
+  const auto close = fit_subtitles({cue(1, 0.0, 1.0, "a"), cue(2, 1.2, 2.0, "b")}, sign, s, no_slack());
+  ASSERT_EQ(close.cues.size(), 2u);
+  EXPECT_FALSE(close.cues[0].coarticulated);
+  EXPECT_TRUE(close.cues[1].coarticulated);
+  for (float t = 0.6f; t <= 1.3f; t += 0.05f) EXPECT_NEAR(elbow_angle(close, s, t), 0.5f, 1e-3f) << t;
+  // 2 s apart: the hands rest between the cues.
+  const auto apart = fit_subtitles({cue(1, 0.0, 1.0, "a"), cue(2, 2.5, 3.5, "b")}, sign, s, no_slack());
+  EXPECT_FALSE(apart.cues[1].coarticulated);
+  EXPECT_NEAR(elbow_angle(apart, s, 1.5f), 0.0f, 1e-3f);
 }

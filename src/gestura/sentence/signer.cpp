@@ -13,11 +13,11 @@
 #include "gestura/face/nonmanual.hpp"
 #include "gestura/face/nonmanual_from_translation.hpp"
 #include "gestura/sentence/fingerspelling_performance.hpp"
+#include "gestura/sentence/sign_prosody.hpp"
+#include "gestura/sentence/utterance_performer.hpp"
 #include "gestura/sign/fingerspelling_asl.hpp"
 #include "gestura/sign/fingerspelling_plan.hpp"
-#include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/movement_timing.hpp"
-#include "gestura/sign/sign_performer.hpp"
 #include "gestura/sign/sign_planner.hpp"
 #include "gestura/text/lexicon_inventory.hpp"
 #include "gestura/text/translator.hpp"
@@ -26,17 +26,6 @@ namespace gestura {
 
 namespace {
 
-// Prosody of running signing (docs/say.md has the reasoning and the measured rates).
-// Lexicon entries are citation forms with 0.1 s / 0.2 s holds; in a sentence the holds shrink.
-// Citation forms last about twice as long as the same signs in running signing (movement_timing.hpp:
-// 0.5–1 s citation vs ~0.4–0.5 s running), so lexical movements and transitions run faster.
-constexpr float kRunningTempo = 2.6f;
-constexpr float kInitialHold = 0.04f;
-constexpr float kFinalHold = 0.08f;
-constexpr float kPhraseFinalLengthening = 1.75f;  // the final hold of a clause's last sign
-constexpr float kPhraseFinalHold = 0.25f;         // … and at least this long
-constexpr float kSentencePause = 0.5f;            // between sentences ('.', '!', '?')
-constexpr float kClausePause = 0.25f;             // at a comma or other clause break
 constexpr float kMouthingAmplitude = 0.6f;        // ASL mouthing is reduced
 
 // Joins per-sign plans into one plan for the utterance: each sign is planned without rest at either
@@ -46,55 +35,59 @@ class UtteranceBuilder {
  public:
   UtteranceBuilder(const SigningRig& rig, float speed) : rig_(rig), speed_(speed) {
     for (int h = 0; h < 2; ++h) state_[h] = rest_hand_state(rig, hand_of(h));
+    // Where a hand that has signed waits while the other signs alone: low in front, as in the rig's
+    // relaxed signing posture (a signer does not drop it to the hip between signs).
+    for (int h = 0; h < 2; ++h) idle_[h] = relaxed_hand_state(rig, hand_of(h));
   }
 
   float now() const { return now_; }
+  const std::vector<CachedSignSpan>& spans() const { return spans_; }
 
-  // Plans and appends one sign; returns its articulation interval [first posture, end of last hold].
-  std::array<float, 2> add_sign(const sign::HamSign& sign, float final_hold) {
-    PlanOptions options;
-    options.speed = std::min(speed_ * kRunningTempo, 4.0f);
-    options.from_rest = false;
-    options.to_rest = false;
-    options.initial_hold = kInitialHold;
-    options.final_hold = final_hold;
-    const SignPlan plan = plan_sign(sign, rig_, options);
+  // Appends one sign (its cached citation form) with its running-signing timing
+  // (sign_prosody.hpp); returns its articulation interval [first posture, end of last hold].
+  std::array<float, 2> add_sign(const CitationMotion& motion, bool phrase_final, float extra_hold) {
+    const SignPlan& plan = motion.plan;
+    const SignTiming timing = running_sign_timing(motion.movement(), phrase_final, extra_hold, speed_);
     const std::array<const HandTimeline*, 2> timeline{&plan.right, &plan.left};
     std::array<HandState, 2> first;
     for (int h = 0; h < 2; ++h) {
       const HandTimeline& t = *timeline[h];
-      first[h] = t.segments.empty() ? rest_hand_state(rig_, hand_of(h)) : sample_hand(t, plan.sign_start);
+      first[h] = t.segments.empty() ? rest_hand_state(rig_, hand_of(h)) : sample_hand(t, 0.0f);
     }
-    // The hands the sign uses set the transition time; a hand it does not use drifts to rest over
-    // as long as it needs (up to the whole sign) instead of snapping there.
+    // The hands the sign uses set the transition time; a hand it does not use drifts to rest — or,
+    // once it has signed, to its idle place low in front — over as long as it needs (up to the
+    // whole sign) instead of snapping there.
     const float t0 = now_;
     float d = 0.0f;
     for (int h = 0; h < 2; ++h)
       if (first[h].active) d = std::max(d, move_time(state_[h], first[h]));
     if (d == 0.0f) d = move_time(state_[0], state_[0]);
     const float start = t0 + d;
-    const float shift = start - plan.sign_start;
-    float end = start;
+    const float moving = start + timing.initial_hold;
+    const float end = moving + timing.movement + timing.final_hold;
     for (int h = 0; h < 2; ++h) {
       if (!first[h].active) continue;
       push(h, state_[h], first[h], t0, start);
+      push(h, first[h], first[h], start, moving);
       for (HandSegment seg : timeline[h]->segments) {
-        if (seg.end <= plan.sign_start) continue;  // the planner's instant entry into the first posture
-        seg.start = std::max(seg.start, plan.sign_start) + shift;
-        seg.end += shift;
+        seg.start = moving + seg.start / timing.tempo;  // the cached plan starts at its first posture
+        seg.end = moving + seg.end / timing.tempo;
         out_[h].segments.push_back(std::move(seg));
       }
       state_[h] = out_[h].final_state();
-      end = std::max(end, out_[h].end_time());
+      spans_.push_back({hand_of(h), start, moving, end, timing.tempo, &motion});
     }
     for (int h = 0; h < 2; ++h) {
-      if (first[h].active) continue;
-      const HandState rest = rest_hand_state(rig_, hand_of(h));
+      if (first[h].active) {
+        signed_[h] = true;
+        continue;
+      }
+      const HandState rest = signed_[h] ? idle_[h] : rest_hand_state(rig_, hand_of(h));
       const float arrival = std::min(std::max(start, t0 + move_time(state_[h], rest)), end);
       push(h, state_[h], rest, t0, arrival);
       state_[h] = rest;
     }
-    // Both hands continue from the same clock: the shorter timeline holds.
+    // Both hands continue from the same clock: the final hold, and the shorter timeline holds.
     for (int h = 0; h < 2; ++h)
       if (out_[h].end_time() < end) push(h, state_[h], state_[h], out_[h].end_time(), end);
     now_ = end;
@@ -149,7 +142,7 @@ class UtteranceBuilder {
   }
 
   float move_time(const HandState& from, const HandState& to) const {
-    return transition_duration(glm::length(to.position - from.position)) / (speed_ * kRunningTempo);
+    return transition_duration(glm::length(to.position - from.position)) / (speed_ * kTransitionTempo);
   }
 
   // Both hands move to their targets together, taking as long as the longer path needs.
@@ -166,6 +159,9 @@ class UtteranceBuilder {
   float now_ = 0.0f;
   std::array<HandState, 2> state_;
   std::array<HandTimeline, 2> out_;
+  std::vector<CachedSignSpan> spans_;
+  std::array<HandState, 2> idle_;
+  std::array<bool, 2> signed_{false, false};  // the hand has signed in this utterance
 };
 
 std::string letters_only(std::string_view text) {
@@ -195,7 +191,7 @@ void write_jaw(const Skeleton& skeleton, Clip& clip) {
 }  // namespace
 
 Signer::Signer(const Avatar& avatar, LayeredLexicon& lexicon)
-    : avatar_(&avatar), lexicon_(&lexicon), rig_(make_signing_rig(avatar)) {}
+    : avatar_(&avatar), lexicon_(&lexicon), rig_(make_signing_rig(avatar)), cache_(std::make_unique<SignMotionCache>(rig_)) {}
 
 SentencePerformance Signer::say(std::string_view text, const SayOptions& options) const {
   if (options.lang != "ase")
@@ -239,7 +235,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
     return builder.add_spelling(plan_spelling(letters, ManualAlphabet::Asl, SpellingStyle::Careful));
   };
   // A sign from the lexicon, or nullopt (with a note) when it has none the synthesizer can perform.
-  auto sign_gloss = [&](const std::string& gloss, float final_hold) -> std::optional<std::array<float, 2>> {
+  auto sign_gloss = [&](const std::string& gloss, bool phrase_final, float extra_hold) -> std::optional<std::array<float, 2>> {
     const std::optional<SignEntry> entry = lexicon_->find(gloss, options.lang);
     if (!entry) return std::nullopt;
     if (entry->notation_kind != NotationKind::hamnosys) {
@@ -248,7 +244,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
       return std::nullopt;
     }
     try {
-      return builder.add_sign(sign::parse_hamnosys_unicode(entry->notation), final_hold);
+      return builder.add_sign(cache_->sign(entry->notation), phrase_final, extra_hold);
     } catch (const Error& e) {
       out.notes.push_back(gloss + ": its notation cannot be performed (" + e.what() + ")");
       return std::nullopt;
@@ -259,9 +255,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
     const GlossToken& g = translation.glosses[i];
     const std::string source(text.substr(g.begin, g.end - g.begin));
     const bool phrase_final = i + 1 == n || translation.glosses[i + 1].kind == GlossKind::pause;
-    float final_hold = kFinalHold;
-    if (phrase_final) final_hold = std::max(kFinalHold * kPhraseFinalLengthening, kPhraseFinalHold);
-    if (question_end[i]) final_hold += face::kQuestionHoldSeconds;
+    const float extra_hold = question_end[i] ? face::kQuestionHoldSeconds : 0.0f;
     std::optional<std::array<float, 2>> span;
     switch (g.kind) {
       case GlossKind::pause: {
@@ -271,7 +265,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
         break;
       }
       case GlossKind::sign:
-        span = sign_gloss(g.gloss, final_hold);
+        span = sign_gloss(g.gloss, phrase_final, extra_hold);
         if (span) mouthed[i] = true;
         else span = spell(g.gloss, "no performable sign for " + g.gloss);
         break;
@@ -284,7 +278,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
       case GlossKind::number: {
         // The lexicon's number signs; other numbers digit by digit (docs/asl-lexicon.md composes
         // 21–99 as tens then units; longer numbers go in pairs).
-        if ((span = sign_gloss(g.gloss, final_hold))) break;
+        if ((span = sign_gloss(g.gloss, phrase_final, extra_hold))) break;
         std::vector<std::string> pieces;
         const std::string& d = g.gloss;
         const bool digits = !d.empty() && std::all_of(d.begin(), d.end(), [](char c) { return c >= '0' && c <= '9'; });
@@ -301,7 +295,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
           for (std::size_t q = 0; q < parts.size(); ++q) {
             if (parts[q].empty()) continue;
             const bool last = p + 1 == pieces.size() && q + 1 == parts.size();
-            auto part = sign_gloss(parts[q], last ? final_hold : kFinalHold);
+            auto part = last ? sign_gloss(parts[q], phrase_final, extra_hold) : sign_gloss(parts[q], false, 0.0f);
             if (!part) part = spell(parts[q], "");
             if (!part) continue;
             if (!whole) whole = part;
@@ -321,8 +315,8 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
     out.glosses.push_back({g.gloss, source, (*span)[0], (*span)[1]});
   }
 
-  const SignPlan plan = builder.finish(std::max(first_start, 0.0f), last_end);
-  out.clip = perform_plan(plan, rig_, PerformOptions{options.fps});
+  out.plan = builder.finish(std::max(first_start, 0.0f), last_end);
+  out.clip = perform_utterance(out.plan, builder.spans(), *cache_, options.fps, &out.motion);
   out.clip.name = "say";
   const Skeleton& skeleton = avatar_->skeleton;
 

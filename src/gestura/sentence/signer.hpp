@@ -7,9 +7,11 @@
 //
 // Pipeline: English → ASL glosses (text/translator) → lexicon entries (lexicon/, built-in ASL from
 // data/lexicon/ase.jsonl plus user lexicons) → each sign planned on the avatar (sign/sign_planner)
-// without returning to rest, joined by coarticulated transitions, with prosody (phrase-final
-// lengthening, pauses, holds) → performed once for the whole utterance (sign/sign_performer) →
-// non-manual markers and mouthing added as face channels and head rotations (face/).
+// without returning to rest, joined by coarticulated transitions, with prosody (sentence/sign_prosody:
+// phrase-final lengthening, pauses, holds) → performed from joint angles cached per sign and avatar
+// (sentence/sign_motion_cache, sentence/utterance_performer) → non-manual markers and mouthing added
+// as face channels and head rotations (face/).
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,6 +19,8 @@
 #include "gestura/anim/clip.hpp"
 #include "gestura/body/avatar.hpp"
 #include "gestura/lexicon/layered_lexicon.hpp"
+#include "gestura/sentence/sign_motion_cache.hpp"
+#include "gestura/sentence/utterance_performer.hpp"
 #include "gestura/sign/signing_rig.hpp"
 
 namespace gestura {
@@ -42,6 +46,8 @@ struct SentencePerformance {
   std::vector<PerformedGloss> glosses;
   float duration = 0.0f;                // seconds, including the return to rest
   std::vector<std::string> notes;       // e.g. "'zyx' fingerspelled: not in the lexicon"
+  SignPlan plan;                        // what each hand does, in space (the plan the clip performs)
+  UtteranceStats motion;                // how the joint motion was made (transitions bent around the body)
 };
 
 // Limits on one utterance (docs/say.md): longer text is refused with an error, never truncated
@@ -53,10 +59,17 @@ class Signer {
  public:
   // Contract: `avatar` and `lexicon` outlive the signer (the rig is built once, here).
   Signer(const Avatar& avatar, LayeredLexicon& lexicon);
+  Signer(const Signer&) = delete;  // the motion cache refers to this signer's rig
+  Signer& operator=(const Signer&) = delete;
 
   // Throws gestura::Error for empty text, text over kMaxSayBytes or kMaxSayGlosses glosses,
   // invalid UTF-8, a sign language without a lexicon, and a speed outside 0.25–2.
+  // The first utterance that uses a sign performs its citation form by IK and stores it (per
+  // signer, so per avatar); later ones reuse it. Safe to call from several threads.
   SentencePerformance say(std::string_view text, const SayOptions& options = {}) const;
+
+  // Signs whose joint motion is stored so far.
+  std::size_t cached_signs() const { return cache_->signs_stored(); }
 
   const SigningRig& rig() const { return rig_; }
 
@@ -64,6 +77,7 @@ class Signer {
   const Avatar* avatar_;
   LayeredLexicon* lexicon_;
   SigningRig rig_;
+  std::unique_ptr<SignMotionCache> cache_;
 };
 
 }  // namespace gestura

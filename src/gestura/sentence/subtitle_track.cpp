@@ -1,11 +1,14 @@
 #include "gestura/sentence/subtitle_track.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "gestura/anim/clip_timeline.hpp"
 #include "gestura/core/error.hpp"
+#include "gestura/sentence/cue_bridge.hpp"
 
 namespace gestura {
 namespace {
@@ -32,6 +35,18 @@ Attempt sign_within(std::string_view text, double window, Attempt best, const Si
   return best;
 }
 
+// When the performance's first sign starts and its last sign ends (seconds on its own clock);
+// nullopt when it has no sign.
+std::optional<std::array<float, 2>> signing_interval(const SentencePerformance& p) {
+  std::optional<std::array<float, 2>> out;
+  for (const PerformedGloss& g : p.glosses) {
+    if (g.gloss == "PAUSE") continue;
+    if (!out) out = std::array<float, 2>{g.start, g.end};
+    (*out)[1] = g.end;
+  }
+  return out;
+}
+
 }  // namespace
 
 const char* to_string(CueFit fit) {
@@ -55,6 +70,7 @@ SubtitleTrack fit_subtitles(const std::vector<SubtitleCue>& cues, const SignFunc
   track.clip = empty_timeline(skeleton);
   track.clip.name = "subtitles";
   double free_at = 0.0;  // when the signer has finished the previous cue
+  std::optional<double> last_sign_end;  // programme time the previous cue's last sign ended
   double programme_end = 0.0;
   for (std::size_t i = 0; i < cues.size(); ++i) {
     const SubtitleCue& cue = cues[i];
@@ -104,9 +120,20 @@ SubtitleTrack fit_subtitles(const std::vector<SubtitleCue>& cues, const SignFunc
     fitted.duration = fitted.needed = best.performance.duration;
     for (const PerformedGloss& g : best.performance.glosses) fitted.glosses.push_back(g.gloss);
     fitted.notes = best.performance.notes;
+    const std::optional<std::array<float, 2>> signing = signing_interval(best.performance);
     Clip clip = std::move(best.performance.clip);
     clip.duration = static_cast<float>(best.performance.duration);
     place_clip(track.clip, clip, static_cast<float>(start), skeleton);
+    if (signing) {
+      // Close cues are coarticulated: the hands go from the previous cue's last sign straight to
+      // this cue's first sign instead of resting in between.
+      const double first_sign = start + (*signing)[0];
+      if (last_sign_end && first_sign - *last_sign_end < kCoarticulationGap) {
+        bridge_arms(track.clip, skeleton, static_cast<float>(*last_sign_end), static_cast<float>(first_sign));
+        fitted.coarticulated = true;
+      }
+      last_sign_end = start + (*signing)[1];
+    }
     free_at = start + fitted.duration;
     programme_end = std::max(programme_end, free_at);
     track.cues.push_back(std::move(fitted));

@@ -14,7 +14,9 @@
 //   4. still too long: NOT fitted — it is signed at max_speed in full and overruns, and the next
 //      cues start late (shifted), catching up by speeding up or using gaps. Truncating instead
 //      would cut signs in half, which is meaningless to a viewer; a late but whole sentence is not.
-// Between cues the signer is at rest (see anim/clip_timeline.hpp). Cues without text are skipped.
+// Between cues the signer is at rest (see anim/clip_timeline.hpp), unless the gap from one cue's last
+// sign to the next cue's first sign is under kCoarticulationGap (cue_bridge.hpp): then the hands go
+// straight from one to the other. Cues without text are skipped.
 #include <functional>
 #include <string>
 #include <string_view>
@@ -53,6 +55,7 @@ struct FittedCue {
   double needed = 0.0;           // = duration; seconds the signing takes at that speed
   double available = 0.0;        // seconds it was allowed (to end + slack, or to the next cue when spilling)
   CueFit fit = CueFit::Skipped;
+  bool coarticulated = false;    // joined to the previous cue's last sign without resting between
   std::vector<std::string> glosses;
   std::vector<std::string> notes;  // the performance's notes (unknown words fingerspelled …)
 

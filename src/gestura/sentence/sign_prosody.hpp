@@ -1,0 +1,50 @@
+#pragma once
+// Prosody of running signing: how long each sign of an utterance lasts, how long it is held, and
+// how long the pauses between phrases are (docs/say.md has the sources and the measurements).
+//
+// A lexicon entry is a citation form: the planner times its movement from the notation (movement
+// size and path, repetitions, contacts, handshape and orientation changes; sign_planner.cpp and
+// movement_timing.hpp). In running signing the same movement is performed faster, so it is
+// compressed by kRunningTempo, and the sign gets short holds at both ends. A sign whose movement is
+// tiny or absent (MY: a flat hand placed on the chest) is still held long enough to be seen: every
+// sign lasts at least kMinSignSeconds from its first posture to the end of its final hold.
+// The last sign of a phrase is lengthened (Grosjean 1979: signs are longer at the end of sentences):
+// its movement runs slower, its final hold is longer, and it lasts at least kMinPhraseFinalSeconds.
+// Everything is divided by the global speed (0.25–2).
+namespace gestura {
+
+// Reference rate of fluent running signing used to judge the result: 2.0 signs/s (docs/say.md).
+inline constexpr float kReferenceSignsPerSecond = 2.0f;
+
+// Citation-form movement time / running movement time.
+inline constexpr float kRunningTempo = 3.2f;
+// Citation movement beyond this many seconds (repetitions, long paths) is compressed twice as much:
+// running signing reduces repeated and long movements more than short ones.
+inline constexpr float kLongMovementSeconds = 0.6f;
+// Transitions between signs (movement epenthesis, movement_timing.hpp's transition_duration) are
+// sped up likewise.
+inline constexpr float kTransitionTempo = 3.0f;
+inline constexpr float kInitialHold = 0.04f;            // seconds the first posture is held
+inline constexpr float kFinalHold = 0.06f;              // seconds the last posture is held
+inline constexpr float kMinSignSeconds = 0.30f;         // first posture → end of final hold
+inline constexpr float kPhraseFinalSlowing = 1.25f;      // movement of a phrase's last sign
+inline constexpr float kPhraseFinalHold = 0.2f;        // at least this final hold there
+inline constexpr float kMinPhraseFinalSeconds = 0.40f;  // and at least this long in all
+inline constexpr float kSentencePause = 0.5f;           // between sentences ('.', '!', '?')
+inline constexpr float kClausePause = 0.25f;            // at a comma or other clause break
+
+struct SignTiming {
+  float tempo = 1.0f;         // citation movement seconds per running second
+  float initial_hold = 0.0f;  // seconds, after the sign's first posture is reached
+  float movement = 0.0f;      // seconds of the (compressed) movement
+  float final_hold = 0.0f;    // seconds, after the movement
+  float span() const { return initial_hold + movement + final_hold; }
+};
+
+// Timing of one sign in running signing. `citation_movement`: seconds from the first posture to the
+// end of the movement in citation form (the planner's plan at speed 1 without holds); `extra_hold`:
+// seconds added to the final hold (a yes/no question's last sign); `speed`: global tempo.
+// Contract: citation_movement >= 0, extra_hold >= 0, speed in [0.25, 2].
+SignTiming running_sign_timing(float citation_movement, bool phrase_final, float extra_hold, float speed);
+
+}  // namespace gestura
