@@ -234,7 +234,7 @@ std::vector<MorphRecipe> recipes(const Face& f) {
   viseme("sil", 0.0f, 0.0f, 0.0f, 0.3f, 0.0f, vec3(0.0f));
   viseme("PP", 0.0f, 0.0f, 0.1f, 1.0f, 0.0f, vec3(0.0f));
   viseme("FF", 3.0f, 0.2f, 0.0f, 0.0f, 1.0f, vec3(0.0f));
-  viseme("TH", 6.0f, 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.004f, 0.012f));
+  viseme("TH", 7.0f, 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.009f, 0.016f));
   viseme("DD", 7.0f, 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.006f, 0.004f));
   viseme("kk", 9.0f, 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.003f, -0.002f));
   viseme("CH", 5.0f, 0.0f, 0.6f, 0.0f, 0.0f, vec3(0, 0.004f, 0.0f));
