@@ -169,8 +169,10 @@ void add_head(VolumeBuilder& b, float k, float jaw_open_degrees) {
   const float half = deg(0.5f * jaw_open_degrees);
   const vec3 centre = pivot + glm::angleAxis(half, vec3(1, 0, 0)) * (slit - pivot);
   const float apart = 2.0f * glm::distance(slit, pivot) * std::sin(std::abs(half));
-  // Slightly thinner than the gap, so the closed lips press a little into each other.
-  b.ellipsoid("skullbase", centre, vec3(0.0225f * k, 0.5f * apart - 0.0022f * k, 0.012f * k), MaterialId::Lips,
+  // Slightly thinner than the gap, so the closed lips press a little into each other (a closed jaw
+  // keeps a hairline groove).
+  const float slit_height = std::max(0.5f * apart - 0.0022f * k, 0.0005f * k);
+  b.ellipsoid("skullbase", centre, vec3(0.0225f * k, slit_height, 0.012f * k), MaterialId::Lips,
               0.004f * k, BlendOp::Subtract, glm::mat3_cast(glm::angleAxis(half, vec3(1, 0, 0))));
 }
 
