@@ -10,6 +10,7 @@
 
 #include "gestura/body/avatar.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
+#include "gestura/body/body_sites.hpp"
 #include "gestura/body/face_morphs.hpp"
 
 using namespace gestura;
@@ -267,4 +268,26 @@ TEST(AvatarFace, LipsAreOneCleanRegion) {
     }
   EXPECT_GT(lips, 40);
   EXPECT_LE(regions.size(), 2u) << "lip colour in patches";
+}
+
+TEST(AvatarFace, FaceSitesLieOnTheOuterSurfaceNotOnWhatIsInside) {
+  const Avatar& a = avatar();
+  const auto sites = find_body_sites(a.skeleton, a.mesh);
+  std::vector<mat4> model(a.skeleton.size());
+  local_to_model(a.skeleton, rest_pose(a.skeleton), model);
+  float inside_front = -1.0f;  // the front-most tooth or tongue vertex
+  for (std::size_t v = 0; v < a.mesh.vertex_count(); ++v)
+    if (material(a.mesh, v) == MaterialId::Teeth || material(a.mesh, v) == MaterialId::Tongue)
+      inside_front = std::max(inside_front, a.mesh.positions[v].z);
+  for (const char* name : {"upper_lip", "lips", "lower_lip"}) {
+    const BodySite* site = find_site(sites, name);
+    ASSERT_NE(site, nullptr) << name;
+    EXPECT_GT(site_position(*site, model).z, inside_front + 0.008f) << name << " lies on the lips, in front of the teeth";
+  }
+  for (const char* side : {"l_", "r_"}) {
+    const BodySite* site = find_site(sites, std::string(side) + "eye");
+    ASSERT_NE(site, nullptr) << side;
+    const vec3 eye = joint_position(a, (std::string(side) + "eyeball_joint").c_str());
+    EXPECT_NEAR(site_position(*site, model).z, eye.z + 0.013f, 0.001f) << side << "eye: the front of the eyeball";
+  }
 }
