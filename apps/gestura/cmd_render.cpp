@@ -28,7 +28,7 @@ The file appears only when complete.
   --fps N                 frames per second, 1..120               [30]
   --background #rrggbb    background colour                       [#999ea3]
   --color MATERIAL=#rrggbb  colour of skin, cloth, hair, eye-white, iris, lips, teeth, tongue,
-                          brow or pupil (repeatable)
+                          brow, pupil or mouth (repeatable)
   --sheet                 PNG contact sheet (16 frames, 4x4)
   --time S                the time a single PNG shows             [0]
   --seconds S             animation length with --rest            [2]

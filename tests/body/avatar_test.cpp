@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "gestura/body/avatar_skeleton.hpp"
@@ -53,6 +54,48 @@ std::size_t nearest_vertex(const Mesh& mesh, vec3 p) {
   return best;
 }
 
+// Triangle indices split into connected surfaces (triangles sharing a vertex belong together).
+std::vector<std::vector<std::uint32_t>> surfaces(const Mesh& mesh) {
+  std::vector<std::uint32_t> parent(mesh.vertex_count());
+  for (std::uint32_t v = 0; v < parent.size(); ++v) parent[v] = v;
+  auto root = [&](std::uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (std::size_t f = 0; f < mesh.indices.size(); f += 3)
+    for (int k = 1; k < 3; ++k) parent[root(mesh.indices[f + k])] = root(mesh.indices[f]);
+  std::map<std::uint32_t, std::vector<std::uint32_t>> by_root;
+  for (std::size_t f = 0; f < mesh.indices.size(); f += 3) {
+    auto& tris = by_root[root(mesh.indices[f])];
+    tris.insert(tris.end(), mesh.indices.begin() + static_cast<std::ptrdiff_t>(f),
+                mesh.indices.begin() + static_cast<std::ptrdiff_t>(f + 3));
+  }
+  std::vector<std::vector<std::uint32_t>> out;
+  for (auto& [r, tris] : by_root) out.push_back(std::move(tris));
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  return out;
+}
+
+// The body is one sphere-like skin; inside the head lie the face parts (two eyeballs, two rows of
+// teeth, the tongue), each a closed sphere-like surface of its own.
+void expect_body_and_face_parts(const Mesh& m) {
+  const auto parts = surfaces(m);
+  ASSERT_EQ(parts.size(), 6u) << "skin, 2 eyeballs, 2 rows of teeth, tongue";
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const MeshTopology t = audit_topology(m.positions, parts[i]);
+    EXPECT_TRUE(t.closed_manifold()) << "surface " << i;
+    EXPECT_EQ(t.degenerate_triangles, 0) << "surface " << i;
+    EXPECT_EQ(t.euler_characteristic, 2) << "surface " << i << ": no handles";
+    EXPECT_GT(t.signed_volume, 0.0) << "surface " << i << ": outward";
+  }
+  float head_bottom = 1e9f;
+  for (std::size_t i = 1; i < parts.size(); ++i)
+    for (std::uint32_t v : parts[i]) head_bottom = std::min(head_bottom, m.positions[v].y);
+  float top = 0.0f;
+  for (const vec3& p : m.positions) top = std::max(top, p.y);
+  EXPECT_GT(head_bottom, 0.85f * top) << "the small surfaces are all in the head";
+}
+
 float weight_of(const Mesh& mesh, std::size_t v, int joint) {
   float w = 0.0f;
   for (int k = 0; k < 4; ++k)
@@ -62,7 +105,7 @@ float weight_of(const Mesh& mesh, std::size_t v, int joint) {
 
 }  // namespace
 
-TEST(AvatarMesh, IsOneClosedManifoldOutwardSurfaceWithoutDegenerateTriangles) {
+TEST(AvatarMesh, IsClosedManifoldOutwardSurfacesWithoutDegenerateTriangles) {
   const Mesh& m = default_avatar().mesh;
   const MeshTopology t = audit_topology(m.positions, m.indices);
   EXPECT_EQ(t.boundary_edges, 0);
@@ -71,12 +114,14 @@ TEST(AvatarMesh, IsOneClosedManifoldOutwardSurfaceWithoutDegenerateTriangles) {
   EXPECT_EQ(t.nonmanifold_vertices, 0);
   EXPECT_EQ(t.degenerate_triangles, 0);
   EXPECT_EQ(t.out_of_range_indices, 0);
-  EXPECT_EQ(t.euler_characteristic, 2) << "one sphere-like surface: no handles, no separate pieces";
+  expect_body_and_face_parts(m);
   // An adult of 1.70 m displaces roughly 0.05–0.08 m³.
   EXPECT_GT(t.signed_volume, 0.04);
   EXPECT_LT(t.signed_volume, 0.09);
+  // The issue asks for roughly 15–40k triangles; the mouth interior and the cut material borders
+  // put the default avatar just above 40k (coarser edge collapse reopens the closed lips).
   EXPECT_GE(m.triangle_count(), 15000u);
-  EXPECT_LE(m.triangle_count(), 45000u);
+  EXPECT_LE(m.triangle_count(), 41000u);
 }
 
 TEST(AvatarMesh, NoTriangleFacesAgainstItsVertexNormals) {
@@ -135,7 +180,7 @@ TEST(AvatarMesh, MaterialsDressTheBody) {
   EXPECT_EQ(material_near("skull_tip", vec3(0)), MaterialId::Hair);
   std::set<int> used(m.materials.begin(), m.materials.end());
   for (MaterialId id : {MaterialId::Skin, MaterialId::Cloth, MaterialId::Hair, MaterialId::EyeWhite, MaterialId::Iris,
-                        MaterialId::Lips})
+                        MaterialId::Pupil, MaterialId::Lips, MaterialId::Teeth, MaterialId::Tongue, MaterialId::Mouth})
     EXPECT_TRUE(used.count(static_cast<int>(id))) << static_cast<int>(id);
 }
 
@@ -253,9 +298,7 @@ TEST(Avatar, OtherBodiesAreAlsoClosedManifoldsAndBadParametersAreRejected) {
   p.build = 0.8f;
   p.hand_size = 1.2f;
   const Avatar small = build_avatar(p);
-  const MeshTopology t = audit_topology(small.mesh.positions, small.mesh.indices);
-  EXPECT_TRUE(t.closed_manifold());
-  EXPECT_EQ(t.euler_characteristic, 2);
+  expect_body_and_face_parts(small.mesh);
   float top = 0.0f;
   for (const vec3& v : small.mesh.positions) top = std::max(top, v.y);
   EXPECT_NEAR(top, 1.55f, 0.02f);

@@ -1,6 +1,7 @@
 #pragma once
-// The default virtual human, generated entirely by code: skeleton, one seamless skinned mesh with
-// clothing/skin/eye/lip materials, and facial morph targets.
+// The default virtual human, generated entirely by code: skeleton, one seamless skinned skin with
+// clothing/skin/hair/lip/mouth materials, the face's rigid parts inside it (eyeballs, teeth, tongue:
+// face_parts.hpp) in the same mesh, and facial morph targets.
 //
 //   Avatar a = build_avatar();                       // defaults: 1.70 m, neutral
 //   a.mesh.vertex_count(), a.skeleton.find("l_wrist"), a.mesh.find_morph("aa") …

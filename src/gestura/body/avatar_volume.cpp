@@ -105,7 +105,20 @@ void add_trunk(VolumeBuilder& b, const AvatarParams& p, float k) {
             MaterialId::Skin, 0.03f * k);
 }
 
-void add_head(VolumeBuilder& b, float k) {
+// Turns everything riding the jaw open about the jaw joint.
+void open_jaw(VolumeBuilder& b, float degrees) {
+  const int jaw = b.joint("temporomandibular");
+  const vec3 pivot = b.joints[static_cast<std::size_t>(jaw)];
+  const quat open = glm::angleAxis(deg(degrees), vec3(1, 0, 0));
+  for (Primitive& prim : b.body.primitives) {
+    if (prim.joint != jaw) continue;
+    prim.a = pivot + open * (prim.a - pivot);
+    prim.b = pivot + open * (prim.b - pivot);
+    prim.axes = glm::mat3_cast(open) * prim.axes;
+  }
+}
+
+void add_head(VolumeBuilder& b, float k, float jaw_open_degrees) {
   const MaterialId skin = MaterialId::Skin;
   auto v = [k](float x, float y, float z) { return vec3(x, y, z) * k; };
   b.ellipsoid("skullbase", v(0, 1.610f, -0.008f), v(0.075f, 0.088f, 0.096f), skin, 0.02f * k);
@@ -127,24 +140,44 @@ void add_head(VolumeBuilder& b, float k) {
   for (float s : {1.0f, -1.0f}) b.ellipsoid("skullbase", v(s * 0.012f, 1.563f, 0.104f), v(0.008f, 0.007f, 0.008f), skin, 0.006f * k);
   // Hair cap over the top and back of the cranium.
   b.ellipsoid("skullbase", v(0, 1.628f, -0.012f), v(0.081f, 0.073f, 0.094f), MaterialId::Hair, 0.012f * k);
-  // Eyes: carve a socket, set the eyeball in it, cover its top and bottom with lids.
+  // Eyes (the eyeballs themselves are separate rigid parts, face_parts.hpp): a ball of lid skin
+  // over each eyeball, blended into the face, with the almond of the eye opening carved into it
+  // down past the eyeball's surface. What is left of the ball above and below the opening are the
+  // upper and lower lids; their margins rest on the eyeball, so a lid that turns about the eye's
+  // centre slides over it (the blink morph).
   for (const char* side : {"l_", "r_"}) {
     const vec3 eye = b.at(std::string(side) + "eyeball_joint");
-    b.ellipsoid("skullbase", eye + v(0, 0.0f, 0.012f), v(0.020f, 0.013f, 0.013f), skin, 0.005f * k, BlendOp::Subtract);
-    b.ellipsoid(std::string(side) + "eyeball_joint", eye, v(0.0135f, 0.0135f, 0.0135f), MaterialId::EyeWhite, 0.002f * k);
-    b.ellipsoid("skullbase", eye + v(0, 0.0108f, 0.0010f), v(0.0160f, 0.0068f, 0.0135f), skin, 0.003f * k);
-    b.ellipsoid("skullbase", eye + v(0, -0.0118f, 0.0008f), v(0.0150f, 0.0050f, 0.0130f), skin, 0.003f * k);
+    b.ellipsoid("skullbase", eye, vec3(proportions::kEyeballRadius + proportions::kLidThickness) * k, skin, 0.004f * k);
+    b.ellipsoid("skullbase", eye + vec3(proportions::kEyeOpeningCentre[0], proportions::kEyeOpeningCentre[1],
+                                        proportions::kEyeOpeningCentre[2]) * k,
+                vec3(proportions::kEyeOpeningRadii[0], proportions::kEyeOpeningRadii[1], proportions::kEyeOpeningRadii[2]) * k,
+                skin, 0.0015f * k, BlendOp::Subtract);
   }
-  // Mouth: lips around a shallow opening showing teeth and the tongue.
+  // Mouth: lips around the oral cavity, carved as two halves — the roof rides the skull, the
+  // floor the jaw — so that opening the jaw opens the cavity (teeth and tongue: face_parts.hpp).
   for (float s : {1.0f, -1.0f}) {
     b.capsule("skullbase", v(s * 0.024f, 1.5275f, 0.089f), v(0, 1.5325f, 0.0975f), 0.0040f * k, 0.0056f * k,
               MaterialId::Lips, 0.004f * k);
     b.capsule("temporomandibular", v(s * 0.023f, 1.5245f, 0.088f), v(0, 1.5185f, 0.0960f), 0.0040f * k, 0.0062f * k,
               MaterialId::Lips, 0.004f * k);
   }
-  b.ellipsoid("skullbase", v(0, 1.5255f, 0.097f), v(0.020f, 0.0042f, 0.012f), skin, 0.002f * k, BlendOp::Subtract);
-  b.ellipsoid("skullbase", v(0, 1.5280f, 0.0895f), v(0.017f, 0.0042f, 0.0065f), MaterialId::Teeth, 0.001f * k);
-  b.ellipsoid("temporomandibular", v(0, 1.5218f, 0.0880f), v(0.013f, 0.0030f, 0.0090f), MaterialId::Tongue, 0.001f * k);
+  b.ellipsoid("skullbase", v(0, 1.5285f, 0.066f), v(0.0215f, 0.0085f, 0.0275f), MaterialId::Mouth, 0.003f * k,
+              BlendOp::Subtract);
+  b.ellipsoid("temporomandibular", v(0, 1.5210f, 0.066f), v(0.0215f, 0.0090f, 0.0275f), MaterialId::Mouth, 0.003f * k,
+              BlendOp::Subtract);
+  open_jaw(b, jaw_open_degrees);
+  // The slit between the lips into the cavity: the wedge the open jaw makes, carved at half its
+  // angle and as tall as the lips stand apart.
+  const vec3 pivot = b.at("temporomandibular");
+  const vec3 slit = v(0, proportions::kMouthLineY, 0.097f);
+  const float half = deg(0.5f * jaw_open_degrees);
+  const vec3 centre = pivot + glm::angleAxis(half, vec3(1, 0, 0)) * (slit - pivot);
+  const float apart = 2.0f * glm::distance(slit, pivot) * std::sin(std::abs(half));
+  // Slightly thinner than the gap, so the closed lips press a little into each other (a closed jaw
+  // keeps a hairline groove).
+  const float slit_height = std::max(0.5f * apart - 0.0022f * k, 0.0005f * k);
+  b.ellipsoid("skullbase", centre, vec3(0.0225f * k, slit_height, 0.012f * k), MaterialId::Lips,
+              0.004f * k, BlendOp::Subtract, glm::mat3_cast(glm::angleAxis(half, vec3(1, 0, 0))));
 }
 
 void add_arm(VolumeBuilder& b, const AvatarParams& p, const std::string& s, float k) {
@@ -222,12 +255,12 @@ void add_leg(VolumeBuilder& b, const AvatarParams& p, const std::string& s, floa
 
 }  // namespace
 
-ImplicitBody build_avatar_volume(const Skeleton& skeleton, const AvatarParams& params) {
+ImplicitBody build_avatar_volume(const Skeleton& skeleton, const AvatarParams& params, float jaw_open_degrees) {
   params.validate();
   VolumeBuilder b{skeleton, rest_joint_positions(skeleton), {}};
   const float k = params.height / 1.70f;
   add_trunk(b, params, k);
-  add_head(b, k);
+  add_head(b, k, jaw_open_degrees);
   for (const char* side : {"l_", "r_"}) add_arm(b, params, side, k);
   for (const char* side : {"l_", "r_"}) add_leg(b, params, side, k);
   // The floor flattens the soles.

@@ -52,11 +52,17 @@ struct SiteRay {
   std::string name;
   int joint;
   vec3 origin, direction;
+  // Cast from outside, back along the ray: the outermost surface rather than the first one met
+  // from inside (the face has eyeballs, teeth, tongue and the mouth's cavity within).
+  bool from_outside = false;
 };
 
 void add_site(const Anchors& anchors, const Mesh& mesh, const SiteRay& ray, std::vector<BodySite>& out) {
   if (ray.joint < 0) return;
-  const auto hit = cast_ray(mesh, ray.origin, ray.direction);
+  constexpr float kOutside = 0.5f;  // metres: well clear of the head
+  const auto hit = ray.from_outside
+                       ? cast_ray(mesh, ray.origin + kOutside * glm::normalize(ray.direction), -ray.direction)
+                       : cast_ray(mesh, ray.origin, ray.direction);
   if (!hit) return;
   const mat4 inv = glm::inverse(anchors.model[static_cast<std::size_t>(ray.joint)]);
   out.push_back(BodySite{ray.name, ray.joint, vec3(inv * vec4(hit->point, 1.0f)),
@@ -83,20 +89,21 @@ std::vector<BodySite> find_body_sites(const Skeleton& skeleton, const Mesh& mesh
     const vec3 axis(a.at(skull).x, 0.0f, a.at(skull).z);
     auto level = [&](float fraction) { return vec3(axis.x, eyes.y + fraction * e, axis.z); };
     rays.push_back({"head_top", skull, level(0.0f), up});
-    rays.push_back({"forehead", skull, level(0.5f), fwd});
-    rays.push_back({"eyebrows", skull, level(0.22f), fwd});
-    rays.push_back({"nose", skull, level(-0.38f), fwd});
-    rays.push_back({"upper_lip", skull, level(-0.62f), fwd});
-    rays.push_back({"lips", skull, level(-0.70f), fwd});
-    rays.push_back({"lower_lip", skull, level(-0.78f), fwd});
-    rays.push_back({"chin", skull, level(-0.98f), glm::normalize(vec3(0, -0.25f, 1))});
+    rays.push_back({"forehead", skull, level(0.5f), fwd, true});
+    rays.push_back({"eyebrows", skull, level(0.22f), fwd, true});
+    rays.push_back({"nose", skull, level(-0.38f), fwd, true});
+    rays.push_back({"upper_lip", skull, level(-0.62f), fwd, true});
+    rays.push_back({"lips", skull, level(-0.70f), fwd, true});
+    rays.push_back({"lower_lip", skull, level(-0.78f), fwd, true});
+    rays.push_back({"chin", skull, level(-0.98f), glm::normalize(vec3(0, -0.25f, 1)), true});
     rays.push_back({"under_chin", skull, level(-0.85f) + vec3(0, 0, 0.02f), glm::normalize(vec3(0, -1, 0.35f))});
     for (int side = 0; side < 2; ++side) {
       const float x = side == 0 ? 1.0f : -1.0f;
       const std::string p = side == 0 ? "l_" : "r_";
       const int eye = side == 0 ? l_eye : r_eye;
-      rays.push_back({p + "eye", skull, vec3(a.at(eye).x, eyes.y, axis.z), fwd});
-      rays.push_back({p + "cheek", skull, level(-0.40f) + vec3(x * half_eyes, 0, 0), glm::normalize(vec3(0.6f * x, 0, 1))});
+      rays.push_back({p + "eye", skull, vec3(a.at(eye).x, eyes.y, axis.z), fwd, true});
+      rays.push_back({p + "cheek", skull, level(-0.40f) + vec3(x * half_eyes, 0, 0), glm::normalize(vec3(0.6f * x, 0, 1)),
+                      true});
       rays.push_back({p + "ear", skull, level(-0.12f), vec3(x, 0, 0)});
       rays.push_back({p + "temple", skull, level(0.25f), glm::normalize(vec3(x, 0, 0.6f))});
     }

@@ -5,6 +5,7 @@
 #include <functional>
 #include <string>
 
+#include "gestura/body/avatar_proportions.hpp"
 #include "gestura/core/error.hpp"
 
 namespace gestura {
@@ -23,27 +24,98 @@ float smoothstep(float e0, float e1, float x) {
   return t * t * (3.0f - 2.0f * t);
 }
 
-// Landmarks of the default face, from the skeleton plus fixed proportions (as avatar_volume.cpp).
+// What a vertex of the face is: skin (soft tissue, every field applies), or one of the rigid
+// parts, which only turn with the jaw (teeth, tongue) or shift as a whole (tongue), or never move
+// (eyeballs: gaze belongs to the eye joints).
+enum class Part : std::uint8_t { Soft, Teeth, Tongue, Eyeball };
+
+Part part_of(std::uint8_t material) {
+  switch (static_cast<MaterialId>(material)) {
+    case MaterialId::Teeth: return Part::Teeth;
+    case MaterialId::Tongue: return Part::Tongue;
+    case MaterialId::EyeWhite:
+    case MaterialId::Iris:
+    case MaterialId::Pupil: return Part::Eyeball;
+    default: return Part::Soft;
+  }
+}
+
+struct FacePoint {
+  vec3 p;
+  float jaw;  // skin weight of the jaw joint
+  Part part;
+};
+
+// Landmarks of the default face, from the skeleton plus fixed proportions (avatar_proportions.hpp).
 struct Face {
   float k;
   vec3 jaw;          // temporomandibular joint
   vec3 eye[2];       // [0] left (+X), [1] right
+  // The eye opening as seen from the eye's centre: for a lateral offset dx, the elevation angles
+  // (radians about the eye's x axis, up > 0) of the upper and lower lid margins on the eyeball;
+  // tabulated over |dx| < opening_half_width, both 0 outside.
+  static constexpr int kOpeningSamples = 33;
+  float opening_half_width = 0.0f;
+  std::array<float, kOpeningSamples> upper{}, lower{};
+
   vec3 v(float x, float y, float z) const { return vec3(x, y, z) * k; }
-  float mouth_y() const { return 1.5255f * k; }
+  float mouth_y() const { return proportions::kMouthLineY * k; }
+  vec3 tongue_centre() const {
+    return v(proportions::kTongueCentre[0], proportions::kTongueCentre[1], proportions::kTongueCentre[2]);
+  }
+  float tongue_length() const { return proportions::kTongueRadii[2] * k; }
+
+  // Upper and lower margin elevations at lateral offset dx from the eye centre.
+  std::pair<float, float> opening(float dx) const {
+    const float t = std::abs(dx) / opening_half_width * (kOpeningSamples - 1);
+    if (t >= kOpeningSamples - 1) return {0.0f, 0.0f};
+    const int i = static_cast<int>(t);
+    const float f = t - static_cast<float>(i);
+    return {upper[i] + f * (upper[i + 1] - upper[i]), lower[i] + f * (lower[i + 1] - lower[i])};
+  }
 };
 
-using Field = std::function<vec3(const vec3&)>;
+// Where the carved eye opening (avatar_volume.cpp) lays the eyeball bare: scan the eyeball's
+// surface for the highest and lowest point inside the opening ellipsoid at each lateral offset.
+void tabulate_eye_opening(Face& f) {
+  const float r = proportions::kEyeballRadius * f.k;
+  const vec3 centre = vec3(proportions::kEyeOpeningCentre[0], proportions::kEyeOpeningCentre[1],
+                           proportions::kEyeOpeningCentre[2]) * f.k;
+  const vec3 radii = vec3(proportions::kEyeOpeningRadii[0], proportions::kEyeOpeningRadii[1],
+                          proportions::kEyeOpeningRadii[2]) * f.k;
+  f.opening_half_width = std::min(radii.x, r);
+  constexpr int kSteps = 200;
+  for (int i = 0; i < Face::kOpeningSamples; ++i) {
+    const float dx = f.opening_half_width * static_cast<float>(i) / (Face::kOpeningSamples - 1);
+    float hi = 0.0f, lo = 0.0f;
+    bool any = false;
+    for (int s = 0; s <= kSteps; ++s) {
+      const float dy = r * (2.0f * static_cast<float>(s) / kSteps - 1.0f);
+      const float z2 = r * r - dx * dx - dy * dy;
+      if (z2 <= 0.0f) continue;
+      const vec3 q = (vec3(dx, dy, std::sqrt(z2)) - centre) / radii;
+      if (glm::dot(q, q) >= 1.0f) continue;
+      const float elevation = std::atan2(dy, std::sqrt(z2));
+      hi = any ? std::max(hi, elevation) : elevation;
+      lo = any ? std::min(lo, elevation) : elevation;
+      any = true;
+    }
+    f.upper[static_cast<std::size_t>(i)] = any ? hi : 0.0f;
+    f.lower[static_cast<std::size_t>(i)] = any ? lo : 0.0f;
+  }
+}
+
+using Field = std::function<vec3(const FacePoint&)>;
 
 // --- The deformation vocabulary: every morph is a weighted sum of these ---
 
-// Lower face (below the mouth slit) rotated about the jaw joint: opens the mouth.
-vec3 jaw_open(const Face& f, const vec3& p, float degrees) {
-  const float below = smoothstep(f.mouth_y() + 0.002f * f.k, f.mouth_y() - 0.004f * f.k, p.y);
-  const float reach = falloff(p, f.v(0, 1.505f, 0.055f), f.v(0.075f, 0.060f, 0.080f));
-  const float w = below * std::min(1.0f, 2.0f * reach);
-  if (w <= 0.0f) return vec3(0.0f);
+// Turns the point (after an optional shift of its own) about the jaw joint by its jaw weight: the
+// lower face, lower teeth and tongue open with the jaw exactly as skinning turns them.
+vec3 jaw_turn(const Face& f, const FacePoint& fp, float degrees, vec3 shift = vec3(0.0f)) {
+  const vec3 p = fp.p + shift;
+  if (fp.jaw <= 0.0f || degrees == 0.0f) return shift;
   const quat r = glm::angleAxis(deg(degrees), vec3(1, 0, 0));
-  return (r * (p - f.jaw) + f.jaw - p) * w;
+  return shift + (r * (p - f.jaw) + f.jaw - p) * fp.jaw;
 }
 
 // Mouth corners out (+) or in (−) along x, lips stretched thin.
@@ -77,9 +149,11 @@ vec3 lower_lip_tuck(const Face& f, const vec3& p, float amount) {
   return vec3(0, 0.004f * f.k, -0.005f * f.k) * falloff(p, f.v(0, 1.517f, 0.099f), f.v(0.028f, 0.010f, 0.020f)) * amount;
 }
 
-// Tongue forward (+z) and up (+y).
-vec3 tongue(const Face& f, const vec3& p, vec3 move) {
-  return move * f.k * falloff(p, f.v(0, 1.5205f, 0.086f), f.v(0.018f, 0.007f, 0.016f));
+// The tongue's shift (metres at 1.70 m, in the closed jaw's frame): its front moves by `move`, its
+// root stays, the length between stretches.
+vec3 tongue_shift(const Face& f, const vec3& p, vec3 move) {
+  const float z0 = f.tongue_centre().z - f.tongue_length(), z1 = f.tongue_centre().z + f.tongue_length();
+  return move * f.k * smoothstep(z0, z1, p.z);
 }
 
 // Corner of the mouth up/out (smile) or down (frown) on one side, with the cheek following.
@@ -92,22 +166,36 @@ vec3 brow(const Face& f, const vec3& p, float side, float x, vec3 move) {
   return move * f.k * falloff(p, f.v(side * x, 1.630f, 0.086f), f.v(0.022f, 0.020f, 0.030f));
 }
 
-// Squash the eye opening towards a line: the upper lid comes down (amount > 0) or goes up (< 0).
-vec3 upper_lid(const Face& f, const vec3& p, int eye, float amount) {
-  const vec3 e = f.eye[eye];
-  const float lateral = falloff(vec3(p.x, e.y, p.z), vec3(e.x, e.y, e.z + 0.012f * f.k), f.v(0.022f, 1.0f, 0.016f));
-  if (lateral <= 0.0f) return vec3(0.0f);
-  const float base = e.y - 0.0055f * f.k;  // just above the lower lid
-  const float h = p.y - base;
-  if (h <= 0.0f) return vec3(0.0f);
-  const float taper = 1.0f - smoothstep(0.010f * f.k, 0.022f * f.k, h);
-  return vec3(0, -h * 0.92f, 0.002f * f.k * smoothstep(0.0f, 0.008f * f.k, h)) * (lateral * taper * amount);
-}
-
-vec3 lower_lid(const Face& f, const vec3& p, int eye, float amount) {
-  const vec3 e = f.eye[eye];
-  return vec3(0, 0.003f * f.k, 0.001f * f.k) * amount *
-         falloff(p, e + vec3(0, -0.012f, 0.010f) * f.k, f.v(0.022f, 0.012f, 0.018f));
+// The lids turn about the eye's centre, so they slide over the eyeball instead of squashing it.
+// `upper` and `lower` are shares of the opening's height (the angle between the margins at that
+// lateral offset) by which the upper lid comes down and the lower goes up; negative opens wider.
+// The turn is full on the lid skin and fades out towards the brow and the cheek.
+vec3 lids(const Face& f, const vec3& p, int eye, float upper, float lower) {
+  const vec3 q = p - f.eye[eye];
+  if (q.z < -0.002f * f.k) return vec3(0.0f);
+  const auto [up, low] = f.opening(q.x);
+  const float gap = up - low;
+  if (gap <= 0.0f) return vec3(0.0f);
+  const float elevation = std::atan2(q.y, q.z);
+  const float lid_surface = (proportions::kEyeballRadius + proportions::kLidThickness) * f.k;
+  const float near = 1.0f - smoothstep(lid_surface + 0.002f * f.k, lid_surface + 0.009f * f.k, glm::length(q));
+  if (near <= 0.0f) return vec3(0.0f);
+  const float middle = 0.5f * (up + low);
+  const float is_upper = smoothstep(middle - deg(6.0f), middle + deg(6.0f), elevation);
+  // Closing lids overlap a little, so a full blink leaves no slit.
+  const float overlap = deg(3.0f) * smoothstep(0.0f, deg(10.0f), gap);
+  float angle = 0.0f;
+  if (is_upper > 0.0f) {
+    const float reach = 1.0f - smoothstep(up + deg(25.0f), up + deg(70.0f), elevation);
+    angle += is_upper * reach * (upper * gap + (upper > 0.0f ? upper * overlap : 0.0f));
+  }
+  if (is_upper < 1.0f) {
+    const float reach = 1.0f - smoothstep(-low + deg(20.0f), -low + deg(50.0f), -elevation);
+    angle -= (1.0f - is_upper) * reach * lower * gap;
+  }
+  angle *= near;
+  if (angle == 0.0f) return vec3(0.0f);
+  return glm::angleAxis(angle, vec3(1, 0, 0)) * q - q;  // a positive turn about +x brings the front down
 }
 
 vec3 cheek_puff(const Face& f, const vec3& p) {
@@ -122,28 +210,40 @@ struct MorphRecipe {
   Field field;
 };
 
+// A field that moves skin only (the rigid parts stay).
+Field soft(std::function<vec3(const vec3&)> on_skin) {
+  return [on_skin = std::move(on_skin)](const FacePoint& fp) {
+    return fp.part == Part::Soft ? on_skin(fp.p) : vec3(0.0f);
+  };
+}
+
 std::vector<MorphRecipe> recipes(const Face& f) {
   std::vector<MorphRecipe> r;
   auto viseme = [&](const char* name, float open, float wide, float round, float press, float tuck, vec3 tongue_move) {
-    r.push_back({name, [=, &f](const vec3& p) {
-                   return jaw_open(f, p, open) + mouth_wide(f, p, wide) + mouth_round(f, p, round) +
-                          mouth_press(f, p, press) + lower_lip_tuck(f, p, tuck) + tongue(f, p, tongue_move);
+    r.push_back({name, [=, &f](const FacePoint& fp) {
+                   if (fp.part == Part::Eyeball) return vec3(0.0f);
+                   const vec3 shift = fp.part == Part::Tongue ? tongue_shift(f, fp.p, tongue_move) : vec3(0.0f);
+                   vec3 d = jaw_turn(f, fp, open, shift);
+                   if (fp.part == Part::Soft)
+                     d += mouth_wide(f, fp.p, wide) + mouth_round(f, fp.p, round) + mouth_press(f, fp.p, press) +
+                          lower_lip_tuck(f, fp.p, tuck);
+                   return d;
                  }});
   };
-  //       name  jaw°  wide round press tuck  tongue (m at 1.70 m)
+  //       name  jaw°  wide round press tuck  tongue front (m at 1.70 m)
   viseme("sil", 0.0f, 0.0f, 0.0f, 0.3f, 0.0f, vec3(0.0f));
   viseme("PP", 0.0f, 0.0f, 0.1f, 1.0f, 0.0f, vec3(0.0f));
   viseme("FF", 3.0f, 0.2f, 0.0f, 0.0f, 1.0f, vec3(0.0f));
-  viseme("TH", 6.0f, 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.001f, 0.010f));
-  viseme("DD", 7.0f, 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.003f, 0.004f));
-  viseme("kk", 9.0f, 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, -0.002f));
-  viseme("CH", 5.0f, 0.0f, 0.6f, 0.0f, 0.0f, vec3(0, 0.002f, 0.0f));
-  viseme("SS", 3.0f, 0.6f, 0.0f, 0.0f, 0.0f, vec3(0.0f));
-  viseme("nn", 6.0f, 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.003f, 0.003f));
-  viseme("RR", 6.0f, 0.0f, 0.4f, 0.0f, 0.0f, vec3(0, 0.002f, -0.002f));
+  viseme("TH", 7.0f, 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.009f, 0.016f));
+  viseme("DD", 7.0f, 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.006f, 0.004f));
+  viseme("kk", 9.0f, 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.003f, -0.002f));
+  viseme("CH", 5.0f, 0.0f, 0.6f, 0.0f, 0.0f, vec3(0, 0.004f, 0.0f));
+  viseme("SS", 3.0f, 0.6f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.002f));
+  viseme("nn", 6.0f, 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.006f, 0.003f));
+  viseme("RR", 6.0f, 0.0f, 0.4f, 0.0f, 0.0f, vec3(0, 0.003f, -0.002f));
   viseme("aa", 16.0f, 0.1f, 0.0f, 0.0f, 0.0f, vec3(0.0f));
-  viseme("E", 10.0f, 0.6f, 0.0f, 0.0f, 0.0f, vec3(0.0f));
-  viseme("ih", 8.0f, 0.4f, 0.0f, 0.0f, 0.0f, vec3(0.0f));
+  viseme("E", 10.0f, 0.6f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.0f));
+  viseme("ih", 8.0f, 0.4f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.0f));
   viseme("oh", 12.0f, 0.0f, 0.7f, 0.0f, 0.0f, vec3(0.0f));
   viseme("ou", 6.0f, 0.0f, 1.0f, 0.0f, 0.0f, vec3(0.0f));
 
@@ -151,40 +251,46 @@ std::vector<MorphRecipe> recipes(const Face& f) {
   for (int e = 0; e < 2; ++e) {
     const float s = e == 0 ? 1.0f : -1.0f;
     const std::string sx = suffix[e];
-    r.push_back({"browInnerUp" + sx, [=, &f](const vec3& p) { return brow(f, p, s, 0.016f, vec3(0, 0.007f, 0.001f)); }});
+    r.push_back({"browInnerUp" + sx, soft([=, &f](const vec3& p) { return brow(f, p, s, 0.016f, vec3(0, 0.007f, 0.001f)); })});
   }
   for (int e = 0; e < 2; ++e) {
     const float s = e == 0 ? 1.0f : -1.0f;
     r.push_back({std::string("browOuterUp") + suffix[e],
-                 [=, &f](const vec3& p) { return brow(f, p, s, 0.046f, vec3(0, 0.007f, 0.0f)); }});
+                 soft([=, &f](const vec3& p) { return brow(f, p, s, 0.046f, vec3(0, 0.007f, 0.0f)); })});
   }
   for (int e = 0; e < 2; ++e) {
     const float s = e == 0 ? 1.0f : -1.0f;
     r.push_back({std::string("browDown") + suffix[e],
-                 [=, &f](const vec3& p) { return brow(f, p, s, 0.026f, vec3(-s * 0.002f, -0.006f, 0.001f)); }});
+                 soft([=, &f](const vec3& p) { return brow(f, p, s, 0.026f, vec3(-s * 0.002f, -0.006f, 0.001f)); })});
   }
   for (int e = 0; e < 2; ++e)
-    r.push_back({std::string("eyeBlink") + suffix[e], [=, &f](const vec3& p) { return upper_lid(f, p, e, 1.0f); }});
+    r.push_back({std::string("eyeBlink") + suffix[e], soft([=, &f](const vec3& p) { return lids(f, p, e, 0.85f, 0.15f); })});
   for (int e = 0; e < 2; ++e)
-    r.push_back({std::string("eyeWide") + suffix[e], [=, &f](const vec3& p) { return upper_lid(f, p, e, -0.25f); }});
+    r.push_back({std::string("eyeWide") + suffix[e], soft([=, &f](const vec3& p) { return lids(f, p, e, -0.3f, -0.1f); })});
   for (int e = 0; e < 2; ++e)
-    r.push_back({std::string("eyeSquint") + suffix[e],
-                 [=, &f](const vec3& p) { return lower_lid(f, p, e, 1.0f) + upper_lid(f, p, e, 0.25f); }});
-  r.push_back({"cheekPuff", [&f](const vec3& p) { return cheek_puff(f, p); }});
+    r.push_back({std::string("eyeSquint") + suffix[e], soft([=, &f](const vec3& p) { return lids(f, p, e, 0.15f, 0.35f); })});
+  r.push_back({"cheekPuff", soft([&f](const vec3& p) { return cheek_puff(f, p); })});
   for (int e = 0; e < 2; ++e) {
     const float s = e == 0 ? 1.0f : -1.0f;
     r.push_back({std::string("mouthSmile") + suffix[e],
-                 [=, &f](const vec3& p) { return mouth_corner(f, p, s, vec3(s * 0.004f, 0.006f, -0.002f), 1.0f); }});
+                 soft([=, &f](const vec3& p) { return mouth_corner(f, p, s, vec3(s * 0.004f, 0.006f, -0.002f), 1.0f); })});
   }
   for (int e = 0; e < 2; ++e) {
     const float s = e == 0 ? 1.0f : -1.0f;
     r.push_back({std::string("mouthFrown") + suffix[e],
-                 [=, &f](const vec3& p) { return mouth_corner(f, p, s, vec3(s * 0.001f, -0.005f, 0.0f), 0.0f); }});
+                 soft([=, &f](const vec3& p) { return mouth_corner(f, p, s, vec3(s * 0.001f, -0.005f, 0.0f), 0.0f); })});
   }
-  r.push_back({"mouthPucker", [&f](const vec3& p) { return mouth_round(f, p, 1.0f); }});
-  r.push_back({"mouthPress", [&f](const vec3& p) { return mouth_press(f, p, 1.0f); }});
-  r.push_back({"mouthOpen", [&f](const vec3& p) { return jaw_open(f, p, 14.0f); }});
-  r.push_back({"tongueOut", [&f](const vec3& p) { return jaw_open(f, p, 8.0f) + tongue(f, p, vec3(0, 0.0f, 0.018f)); }});
+  r.push_back({"mouthPucker", soft([&f](const vec3& p) { return mouth_round(f, p, 1.0f); })});
+  r.push_back({"mouthPress", soft([&f](const vec3& p) { return mouth_press(f, p, 1.0f); })});
+  r.push_back({"mouthOpen", [&f](const FacePoint& fp) {
+                 return fp.part == Part::Eyeball ? vec3(0.0f) : jaw_turn(f, fp, 14.0f);
+               }});
+  // The tongue slides out over the lower teeth and lip as the jaw drops.
+  r.push_back({"tongueOut", [&f](const FacePoint& fp) {
+                 if (fp.part == Part::Eyeball) return vec3(0.0f);
+                 const vec3 shift = fp.part == Part::Tongue ? tongue_shift(f, fp.p, vec3(0, 0.016f, 0.036f)) : vec3(0.0f);
+                 return jaw_turn(f, fp, 12.0f, shift);
+               }});
   return r;
 }
 
@@ -230,6 +336,10 @@ std::vector<MorphTarget> build_face_morphs(const Skeleton& skeleton, const Mesh&
     return vec3(model[static_cast<std::size_t>(j)][3]);
   };
   Face f{scale, at("temporomandibular"), {at("l_eyeball_joint"), at("r_eyeball_joint")}};
+  tabulate_eye_opening(f);
+  const int jaw = skeleton.find("temporomandibular");
+  if (mesh.materials.size() != mesh.vertex_count() || mesh.weights.size() != mesh.vertex_count())
+    throw Error("face morphs: the mesh needs materials and skin weights");
   // Only the head moves: a generous box around the face.
   const vec3 lo = f.v(-0.11f, 1.46f, -0.02f), hi = f.v(0.11f, 1.70f, 0.16f);
   std::vector<std::uint32_t> head;
@@ -242,7 +352,10 @@ std::vector<MorphTarget> build_face_morphs(const Skeleton& skeleton, const Mesh&
     MorphTarget m;
     m.name = recipe.name;
     for (std::uint32_t v : head) {
-      const vec3 d = recipe.field(mesh.positions[v]);
+      float jaw_weight = 0.0f;
+      for (int i = 0; i < 4; ++i)
+        if (mesh.joints[v][i] == jaw) jaw_weight += mesh.weights[v][i];
+      const vec3 d = recipe.field({mesh.positions[v], jaw_weight, part_of(mesh.materials[v])});
       if (glm::dot(d, d) > 1e-14f) {
         m.vertices.push_back(v);
         m.position_deltas.push_back(d);

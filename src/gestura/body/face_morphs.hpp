@@ -1,15 +1,17 @@
 #pragma once
 // Facial morph targets of the default avatar, made by region-based free-form deformation
 // (realtime-virtual-humans.txt §5.1): each morph is a sum of displacement fields, each confined to
-// a region of the face with a smooth (1 − r²)² falloff — lift a brow, rotate the lower face about
-// the jaw, pull the lips towards the mouth centre, squash a lid onto the other.
+// a region of the face with a smooth (1 − r²)² falloff — lift a brow, pull the lips towards the
+// mouth centre — plus two rotations: the lower face, lower teeth and tongue turn about the jaw
+// joint by their jaw skin weight (so a morph opens the mouth exactly as the jaw bone does), and a
+// lid turns about its eye's centre, sliding over the eyeball.
 //
 // Naming (camelCase with _L / _R for the avatar's left / right, as in ARKit blend shapes):
 //   visemes (Oculus/MPEG-4-style set): sil PP FF TH DD kk CH SS nn RR aa E ih oh ou
 //   browInnerUp_L/R browOuterUp_L/R browDown_L/R eyeBlink_L/R eyeWide_L/R eyeSquint_L/R cheekPuff
 //   mouthSmile_L/R (lip corner up) mouthFrown_L/R mouthPucker mouthPress mouthOpen tongueOut
-// The lips and lids are one surface with the face (no separate eye or mouth meshes), so blinks
-// squash the exposed eyeball under the lid and mouth shapes stretch the mouth slit.
+// The rigid face parts (face_parts.hpp) only ever move rigidly: eyeballs not at all (gaze is the eye
+// joints'), teeth with the jaw, the tongue with the jaw and by its own forward/up shift.
 #include <array>
 #include <string_view>
 #include <utility>
@@ -29,6 +31,7 @@ inline constexpr std::array<std::string_view, 21> kExpressionMorphNames{
     "mouthPress",    "mouthOpen",     "tongueOut"};
 
 // All morphs above, visemes first. `scale` = avatar height / 1.70 m. Only vertices of the head move.
+// `mesh` needs its materials (they tell the rigid parts apart) and skin weights (the jaw's).
 std::vector<MorphTarget> build_face_morphs(const Skeleton& skeleton, const Mesh& mesh, float scale);
 
 // Fills every morph's normal_deltas: the change of the area-weighted vertex normal when the morph

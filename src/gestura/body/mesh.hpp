@@ -14,8 +14,9 @@ namespace gestura {
 using JointIndices = glm::u16vec4;
 
 // Coarse surface regions: let renderers colour skin, clothing, hair, eyes, lips, teeth separately.
-enum class MaterialId : std::uint8_t { Skin = 0, Cloth = 1, Hair = 2, EyeWhite = 3, Iris = 4, Lips = 5, Teeth = 6, Tongue = 7, Brow = 8, Pupil = 9 };
-inline constexpr int kMaterialCount = 10;
+// Mouth is the lining of the oral cavity (dark: it lies in the shadow of the lips).
+enum class MaterialId : std::uint8_t { Skin = 0, Cloth = 1, Hair = 2, EyeWhite = 3, Iris = 4, Lips = 5, Teeth = 6, Tongue = 7, Brow = 8, Pupil = 9, Mouth = 10 };
+inline constexpr int kMaterialCount = 11;
 
 // A morph target (ukrainian-sign-language-3d-model.txt eq. 7: V' = V + Σ w·ΔV): sparse offsets.
 struct MorphTarget {

@@ -28,6 +28,7 @@ constexpr std::array<MaterialLook, kMaterialCount> kLooks{{
     {"tongue", {0.75f, 0.35f, 0.38f, 1.0f}, 0.5f},
     {"brow", {0.18f, 0.11f, 0.07f, 1.0f}, 0.9f},
     {"pupil", {0.02f, 0.02f, 0.02f, 1.0f}, 0.2f},
+    {"mouth", {0.20f, 0.06f, 0.06f, 1.0f}, 0.6f},
 }};
 
 // Binary chunk under construction: each view starts 4-byte aligned.

@@ -24,11 +24,13 @@ Look::Look() {
   set(MaterialId::Tongue, {0.78f, 0.38f, 0.40f}, {0.5f, 0.4f, 0.3f, 40.0f});
   set(MaterialId::Brow, {0.18f, 0.12f, 0.08f}, {0.3f, 0.0f, 0.05f, 10.0f});
   set(MaterialId::Pupil, {0.02f, 0.02f, 0.02f}, {0.0f, 0.0f, 1.5f, 300.0f});
+  // The oral cavity: a dark red that reads as the shadowed inside of the mouth (no shadows are cast).
+  set(MaterialId::Mouth, {0.22f, 0.07f, 0.07f}, {0.3f, 0.2f, 0.05f, 20.0f});
 }
 
 namespace {
 constexpr const char* kMaterialNames[kMaterialCount] = {"skin", "cloth", "hair", "eye-white", "iris",
-                                                         "lips", "teeth", "tongue", "brow", "pupil"};
+                                                         "lips", "teeth", "tongue", "brow", "pupil", "mouth"};
 }
 
 const char* material_name(MaterialId material) { return kMaterialNames[static_cast<std::size_t>(material)]; }

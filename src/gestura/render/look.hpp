@@ -26,7 +26,7 @@ struct Look {
   void set_color(MaterialId material, const vec3& srgb) { colors[static_cast<std::size_t>(material)] = srgb; }
 };
 
-// skin, cloth, hair, eye-white, iris, lips, teeth, tongue, brow, pupil.
+// skin, cloth, hair, eye-white, iris, lips, teeth, tongue, brow, pupil, mouth (the oral cavity).
 const char* material_name(MaterialId material);
 // Throws gestura::Error listing the names when `name` is none of them.
 MaterialId parse_material(const std::string& name);

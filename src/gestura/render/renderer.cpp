@@ -18,7 +18,8 @@ namespace {
 constexpr GLint kMorphDeltaUnit = 1, kMorphWeightUnit = 2;
 constexpr GLuint kJointBlockBinding = 0;
 
-// Compiled with "#define MAX_JOINTS n" prepended (n from the GL's uniform block size).
+// Compiled with "#define MAX_JOINTS n" (n from the GL's uniform block size) and "#define MATERIALS m"
+// (kMaterialCount) prepended.
 constexpr const char* kVertexShader = R"(
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -33,8 +34,8 @@ uniform samplerBuffer u_morph_weights; // one weight per morph target
 uniform bool u_skin_on_gpu;
 uniform bool u_morphs_active;
 uniform mat4 u_view_projection;
-uniform vec3 u_albedo[10];    // per MaterialId, linear
-uniform vec4 u_surface[10];   // per MaterialId: wrap, scatter, specular, shininess
+uniform vec3 u_albedo[MATERIALS];    // per MaterialId, linear
+uniform vec4 u_surface[MATERIALS];   // per MaterialId: wrap, scatter, specular, shininess
 
 out vec3 v_world;
 out vec3 v_normal;
@@ -62,7 +63,7 @@ void main() {
   }
   v_world = p;
   v_normal = n;
-  uint material = min(a_material, 9u);
+  uint material = min(a_material, uint(MATERIALS - 1));
   v_albedo = u_albedo[material];
   v_surface = u_surface[material];
   gl_Position = u_view_projection * vec4(p, 1.0);
@@ -164,7 +165,7 @@ Renderer::Renderer(const Look& look, int msaa_samples) : gl_(std::make_unique<Gl
   glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &block_bytes);
   max_gpu_joints_ = std::min<std::size_t>(1024, static_cast<std::size_t>(block_bytes) / sizeof(mat4));
   const GLuint vs = compile(GL_VERTEX_SHADER, "#version 330 core\n#define MAX_JOINTS " + std::to_string(max_gpu_joints_) +
-                                                  kVertexShader);
+                                                  "\n#define MATERIALS " + std::to_string(kMaterialCount) + kVertexShader);
   const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
   Gl& g = *gl_;
   g.program = glCreateProgram();
