@@ -335,3 +335,15 @@ TEST(SignNonManual, GazeAtTheHandsLooksBetweenThemWhenBothAreUp) {
   EXPECT_GT(yaw(other.clip), between + deg(3.0f));
   EXPECT_NEAR(between, 0.0f, deg(3.0f));
 }
+
+TEST(SignNonManual, GazeAtTheOtherHandAtRestTurnsBothEyesToItsSide) {
+  // One-handed sign, HC: the left hand hangs at the avatar's left side, below and a little behind
+  // the eyes. Both eyes turn down and to the left (+ yaw) as far as they go; neither to the right.
+  const SignSynthesis r = perform("<hnm_eyegaze tag=\"HC\"/>\n");
+  const float mid = 0.5f * (r.plan.sign_start + r.plan.sign_end);
+  for (const char* eye : {"l_eyeball_joint", "r_eyeball_joint"}) {
+    const vec3 a = angles_at(r.clip, eye, mid);
+    EXPECT_GT(a.y, deg(20.0f)) << eye;
+    EXPECT_GT(a.x, deg(20.0f)) << eye;
+  }
+}

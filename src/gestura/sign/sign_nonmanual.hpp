@@ -70,9 +70,12 @@ struct SignNonManualActions {
 // values (they become warnings); throws gestura::Error for non-finite or reversed times.
 SignNonManualActions plan_sign_nonmanuals(std::span<const sign::NonManual> tiers, float start, float end);
 
-// Aims both eyeball joints at the hand's palm centre, blended in by each gaze's ramps, keyed at
-// `fps` and at the ramp steps (the clip's arm tracks give the hand's position). Replaces the
-// eyeball tracks. Returns false (and writes nothing) when the skeleton has no eyeball joints.
+// Aims both eyeball joints at the hand's palm centre (face/eye_aim.hpp, the aiming the fingerspelling
+// gaze uses too), blended in by each gaze's ramps, keyed at `fps` and at the ramp steps (the clip's
+// arm tracks give the hand's position). Replaces the eyeball tracks. Eyes only, within their limits:
+// HamNoSys writes the head on its own tier (hnm_head: NF tilts it forwards, LI turns it with the
+// gaze), so the head does not join uninvited as it does in fingerspelling, where nothing else says
+// what the head does. Returns false (and writes nothing) when the skeleton has no eyeball joints.
 bool write_hand_gaze(std::span<const HandGaze> gaze, const SigningRig& rig, float fps, Clip& clip);
 
 // plan_sign_nonmanuals, then everything written into the clip (face channels, head, jaw from
