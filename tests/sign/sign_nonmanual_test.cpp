@@ -241,6 +241,30 @@ TEST(SignNonManual, EyesLookUpOrFollowTheDominantHand) {
   EXPECT_LT(off_target(at_hand.clip), off_target(plain.clip) - deg(20.0f));
 }
 
+TEST(SignNonManual, HeadTurnedWithTheGazeJoinsTheEyesOnTheHand) {
+  // LI with HI: the head bends towards the hand at the chest (~50° below the eyes) for what is
+  // beyond the eyes' range, so the eyes reach the palm that alone they cannot.
+  const SignSynthesis eyes = perform("<hnm_eyegaze tag=\"HI\"/>\n");
+  const SignSynthesis with_head = perform("<hnm_head tag=\"LI\"/>\n<hnm_eyegaze tag=\"HI\"/>\n");
+  EXPECT_TRUE(with_head.warnings.empty());
+  const float mid = 0.5f * (eyes.plan.sign_start + eyes.plan.sign_end);
+  auto pitch = [&](const Clip& clip) { return angles_at(clip, "vc4", mid).x + angles_at(clip, "skullbase", mid).x; };
+  EXPECT_NEAR(pitch(eyes.clip), 0.0f, deg(0.5f));
+  EXPECT_GT(pitch(with_head.clip), deg(15.0f));  // forwards, down to the hand
+  auto off_target = [&](const Clip& clip) {
+    const auto m = model_at(clip, mid);
+    const std::size_t eye = static_cast<std::size_t>(joint_index("r_eyeball_joint"));
+    const vec3 sight = glm::normalize(vec3(m[eye] * vec4(0, 0, 1, 0)));
+    const HandRig& h = fx().rig.hand(Hand::Right);
+    const vec3 palm(m[static_cast<std::size_t>(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
+    return std::acos(std::clamp(glm::dot(sight, glm::normalize(palm - vec3(m[eye][3]))), -1.0f, 1.0f));
+  };
+  EXPECT_GT(off_target(eyes.clip), deg(15.0f));
+  EXPECT_LT(off_target(with_head.clip), deg(5.0f));
+  // Without any gaze LI has nothing to follow.
+  EXPECT_EQ(perform("<hnm_head tag=\"LI\"/>\n").warnings.size(), 1u);
+}
+
 TEST(SignNonManual, IslSignsWithTiersArePerformedWithoutWarnings) {
   const std::string dir = gestura::test::shared_data() + "/sigml-isl";
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared data at " << dir;

@@ -166,12 +166,15 @@ class TierPlanner {
     return false;
   }
 
-  // The head turned with the eyes (LI), once every fixed gaze direction is known.
+  // The head turned with the eyes (LI), once every gaze is known: by half a fixed direction, and
+  // along with every gaze at the hands.
   bool head_with_gaze() {
-    if (!gaze_) return false;
-    add_head(HeadAxis::pitch, 0.5f * gaze_->down);
-    add_head(HeadAxis::yaw, 0.5f * gaze_->left);
-    return true;
+    for (HandGaze& g : out_.gaze) g.with_head = true;
+    if (gaze_) {
+      add_head(HeadAxis::pitch, 0.5f * gaze_->down);
+      add_head(HeadAxis::yaw, 0.5f * gaze_->left);
+    }
+    return gaze_ || !out_.gaze.empty();
   }
 
  private:
@@ -446,8 +449,8 @@ SignNonManualActions plan_sign_nonmanuals(std::span<const sign::NonManual> tiers
   for (const sign::NonManual* nm : linked) {
     planner.select(*nm);
     if (planner.head_with_gaze()) ++out.mapped;
-    else out.warnings.push_back({nm->line, "head 'LI' (head turned with the eyes) needs an eye gaze direction "
-                                           "(UP, DN, LE, ...) in the sign; not performed"});
+    else out.warnings.push_back({nm->line, "head 'LI' (head turned with the eyes) needs an eye gaze "
+                                           "(UP, DN, LE, ..., HI, HC, HD) in the sign; not performed"});
   }
   return out;
 }
@@ -478,7 +481,7 @@ bool write_hand_gaze(std::span<const HandGaze> gaze, const SigningRig& rig, floa
   // Where overlapping spans hand over, the target moves between theirs by their weights.
   fc::write_gaze(s, times, [&](float t, std::span<const mat4> model) {
     vec3 target(0.0f);
-    float weight = 0.0f;
+    float weight = 0.0f, head = 0.0f;
     for (std::size_t g = 0; g < gaze.size(); ++g) {
       const float w = fc::action_weight(envelopes[g], t);
       if (w <= 0.0f) continue;
@@ -491,9 +494,9 @@ bool write_hand_gaze(std::span<const HandGaze> gaze, const SigningRig& rig, floa
       }
       target += w * point;
       weight += w;
+      head += gaze[g].with_head ? w : 0.0f;
     }
-    // Eyes only: the notation moves the head on its own tier (hnm_head), see the header.
-    return weight > 0.0f ? fc::GazeTarget{target / weight, weight, 0.0f} : fc::GazeTarget{};
+    return weight > 0.0f ? fc::GazeTarget{target / weight, weight, head} : fc::GazeTarget{};
   }, clip);
   return true;
 }
@@ -505,10 +508,13 @@ std::vector<NonManualWarning> add_sign_nonmanuals(std::span<const sign::NonManua
   const Skeleton& s = rig.skeleton();
   const int first_line = tiers.empty() ? 0 : tiers.front().line;
   if (!actions.face.empty()) fc::write_face_channels(actions.face, clip);
-  if (!actions.head.empty()) {
-    if (s.find("vc4") >= 0 && s.find("skullbase") >= 0) fc::write_head_rotations(actions.head, s, clip);
-    else warnings.push_back({first_line, "the avatar has no vc4/skullbase joints: head movements not performed"});
+  const bool has_head = s.find("vc4") >= 0 && s.find("skullbase") >= 0;
+  const bool head_with_hands = std::any_of(actions.gaze.begin(), actions.gaze.end(), [](const HandGaze& g) { return g.with_head; });
+  if (!has_head && (!actions.head.empty() || head_with_hands)) {
+    warnings.push_back({first_line, "the avatar has no vc4/skullbase joints: head movements not performed"});
+    for (HandGaze& g : actions.gaze) g.with_head = false;
   }
+  if (!actions.head.empty() && has_head) fc::write_head_rotations(actions.head, s, clip);
   fc::write_jaw_from_channel(s, clip);
   if (!write_hand_gaze(actions.gaze, rig, fps, clip))
     warnings.push_back({first_line, "the avatar has no eyeball joints: eye gaze not performed"});
