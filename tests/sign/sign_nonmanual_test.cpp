@@ -64,6 +64,16 @@ std::vector<mat4> model_at(const Clip& clip, float t) {
 
 vec3 position(const std::vector<mat4>& model, const char* name) { return vec3(model[static_cast<std::size_t>(joint_index(name))][3]); }
 
+// Radians between the right eye's line of sight and its direction to the right palm centre at t.
+float off_target(const Clip& clip, float t) {
+  const auto m = model_at(clip, t);
+  const std::size_t eye = static_cast<std::size_t>(joint_index("r_eyeball_joint"));
+  const vec3 sight = glm::normalize(vec3(m[eye] * vec4(0, 0, 1, 0)));
+  const HandRig& h = fx().rig.hand(Hand::Right);
+  const vec3 palm(m[static_cast<std::size_t>(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
+  return std::acos(std::clamp(glm::dot(sight, glm::normalize(palm - vec3(m[eye][3]))), -1.0f, 1.0f));
+}
+
 float channel_at(const Clip& clip, std::string_view name, float t) {
   const int c = clip.find_channel(std::string(name));
   return c < 0 ? 0.0f : sample_track(clip.channels[static_cast<std::size_t>(c)], t);
@@ -230,15 +240,23 @@ TEST(SignNonManual, EyesLookUpOrFollowTheDominantHand) {
   const SignSynthesis at_hand = perform("<hnm_eyegaze tag=\"HI\"/>\n");
   EXPECT_TRUE(at_hand.warnings.empty());
   EXPECT_FALSE(synthesis_problem(at_hand, fx().rig, 1e9f).has_value());
-  auto off_target = [&](const Clip& clip) {
-    const auto m = model_at(clip, mid);
-    const std::size_t eye = static_cast<std::size_t>(joint_index("r_eyeball_joint"));
-    const vec3 sight = glm::normalize(vec3(m[eye] * vec4(0, 0, 1, 0)));
-    const HandRig& h = fx().rig.hand(Hand::Right);
-    const vec3 palm(m[static_cast<std::size_t>(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
-    return std::acos(std::clamp(glm::dot(sight, glm::normalize(palm - vec3(m[eye][3]))), -1.0f, 1.0f));
-  };
-  EXPECT_LT(off_target(at_hand.clip), off_target(plain.clip) - deg(20.0f));
+  EXPECT_LT(off_target(at_hand.clip, mid), off_target(plain.clip, mid) - deg(20.0f));
+}
+
+TEST(SignNonManual, HeadTurnedWithTheGazeJoinsTheEyesOnTheHand) {
+  // LI with HI: the head bends towards the hand at the chest (~50° below the eyes) for what is
+  // beyond the eyes' range, so the eyes reach the palm that alone they cannot.
+  const SignSynthesis eyes = perform("<hnm_eyegaze tag=\"HI\"/>\n");
+  const SignSynthesis with_head = perform("<hnm_head tag=\"LI\"/>\n<hnm_eyegaze tag=\"HI\"/>\n");
+  EXPECT_TRUE(with_head.warnings.empty());
+  const float mid = 0.5f * (eyes.plan.sign_start + eyes.plan.sign_end);
+  auto pitch = [&](const Clip& clip) { return angles_at(clip, "vc4", mid).x + angles_at(clip, "skullbase", mid).x; };
+  EXPECT_NEAR(pitch(eyes.clip), 0.0f, deg(0.5f));
+  EXPECT_GT(pitch(with_head.clip), deg(15.0f));  // forwards, down to the hand
+  EXPECT_GT(off_target(eyes.clip, mid), deg(15.0f));
+  EXPECT_LT(off_target(with_head.clip, mid), deg(5.0f));
+  // Without any gaze LI has nothing to follow.
+  EXPECT_EQ(perform("<hnm_head tag=\"LI\"/>\n").warnings.size(), 1u);
 }
 
 TEST(SignNonManual, IslSignsWithTiersArePerformedWithoutWarnings) {
@@ -334,4 +352,16 @@ TEST(SignNonManual, GazeAtTheHandsLooksBetweenThemWhenBothAreUp) {
   EXPECT_LT(yaw(dominant.clip), between - deg(3.0f));
   EXPECT_GT(yaw(other.clip), between + deg(3.0f));
   EXPECT_NEAR(between, 0.0f, deg(3.0f));
+}
+
+TEST(SignNonManual, GazeAtTheOtherHandAtRestTurnsBothEyesToItsSide) {
+  // One-handed sign, HC: the left hand hangs at the avatar's left side, below and a little behind
+  // the eyes. Both eyes turn down and to the left (+ yaw) as far as they go; neither to the right.
+  const SignSynthesis r = perform("<hnm_eyegaze tag=\"HC\"/>\n");
+  const float mid = 0.5f * (r.plan.sign_start + r.plan.sign_end);
+  for (const char* eye : {"l_eyeball_joint", "r_eyeball_joint"}) {
+    const vec3 a = angles_at(r.clip, eye, mid);
+    EXPECT_GT(a.y, deg(20.0f)) << eye;
+    EXPECT_GT(a.x, deg(20.0f)) << eye;
+  }
 }

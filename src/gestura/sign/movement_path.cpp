@@ -19,6 +19,15 @@ vec3 unit(vec3 v, const char* what) {
   return v / n;
 }
 
+// The unit part of `v` across the unit vector `axis`; `what` names v ("arc bulge direction") and
+// `to` the axis, for the error when v (nearly) lies along it.
+vec3 unit_across(vec3 v, vec3 axis, const char* what, const char* to) {
+  const vec3 u = unit(v, what);
+  const vec3 across = u - glm::dot(u, axis) * axis;
+  if (glm::length(across) < 0.1f) throw Error(std::string(what) + " is parallel to " + to);
+  return glm::normalize(across);
+}
+
 void check_positive(float value, const char* what) {
   if (!std::isfinite(value) || value <= 0.0f) throw Error(std::string(what) + " must be a positive finite number");
 }
@@ -162,10 +171,7 @@ MovementPath arc_path(vec3 direction, float length, vec3 bulge_toward, float bul
   MovementPath path;
   path.kind = PathKind::Arc;
   path.direction = unit(direction, "arc direction");
-  const vec3 b = unit(bulge_toward, "arc bulge direction");
-  const vec3 n = b - glm::dot(b, path.direction) * path.direction;
-  if (glm::length(n) < 0.1f) throw Error("arc bulge direction is parallel to the movement direction");
-  path.bulge = glm::normalize(n);
+  path.bulge = unit_across(bulge_toward, path.direction, "arc bulge direction", "the movement direction");
   path.length = length;
   path.bulge_ratio = bulge_ratio;
   return path;
@@ -178,10 +184,7 @@ MovementPath circle_path(vec3 axis, float radius, vec3 start_radial, float turns
   MovementPath path;
   path.kind = PathKind::Circle;
   path.axis = unit(axis, "circle axis");
-  const vec3 r = unit(start_radial, "circle start direction");
-  const vec3 in_plane = r - glm::dot(r, path.axis) * path.axis;
-  if (glm::length(in_plane) < 0.1f) throw Error("circle start direction is parallel to its axis");
-  path.start_radial = glm::normalize(in_plane);
+  path.start_radial = unit_across(start_radial, path.axis, "circle start direction", "its axis");
   path.radius = radius;
   path.turns = turns;
   return path;

@@ -7,6 +7,7 @@
 
 #include "gestura/anim/sampler.hpp"
 #include "gestura/core/error.hpp"
+#include "gestura/face/eye_aim.hpp"
 #include "gestura/face/face_channels.hpp"
 #include "gestura/face/jaw_motion.hpp"
 #include "gestura/face/sampa.hpp"
@@ -165,12 +166,15 @@ class TierPlanner {
     return false;
   }
 
-  // The head turned with the eyes (LI), once every fixed gaze direction is known.
+  // The head turned with the eyes (LI), once every gaze is known: by half a fixed direction, and
+  // along with every gaze at the hands.
   bool head_with_gaze() {
-    if (!gaze_) return false;
-    add_head(HeadAxis::pitch, 0.5f * gaze_->down);
-    add_head(HeadAxis::yaw, 0.5f * gaze_->left);
-    return true;
+    for (HandGaze& g : out_.gaze) g.with_head = true;
+    if (gaze_) {
+      add_head(HeadAxis::pitch, 0.5f * gaze_->down);
+      add_head(HeadAxis::yaw, 0.5f * gaze_->left);
+    }
+    return gaze_ || !out_.gaze.empty();
   }
 
  private:
@@ -399,15 +403,6 @@ vec3 palm_centre(const SigningRig& rig, Hand hand, std::span<const mat4> model) 
   return vec3(model[static_cast<std::size_t>(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
 }
 
-// Shortest rotation taking unit vector a onto unit vector b.
-quat rotation_between(const vec3& a, const vec3& b) {
-  const float c = std::clamp(glm::dot(a, b), -1.0f, 1.0f);
-  const vec3 axis = glm::cross(a, b);
-  const float s = glm::length(axis);
-  if (s < 1e-6f) return c > 0.0f ? quat(1, 0, 0, 0) : glm::angleAxis(kPi, vec3(0, 1, 0));
-  return glm::angleAxis(std::atan2(s, c), axis / s);
-}
-
 }  // namespace
 
 SignNonManualActions plan_sign_nonmanuals(std::span<const sign::NonManual> tiers, float start, float end) {
@@ -454,21 +449,19 @@ SignNonManualActions plan_sign_nonmanuals(std::span<const sign::NonManual> tiers
   for (const sign::NonManual* nm : linked) {
     planner.select(*nm);
     if (planner.head_with_gaze()) ++out.mapped;
-    else out.warnings.push_back({nm->line, "head 'LI' (head turned with the eyes) needs an eye gaze direction "
-                                           "(UP, DN, LE, ...) in the sign; not performed"});
+    else out.warnings.push_back({nm->line, "head 'LI' (head turned with the eyes) needs an eye gaze "
+                                           "(UP, DN, LE, ..., HI, HC, HD) in the sign; not performed"});
   }
   return out;
 }
 
 bool write_hand_gaze(std::span<const HandGaze> gaze, const SigningRig& rig, float fps, Clip& clip) {
   const Skeleton& s = rig.skeleton();
-  const std::array<int, 2> eyes{s.find(kLeftEye), s.find(kRightEye)};
-  if (eyes[0] < 0 || eyes[1] < 0) return false;
+  if (s.find(kLeftEye) < 0 || s.find(kRightEye) < 0) return false;
   if (gaze.empty()) return true;
   if (!(fps >= 1.0f && fps <= 240.0f)) throw Error("hand gaze: fps must be between 1 and 240");
-  if (clip.joint_count() == 0) clip.resize_joints(s.size());
-  if (clip.joint_count() != s.size()) throw Error("hand gaze: the clip was made for another skeleton");
 
+  // Keys at every ramp step and every frame of each span.
   std::vector<fc::FaceAction> envelopes;
   std::vector<float> times;
   for (const HandGaze& g : gaze) {
@@ -485,59 +478,26 @@ bool write_hand_gaze(std::span<const HandGaze> gaze, const SigningRig& rig, floa
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end(), [](float x, float y) { return y - x < 1e-4f; }), times.end());
 
-  // Each eye's forward (the avatar's +Z at bind pose) in the eye's own frame.
-  std::array<vec3, 2> forward;
-  for (int e = 0; e < 2; ++e)
-    forward[static_cast<std::size_t>(e)] =
-        glm::normalize(glm::inverse(glm::quat_cast(mat3(rig.bind_model[static_cast<std::size_t>(eyes[static_cast<std::size_t>(e)])]))) *
-                       vec3(0, 0, 1));
-
-  std::array<QuatTrack, 2> tracks;
-  Pose pose;
-  std::vector<mat4> model(s.size());
-  for (float t : times) {
-    sample_clip(clip, t, WrapMode::Clamp, rig.rest, pose);
-    local_to_model(s, pose, model);
-    for (int e = 0; e < 2; ++e) {
-      const auto eye = static_cast<std::size_t>(eyes[static_cast<std::size_t>(e)]);
-      const vec3 centre(model[eye][3]);
-      vec3 direction(0.0f);
-      float weight = 0.0f;
-      for (std::size_t g = 0; g < gaze.size(); ++g) {
-        const float w = fc::action_weight(envelopes[g], t);
-        if (w <= 0.0f) continue;
-        vec3 target = palm_centre(rig, gaze[g].hand, model);
-        if (gaze[g].both_hands) {
-          const Hand other = gaze[g].hand == Hand::Right ? Hand::Left : Hand::Right;
-          const vec3 other_palm = palm_centre(rig, other, model);
-          if (glm::distance(other_palm, palm_centre(rig, other, rig.bind_model)) > kHandUpFromRest)
-            target = 0.5f * (target + other_palm);
-        }
-        direction += w * glm::normalize(target - centre);
-        weight += w;
+  // Where overlapping spans hand over, the target moves between theirs by their weights.
+  fc::write_gaze(s, times, [&](float t, std::span<const mat4> model) {
+    vec3 target(0.0f);
+    float weight = 0.0f, head = 0.0f;
+    for (std::size_t g = 0; g < gaze.size(); ++g) {
+      const float w = fc::action_weight(envelopes[g], t);
+      if (w <= 0.0f) continue;
+      vec3 point = palm_centre(rig, gaze[g].hand, model);
+      if (gaze[g].both_hands) {
+        const Hand other = gaze[g].hand == Hand::Right ? Hand::Left : Hand::Right;
+        const vec3 other_palm = palm_centre(rig, other, model);
+        if (glm::distance(other_palm, palm_centre(rig, other, rig.bind_model)) > kHandUpFromRest)
+          point = 0.5f * (point + other_palm);
       }
-      const quat parent = glm::normalize(glm::quat_cast(mat3(model[static_cast<std::size_t>(s.parents[eye])])));
-      const quat frame = parent * s.rest_rotations[eye];
-      quat turn(1, 0, 0, 0);
-      if (weight > 0.0f && glm::length(direction) > 1e-6f) {
-        const vec3 local = glm::normalize(glm::inverse(frame) * glm::normalize(direction));
-        turn = glm::slerp(quat(1, 0, 0, 0), rotation_between(forward[static_cast<std::size_t>(e)], local),
-                          std::min(weight, 1.0f));
-      }
-      // The eyes turn only as far as their limits (and never roll).
-      const JointDofs& dofs = s.dofs[eye];
-      vec3 angles = joint_angles(s, static_cast<int>(eye), s.rest_rotations[eye] * turn);
-      for (int a = 0; a < 3; ++a)
-        angles[a] = dofs.free(a) ? std::clamp(angles[a], dofs.min_angle[a], dofs.max_angle[a]) : 0.0f;
-      tracks[static_cast<std::size_t>(e)].add(t, joint_rotation(s, static_cast<int>(eye), angles));
+      target += w * point;
+      weight += w;
+      head += gaze[g].with_head ? w : 0.0f;
     }
-  }
-  for (int e = 0; e < 2; ++e) {
-    QuatTrack& tr = tracks[static_cast<std::size_t>(e)];
-    tr.interpolation = Interpolation::Slerp;
-    make_continuous(tr);
-    clip.rotations[static_cast<std::size_t>(eyes[static_cast<std::size_t>(e)])] = std::move(tr);
-  }
+    return weight > 0.0f ? fc::GazeTarget{target / weight, weight, head} : fc::GazeTarget{};
+  }, clip);
   return true;
 }
 
@@ -548,10 +508,13 @@ std::vector<NonManualWarning> add_sign_nonmanuals(std::span<const sign::NonManua
   const Skeleton& s = rig.skeleton();
   const int first_line = tiers.empty() ? 0 : tiers.front().line;
   if (!actions.face.empty()) fc::write_face_channels(actions.face, clip);
-  if (!actions.head.empty()) {
-    if (s.find("vc4") >= 0 && s.find("skullbase") >= 0) fc::write_head_rotations(actions.head, s, clip);
-    else warnings.push_back({first_line, "the avatar has no vc4/skullbase joints: head movements not performed"});
+  const bool has_head = s.find("vc4") >= 0 && s.find("skullbase") >= 0;
+  const bool head_with_hands = std::any_of(actions.gaze.begin(), actions.gaze.end(), [](const HandGaze& g) { return g.with_head; });
+  if (!has_head && (!actions.head.empty() || head_with_hands)) {
+    warnings.push_back({first_line, "the avatar has no vc4/skullbase joints: head movements not performed"});
+    for (HandGaze& g : actions.gaze) g.with_head = false;
   }
+  if (!actions.head.empty() && has_head) fc::write_head_rotations(actions.head, s, clip);
   fc::write_jaw_from_channel(s, clip);
   if (!write_hand_gaze(actions.gaze, rig, fps, clip))
     warnings.push_back({first_line, "the avatar has no eyeball joints: eye gaze not performed"});

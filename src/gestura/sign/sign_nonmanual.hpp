@@ -17,7 +17,8 @@
 //   body       RL RR rotated, TL TR tilted sideways, TF TB tilted forwards/back, SI sigh, HE heave,
 //              ST straight, RD rounded (lumbar and thoracic spine)
 //   head       NO nod, SH shake, SL SR turned, TL TR tilted, NF NB tilted forwards/back, PF PB pushed
-//              forwards/back, LI turned with the eye gaze
+//              forwards/back, LI turned with the eye gaze (by half a fixed direction; at a hand,
+//              by what is beyond the eyes' own range)
 //   eye gaze   AD FR NO ahead, UP DN LE RI LU LD RU RD (and UL UR DL DR), HD at the hands (between
 //              them when both are up), HI at the dominant hand, HC at the non-dominant hand, RO rolling
 //   eyebrows   RB raised, RL RR one raised, FU furrowed
@@ -50,10 +51,13 @@ struct NonManualWarning {
 
 // The eyes following one hand over [start, end] at full weight between §5.2.5 ramps; with
 // `both_hands`, the point between the palms whenever the other hand is up from rest too.
+// With `with_head` (head tier LI) the head joins for the part beyond the eyes' own range, as in
+// fingerspelling (face/eye_aim.hpp).
 struct HandGaze {
   Hand hand = Hand::Right;
   float start = 0.0f, end = 0.0f;
   bool both_hands = false;
+  bool with_head = false;
 };
 
 struct SignNonManualActions {
@@ -70,9 +74,14 @@ struct SignNonManualActions {
 // values (they become warnings); throws gestura::Error for non-finite or reversed times.
 SignNonManualActions plan_sign_nonmanuals(std::span<const sign::NonManual> tiers, float start, float end);
 
-// Aims both eyeball joints at the hand's palm centre, blended in by each gaze's ramps, keyed at
-// `fps` and at the ramp steps (the clip's arm tracks give the hand's position). Replaces the
-// eyeball tracks. Returns false (and writes nothing) when the skeleton has no eyeball joints.
+// Aims both eyeball joints at the hand's palm centre (face/eye_aim.hpp, the aiming the fingerspelling
+// gaze uses too), blended in by each gaze's ramps, keyed at `fps` and at the ramp steps (the clip's
+// arm tracks give the hand's position). Replaces the eyeball tracks. Eyes only, within their limits,
+// unless the gaze is `with_head`: HamNoSys writes the head on its own tier (hnm_head LI: turned with
+// the eye gaze), so the head does not join uninvited as it does in fingerspelling, where nothing
+// else says what the head does. A joining head's turn is added to vc4 and skullbase. Returns false
+// (and writes nothing) when the skeleton has no eyeball joints; throws gestura::Error when a head
+// that joins has no vc4/skullbase.
 bool write_hand_gaze(std::span<const HandGaze> gaze, const SigningRig& rig, float fps, Clip& clip);
 
 // plan_sign_nonmanuals, then everything written into the clip (face channels, head, jaw from
