@@ -164,7 +164,7 @@ TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
     for (const sign::SigmlSign& s : sign::read_sigml(sign::read_text_file(path), path)) {
       const SignSynthesis r = synthesize_sign(s.manual, fx().rig);
       ++signs;
-      const auto problem = synthesis_problem(r, fx().rig, 1e9f);  // NaN and limits only
+      const auto problem = synthesis_problem(r, fx().rig, {1e9f, 1e9f, 1e9f});  // NaN and limits only
       EXPECT_FALSE(problem.has_value()) << path << ": " << *problem;
       if (r.stats.max_penetration > 0.01f) ++deep;
     }
@@ -210,7 +210,7 @@ TEST(Synthesis, EveryLexiconSignIsPerformedWithinLimitsAndWithoutNaN) {
     }
     const SignSynthesis r = synthesize_sign(parsed, fx().rig);
     ++signs;
-    if (const auto problem = synthesis_problem(r, fx().rig, 1e9f)) {
+    if (const auto problem = synthesis_problem(r, fx().rig, {1e9f, 1e9f, 1e9f})) {
       ADD_FAILURE() << line.substr(0, 80) << ": " << *problem;
       if (++bad > 10) break;
     }

@@ -1,6 +1,7 @@
 #include "gestura/sign/sign_performer.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "gestura/core/error.hpp"
 #include "gestura/ik/combined.hpp"
@@ -53,6 +54,16 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
   PerformanceStats st;
   st.frames = frames;
   bool resting[2] = {true, true};  // the first frame (and any frame after rest) seeds the solver
+  // Key frames per hand: the frame nearest the end of each segment that leaves the hand signing.
+  std::vector<std::uint8_t> key[2];
+  for (int side = 0; side < 2; ++side) {
+    key[side].assign(static_cast<std::size_t>(frames), 0);
+    for (const HandSegment& seg : (side == 0 ? plan.right : plan.left).segments)
+      if (seg.to.active)
+        key[side][static_cast<std::size_t>(std::clamp(static_cast<int>(std::lround(seg.end * options.fps)), 0, frames - 1))] = 1;
+  }
+  HandState planned[2];
+  quat planned_wrist[2];
 
   for (int f = 0; f < frames; ++f) {
     const float t = static_cast<float>(f) / options.fps;
@@ -63,6 +74,8 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
       apply_hand_posture(rig, h.hand, state.shape, pose);
       const quat wrist_rotation = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), state.orientation},
                                                      h.rest_frame.rotation, h.rest_wrist_rotation);
+      planned[side] = state;
+      planned_wrist[side] = wrist_rotation;
       IkTarget target;
       target.position = state.position - wrist_rotation * h.palm_centre_local;
       target.orientation = wrist_rotation;
@@ -120,6 +133,15 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
     for (const HandRig& h : rig.hands) {
       hand_surface_points(rig, h.hand, model, points);
       for (const vec3& p : points) st.max_penetration = std::max(st.max_penetration, -body_signed_distance(rig, model, p));
+    }
+    for (int side = 0; side < 2; ++side) {
+      if (!key[side][static_cast<std::size_t>(f)] || !planned[side].active) continue;
+      const HandRig& h = rig.hands[static_cast<std::size_t>(side)];
+      const mat4& w = model[static_cast<std::size_t>(h.wrist)];
+      const float dp = glm::distance(vec3(w * vec4(h.palm_centre_local, 1.0f)), planned[side].position);
+      const float da = glm::length(rotation_error(glm::normalize(glm::quat_cast(mat3(w))), planned_wrist[side]));
+      if (dp > st.key_position_error) st.key_position_error = dp, st.key_position_time = t;
+      if (da > st.key_orientation_error) st.key_orientation_error = da, st.key_orientation_time = t;
     }
     for (int j : driven) clip.rotations[static_cast<std::size_t>(j)].add(t, pose.rotations[static_cast<std::size_t>(j)]);
   }

@@ -1,6 +1,7 @@
 #include "gestura/sign/sign_synthesis.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "gestura/anim/sampler.hpp"
@@ -16,7 +17,18 @@ SignSynthesis synthesize_sign(const sign::HamSign& sign, const SigningRig& rig, 
   return out;
 }
 
-std::optional<std::string> synthesis_problem(const SignSynthesis& result, const SigningRig& rig, float max_penetration) {
+namespace {
+
+std::string fixed(float v, int decimals) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, static_cast<double>(v));
+  return buf;
+}
+
+}  // namespace
+
+std::optional<std::string> synthesis_problem(const SignSynthesis& result, const SigningRig& rig,
+                                             const SynthesisTolerance& tolerance) {
   const Skeleton& s = rig.skeleton();
   for (std::size_t j = 0; j < result.clip.rotations.size(); ++j) {
     const QuatTrack& tr = result.clip.rotations[j];
@@ -26,8 +38,16 @@ std::optional<std::string> synthesis_problem(const SignSynthesis& result, const 
         return "joint '" + s.names[j] + "' outside its limits at " + std::to_string(tr.times[k]) + " s";
     }
   }
-  if (result.stats.max_penetration > max_penetration)
-    return "hand inside the body by " + std::to_string(result.stats.max_penetration * 100.0f) + " cm";
+  const PerformanceStats& st = result.stats;
+  if (st.max_penetration > tolerance.penetration)
+    return "hand inside the body by " + fixed(st.max_penetration * 100.0f, 1) + " cm";
+  std::string ik;
+  if (st.key_position_error > tolerance.position)
+    ik = "hand " + fixed(st.key_position_error * 100.0f, 1) + " cm from its planned place at " + fixed(st.key_position_time, 2) + " s";
+  if (st.key_orientation_error > tolerance.orientation)
+    ik += std::string(ik.empty() ? "hand" : ";") + " turned " + fixed(to_degrees(st.key_orientation_error), 0) +
+          "° from its planned orientation at " + fixed(st.key_orientation_time, 2) + " s";
+  if (!ik.empty()) return "IK: " + ik;
   return std::nullopt;
 }
 
