@@ -47,9 +47,17 @@ TEST(SignCheck, WholeLexiconFromTheCli) {
 }
 
 TEST(SignCheck, SigmlSignIsSynthesizedFromTheCli) {
-  const CliResult r = run_cli("check " + gestura::test::shared_data() + "/sigml-isl/absorb.sigml");
+  const CliResult r = run_cli("check " + gestura::test::shared_data() + "/sigml-isl/aeroplane.sigml");
   EXPECT_NE(r.out.find("1 signs: 1 parsed, 1 synthesized, 0 failed"), std::string::npos) << r.out;
   EXPECT_EQ(r.status, 0);
+}
+
+TEST(SignCheck, AHandThatMissesItsPlannedPostureIsReported) {
+  // ISL ABSORB asks for a hand turn the arm cannot make at its place: the IK residual check says so.
+  const CliResult r = run_cli("check " + gestura::test::shared_data() + "/sigml-isl/absorb.sigml");
+  EXPECT_NE(r.out.find("absorb: synthesis failed: IK: hand"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1 signs: 1 parsed, 0 synthesized, 1 failed"), std::string::npos) << r.out;
+  EXPECT_EQ(r.status, 1);
 }
 
 TEST(SignCheck, BadLinesAreReportedAndTheRestChecked) {

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "gestura/core/error.hpp"
-#include "gestura/ik/combined.hpp"
+#include "gestura/ik/dls.hpp"
+#include "gestura/ik/swivel_arm.hpp"
 
 namespace gestura {
 
@@ -53,7 +55,8 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
   std::vector<vec3> points;
   PerformanceStats st;
   st.frames = frames;
-  bool resting[2] = {true, true};  // the first frame (and any frame after rest) seeds the solver
+  std::optional<float> swivel[2];     // last frame's elbow swivel per arm (none after rest)
+  std::vector<float> seed[2];         // this frame's seed angles per arm, the posture DLS keeps to
   // Key frames per hand: the frame nearest the end of each segment that leaves the hand signing.
   std::vector<std::uint8_t> key[2];
   for (int side = 0; side < 2; ++side) {
@@ -76,35 +79,57 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
                                                      h.rest_frame.rotation, h.rest_wrist_rotation);
       planned[side] = state;
       planned_wrist[side] = wrist_rotation;
-      IkTarget target;
-      target.position = state.position - wrist_rotation * h.palm_centre_local;
-      target.orientation = wrist_rotation;
-      target.has_orientation = true;
-      IkSettings settings;
-      settings.max_iterations = 60;
-      settings.position_tolerance = 5e-4f;
-      settings.orientation_tolerance = deg(1.0f);
-      settings.preferred_angles = h.preferred_angles;
-      // Hand orientation carries meaning; a centimetre of position matters less: weight a radian
-      // of orientation like a quarter metre of position.
-      settings.orientation_scale = 0.25f;
-      settings.null_space_gain = 0.5f;  // a firmer pull toward the relaxed posture: elbows stay down
-      const mat4 base = parent_model_matrix(s, pose, h.arm.joints.front());
-      // The first frame may need CCD's large steps; after that the previous frame is a good start and
-      // damped least squares alone keeps the arm on one continuous solution (no elbow flips).
       if (!state.active) {
         // At rest: the arm hangs exactly in its rest pose (a stretched arm at its limits is a
         // singular target for the iterative solvers).
         for (int j : h.arm.joints) pose.rotations[static_cast<std::size_t>(j)] = rig.rest.rotations[static_cast<std::size_t>(j)];
-        resting[side] = true;
+        swivel[side].reset();
         continue;
       }
-      if (resting[side]) {
-        // Leaving rest: start from the relaxed signing posture, not the straight, singular arm.
-        for (int j : h.arm.joints) pose.rotations[static_cast<std::size_t>(j)] = rig.neutral.rotations[static_cast<std::size_t>(j)];
+      // Seed: the clavicle relaxed, the arm from the analytic solver at a natural elbow swivel
+      // (continuing last frame's). It is exact when the joint ranges allow the hand's place and
+      // turn; when they do not, wrist and forearm stop at their limits (the nearest turn the arm
+      // can make) and the palm is put back where it belongs for that turn.
+      pose.rotations[static_cast<std::size_t>(h.clavicle)] = rig.neutral.rotations[static_cast<std::size_t>(h.clavicle)];
+      const mat4 shoulder_parent = parent_model_matrix(s, pose, h.shoulder);
+      const vec3 shoulder_at = vec3(shoulder_parent * vec4(s.rest_translations[static_cast<std::size_t>(h.shoulder)], 1.0f));
+      const quat shoulder_parent_rotation = glm::normalize(glm::quat_cast(mat3(shoulder_parent)));
+      SwivelGoal goal{state.position - wrist_rotation * h.palm_centre_local, wrist_rotation};
+      SwivelPreference prefer;
+      prefer.previous = swivel[side];
+      SwivelSolution arm = solve_swivel_arm(s, h.swivel, shoulder_at, shoulder_parent_rotation, goal, prefer);
+      if (arm.orientation_excess > deg(1.0f)) {
+        apply_swivel_solution(s, h.swivel, arm, pose);
+        const quat reached = glm::normalize(glm::quat_cast(mat3(parent_model_matrix(s, pose, h.wrist)))) *
+                             pose.rotations[static_cast<std::size_t>(h.wrist)];
+        goal.wrist_position = state.position - reached * h.palm_centre_local;
+        arm = solve_swivel_arm_at(s, h.swivel, shoulder_at, shoulder_parent_rotation, goal, arm.swivel, prefer);
       }
-      IkResult r = solve_combined(s, h.arm, base, target, settings, workspace[side], pose, resting[side] ? 8 : 0);
-      resting[side] = false;
+      apply_swivel_solution(s, h.swivel, arm, pose);
+      swivel[side] = arm.swivel;
+
+      // Refine with damped least squares over the whole chain, clavicle included (the swivel
+      // solver leaves it relaxed, and its forearm twist is one pass short of exact). The posture
+      // it is pulled toward is the seed itself, so it stays on the seed's elbow swivel. Where the
+      // turn cannot be made at the planned place, a hand at the body keeps its place (a radian of
+      // turn weighs like 8 cm of place) and turns as far as it can; a hand out in the signing
+      // space gives way a few centimetres (a radian weighs like 25 cm), as a signer's would, to
+      // keep the notated turn (fingers straight up low in front of the chest).
+      IkTarget target;
+      target.position = state.position;
+      target.orientation = wrist_rotation;
+      target.has_orientation = true;
+      const mat4 base = parent_model_matrix(s, pose, h.arm.joints.front());
+      load_angles(s, h.arm, pose, workspace[side]);
+      seed[side] = workspace[side].angles;
+      IkSettings settings;
+      settings.max_iterations = 20;  // from an exact seed a few steps do
+      settings.position_tolerance = 1e-3f;
+      settings.orientation_tolerance = deg(1.5f);
+      settings.preferred_angles = seed[side];
+      settings.orientation_scale = state.at_body ? 0.08f : 0.25f;
+      settings.null_space_gain = 0.3f;
+      IkResult r = solve_dls(s, h.arm, base, target, settings, workspace[side], pose);
 
       // Keep the hand out of the body: push the whole hand along the body's outward normal at its
       // deepest point, a few times (leaving one part of the body can enter another).
@@ -123,7 +148,7 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
         // Getting out of the body comes before the exact hand orientation.
         IkSettings escape = settings;
         escape.orientation_scale = 0.08f;
-        r = solve_combined(s, h.arm, base, target, escape, workspace[side], pose, 0);
+        r = solve_dls(s, h.arm, base, target, escape, workspace[side], pose);
       }
       st.max_position_error = std::max(st.max_position_error, r.position_error);
       st.max_orientation_error = std::max(st.max_orientation_error, r.orientation_error);
@@ -140,7 +165,9 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
       const mat4& w = model[static_cast<std::size_t>(h.wrist)];
       const float dp = glm::distance(vec3(w * vec4(h.palm_centre_local, 1.0f)), planned[side].position);
       const float da = glm::length(rotation_error(glm::normalize(glm::quat_cast(mat3(w))), planned_wrist[side]));
-      if (dp > st.key_position_error) st.key_position_error = dp, st.key_position_time = t;
+      if (planned[side].at_body && dp > st.key_position_error) st.key_position_error = dp, st.key_position_time = t;
+      if (!planned[side].at_body && dp > st.key_space_position_error)
+        st.key_space_position_error = dp, st.key_space_position_time = t;
       if (da > st.key_orientation_error) st.key_orientation_error = da, st.key_orientation_time = t;
     }
     for (int j : driven) clip.rotations[static_cast<std::size_t>(j)].add(t, pose.rotations[static_cast<std::size_t>(j)]);

@@ -22,9 +22,11 @@ struct PerformanceStats {
   // the end of every segment that leaves a hand in a signing posture): the palm centre's distance
   // and the angle between the performed and planned hand frames. Measured on the final pose, so
   // everything the performer did (keeping the hand out of the body, clamping to limits) counts.
-  float key_position_error = 0.0f;     // metres
+  float key_position_error = 0.0f;     // metres, postures at the body (HandState::at_body)
+  float key_space_position_error = 0.0f;  // metres, postures out in the signing space
   float key_orientation_error = 0.0f;  // radians
   float key_position_time = 0.0f;      // seconds: when the largest position error happened
+  float key_space_position_time = 0.0f;
   float key_orientation_time = 0.0f;   // seconds: when the largest orientation error happened
 };
 

@@ -23,6 +23,7 @@ constexpr float kNearGap = 0.07f;
 constexpr float kFarGap = 0.25f;
 constexpr float kBesideOffset = 0.07f;  // hamlrbeside: beside the site, on the hand's side
 constexpr float kBodyClearance = 0.005f;  // planned hand surfaces stay this far off the body
+constexpr float kAtBody = kCloseGap + 0.01f;  // a hand surface this near the body is at the body
 
 // Durations of actions without a path (seconds, normal speed).
 constexpr float kReplacementTime = 0.35f;
@@ -117,20 +118,27 @@ class Planner {
   // `seg` comes with its duration in [start, end] (start usually 0); it is placed at the hand's clock.
   // Moves a planned state out of the body: notation may ask for a movement towards the body from a
   // place already close to it; a signer stops at the surface.
+  // Also marks whether the hand ends up at the body (HandState::at_body).
   void keep_out(int h, HandState& s) {
+    s.at_body = false;
     if (!s.active) return;
     const auto pts = hand_points(h, s);
+    float nearest = 1e9f;
     for (int pass = 0; pass < 3; ++pass) {
       float deepest = 0.0f;
       vec3 outward(0, 0, 1);
+      nearest = 1e9f;
       for (const vec3& p : pts) {
         vec3 n;
         const float d = body_signed_distance(rig_, rig_.bind_model, s.position + p, &n) - kBodyClearance;
+        nearest = std::min(nearest, d);
         if (d < deepest) deepest = d, outward = n;
       }
-      if (deepest >= 0.0f) return;
+      if (deepest >= 0.0f) break;
       s.position += outward * (-deepest);
+      nearest = 0.0f;
     }
+    s.at_body = nearest < kAtBody;
   }
 
   void add_segment(int h, HandSegment seg) {

@@ -43,7 +43,11 @@ std::optional<std::string> synthesis_problem(const SignSynthesis& result, const 
     return "hand inside the body by " + fixed(st.max_penetration * 100.0f, 1) + " cm";
   std::string ik;
   if (st.key_position_error > tolerance.position)
-    ik = "hand " + fixed(st.key_position_error * 100.0f, 1) + " cm from its planned place at " + fixed(st.key_position_time, 2) + " s";
+    ik = "hand " + fixed(st.key_position_error * 100.0f, 1) + " cm from its planned place at the body at " +
+         fixed(st.key_position_time, 2) + " s";
+  else if (st.key_space_position_error > tolerance.space_position)
+    ik = "hand " + fixed(st.key_space_position_error * 100.0f, 1) + " cm from its planned place in space at " +
+         fixed(st.key_space_position_time, 2) + " s";
   if (st.key_orientation_error > tolerance.orientation)
     ik += std::string(ik.empty() ? "hand" : ";") + " turned " + fixed(to_degrees(st.key_orientation_error), 0) +
           "° from its planned orientation at " + fixed(st.key_orientation_time, 2) + " s";

@@ -37,7 +37,6 @@ HandRig make_hand(const Skeleton& s, const std::vector<mat4>& bind, Hand hand) {
     for (int k = 0; k < 3; ++k) h.fingers[f][k] = need(s, p + names[f] + std::to_string(k + 1));
     h.tips[f] = need(s, p + names[f] + "_tip");
   }
-  h.arm = make_chain(s, h.clavicle, h.wrist);
   const vec3 wrist = position_of(bind, h.wrist), index1 = position_of(bind, h.fingers[1][0]);
   const vec3 middle1 = position_of(bind, h.fingers[2][0]), pinky1 = position_of(bind, h.fingers[4][0]);
   h.rest_frame = hand_frame_from_joints(wrist, index1, middle1, pinky1, hand);
@@ -45,6 +44,9 @@ HandRig make_hand(const Skeleton& s, const std::vector<mat4>& bind, Hand hand) {
   // The hand's reference point: the middle of the palm, between the wrist and the knuckles.
   const vec3 centre = 0.4f * wrist + 0.6f * (index1 + middle1 + pinky1) / 3.0f;
   h.palm_centre_local = vec3(glm::inverse(bind[static_cast<std::size_t>(h.wrist)]) * vec4(centre, 1.0f));
+  // The solvers place the palm centre: a hand turned less than asked still sits where it should.
+  h.arm = make_chain(s, h.clavicle, h.wrist, h.palm_centre_local);
+  h.swivel = make_swivel_arm(s, h.shoulder, h.elbow, h.wrist);
   return h;
 }
 
@@ -66,9 +68,6 @@ SigningRig make_signing_rig(const Avatar& avatar) {
   for (HandRig& h : rig.hands) {
     const Pose ready = arm_ready_pose(s, h.hand == Hand::Right ? "r" : "l");
     for (int j : h.arm.joints) rig.neutral.rotations[static_cast<std::size_t>(j)] = ready.rotations[static_cast<std::size_t>(j)];
-    IkWorkspace ws(h.arm);
-    load_angles(s, h.arm, rig.neutral, ws);
-    h.preferred_angles = ws.angles;
   }
   for (HandRig& h : rig.hands) {
     const std::string p = h.hand == Hand::Right ? "r_" : "l_";
