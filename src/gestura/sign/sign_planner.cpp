@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gestura/core/error.hpp"
+#include "gestura/sign/hand_part.hpp"
 #include "gestura/sign/movement_timing.hpp"
 
 namespace gestura {
@@ -236,6 +237,25 @@ class Planner {
     return site.point + site.normal * gap - contact;
   }
 
+  // Palm-centre position that puts a named part of the hand (HamNoSys: "hamchin hamseqbegin
+  // hamfingertip hamseqend", the fingertips at the chin) `gap` metres out from the site point.
+  // Falls back to place_at for a part that is not on the hand.
+  vec3 place_part_at(int h, const HandState& s, const SitePlace& site, float gap, const sign::SitePoint& part) {
+    const HandRig& hr = rig_.hand(hand_of(h));
+    apply_hand_posture(rig_, hand_of(h), s.shape, scratch_);
+    clamp_to_limits(rig_.skeleton(), scratch_);
+    const auto on_hand = hand_part_site(rig_, hand_of(h), scratch_, s.shape, part);
+    if (!on_hand) return place_at(h, s, site, gap);
+    const quat wrist = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), s.orientation}, hr.rest_frame.rotation,
+                                          hr.rest_wrist_rotation);
+    return site.point + site.normal * gap - wrist * (on_hand->point - hr.palm_centre_local);
+  }
+
+  // The hand part the last location named for hand `h`, if any, else the nearest part.
+  vec3 place_at_last_site(int h, const HandState& s, float gap) {
+    return last_part_[h] ? place_part_at(h, s, last_site_[h], gap, *last_part_[h]) : place_at(h, s, last_site_[h], gap);
+  }
+
   SitePlace body_site(const std::string& name) const {
     SitePlace out;
     if (const BodySite* s = find_site(rig_.sites, name)) {
@@ -357,7 +377,9 @@ class Planner {
     (void)copy;
     last_site_[h] = p;
     has_site_[h] = true;
-    return place_at(h, s, p, gap_of(loc.proximity, sign::site_region(loc.site)));
+    last_part_[h] = loc.hand_part;
+    const float gap = gap_of(loc.proximity, sign::site_region(loc.site));
+    return loc.hand_part ? place_part_at(h, s, p, gap, *loc.hand_part) : place_at(h, s, p, gap);
   }
 
   // ---- the sign ------------------------------------------------------------------------------
@@ -402,7 +424,9 @@ class Planner {
       state_[1] = target[1];
       const SitePlace other = other_hand_site(0, p.location.nondominant->site);
       const auto proximity = p.hands_contact ? p.hands_contact : p.location.dominant->proximity;
-      target[0].position = place_at(0, target[0], other, gap_of(proximity, sign::SiteRegion::hand));
+      const sign::Location& own = *p.location.dominant;  // the dominant hand's part that touches
+      target[0].position = place_part_at(0, target[0], other, gap_of(proximity, sign::SiteRegion::hand),
+                                         sign::SitePoint{own.site, own.fingers, own.finger_part, own.side});
     }
     // Locations: the non-dominant hand first, as the dominant hand may be placed on it.
     for (int h : {1, 0}) {
@@ -669,7 +693,7 @@ class Planner {
         break;
       case MotionKind::none: duration = scaled(kHoldTime); break;
     }
-    if (m.target_contact && has_site_[h]) seg.to.position = place_at(h, seg.to, last_site_[h], gap_of(m.target_contact, sign::SiteRegion::face));
+    if (m.target_contact && has_site_[h]) seg.to.position = place_at_last_site(h, seg.to, gap_of(m.target_contact, sign::SiteRegion::face));
     return duration;
   }
 
@@ -677,7 +701,7 @@ class Planner {
     for (int h = 0; h < 2; ++h) {
       if (!(mask & (1 << h)) || !has_site_[h]) continue;
       HandState to = state_[h];
-      to.position = place_at(h, to, last_site_[h], gap_of(c.proximity, sign::SiteRegion::face));
+      to.position = place_at_last_site(h, to, gap_of(c.proximity, sign::SiteRegion::face));
       move_to(h, to, scaled(kContactTime));
     }
   }
@@ -719,6 +743,7 @@ class Planner {
   sign::Symmetry symmetry_;
   SitePlace last_site_[2];
   bool has_site_[2] = {false, false};
+  std::optional<sign::SitePoint> last_part_[2];  // the hand part the last location named
   const Element* last_action_ = nullptr;
   int last_mask_ = 1;
   const Element* last_hand_action_[2] = {nullptr, nullptr};

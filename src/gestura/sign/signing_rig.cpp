@@ -79,7 +79,16 @@ SigningRig make_signing_rig(const Avatar& avatar) {
   const int vl3 = need(s, "vl3"), vt6 = need(s, "vt6"), vt1 = need(s, "vt1"), vc7 = need(s, "vc7");
   const int skull = need(s, "skullbase");
   const vec3 belly = position_of(rig.bind_model, vl3), upper = position_of(rig.bind_model, vt1);
-  const float torso_r = std::clamp(distance_to_site(rig, "chest", position_of(rig.bind_model, vt6), 0.13f), 0.08f, 0.25f);
+  // The torso's radius makes its surface pass through the chest site: measured from the capsule's
+  // axis, not from the spine joint behind it (the axis leans forward with the upper back), so a
+  // palm laid on the chest touches the capsule where it touches the skin.
+  float torso_r = std::clamp(distance_to_site(rig, "chest", position_of(rig.bind_model, vt6), 0.13f), 0.08f, 0.25f);
+  if (const BodySite* chest = find_site(rig.sites, "chest")) {
+    const vec3 c = site_position(*chest, rig.bind_model), top = upper - vec3(0, 0.7f * torso_r, 0);
+    const vec3 axis = top - belly;
+    const float k = std::clamp(glm::dot(c - belly, axis) / glm::dot(axis, axis), 0.0f, 1.0f);
+    torso_r = std::clamp(glm::distance(c, belly + k * axis), 0.08f, 0.25f);
+  }
   rig.body.push_back({"torso", vt6, belly, upper - vec3(0, 0.7f * torso_r, 0), torso_r});
   const vec3 neck_a = position_of(rig.bind_model, vc7), neck_b = position_of(rig.bind_model, skull);
   const float neck_r = std::clamp(distance_to_site(rig, "neck", 0.5f * (neck_a + neck_b), 0.05f), 0.03f, 0.1f);
