@@ -84,3 +84,13 @@ TEST(SignHandPart, PartsLieOnTheirSideOfTheHand) {
   EXPECT_FALSE(hand_part_site(rig, Hand::Right, pose, make_handshape(BasicHandshape::Flat),
                               sign::SitePoint{sign::Site::chin, {}, std::nullopt, sign::Side::centre}).has_value());
 }
+
+// ASL HELLO (data/lexicon/ase.jsonl): the salute starts with the fingertips close to the temple
+// side of the forehead; the hand stays at the head, not raised above it.
+TEST(SignHandPart, HelloStartsAtTheForeheadNotAboveTheHead) {
+  const auto m = held("hamflathand,hamextfingeru,hampalmd,hamforehead,hamlrat,hamseqbegin,hamclose,hamfingertip,hamseqend,hammoveor");
+  const vec3 tip = joint(m, "r_middle_tip");
+  EXPECT_LT(glm::distance(tip, site("forehead")), 0.07f);
+  EXPECT_LT(tip.y, site("head_top").y);
+  EXPECT_LT(palm_centre(m).x, site("forehead").x - 0.02f);  // on the signer's right, the dominant side
+}

@@ -23,6 +23,8 @@ constexpr float kCloseGap = 0.025f;
 constexpr float kNearGap = 0.07f;
 constexpr float kFarGap = 0.25f;
 constexpr float kBesideOffset = 0.07f;  // hamlrbeside: beside the site, on the hand's side
+constexpr float kFaceSideOffset = 0.045f;  // hamlrat at a central head site: its side (temple, mouth corner)
+constexpr float kTrunkSideOffset = 0.09f;  // hamlrat at a central trunk site: its side (below the nipple)
 constexpr float kBodyClearance = 0.005f;  // planned hand surfaces stay this far off the body
 constexpr float kAtBody = kCloseGap + 0.01f;  // a hand surface this near the body is at the body
 
@@ -348,7 +350,13 @@ class Planner {
     if (!p.found) p = neutral_space(h);
     if (site == S::earlobe) p.point.y -= 0.02f;
     if (site == S::eyes && side == sign::Side::centre) p.point.y -= 0.02f;
-    if (side == sign::Side::beside) p.point.x += (hand_of(h) == Hand::Right ? -1.0f : 1.0f) * kBesideOffset;
+    const float outward = hand_of(h) == Hand::Right ? -1.0f : 1.0f;
+    if (side == sign::Side::beside) p.point.x += outward * kBesideOffset;
+    // hamlrat at a site the body has once, in the middle (forehead, chin, chest): that site's
+    // own side, toward the hand (the temple side of the forehead, the right of the chest). Sites
+    // the body has twice (cheek, eye, ear, shoulder) were named with the hand's side above.
+    if (side == sign::Side::dominant_side && name.rfind(own, 0) != 0)
+      p.point.x += outward * (region == sign::SiteRegion::trunk ? kTrunkSideOffset : kFaceSideOffset);
     return p;
   }
 
