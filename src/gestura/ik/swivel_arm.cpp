@@ -228,7 +228,7 @@ SwivelSolution solve_swivel_arm(const Skeleton& skeleton, const SwivelArm& arm, 
   };
   if (preference.previous) {
     const SwivelSolution local = refine(at(*preference.previous), deg(8.0f));
-    if (local.position_excess + local.orientation_excess < kSettled) return exact(local);
+    if (local.position_excess + local.orientation_excess < kSettled || !preference.search_circle) return exact(local);
     SwivelSolution global = local;
     for (int k = 0; k < 12; ++k) {
       const SwivelSolution c = at(deg(30.0f) * static_cast<float>(k) - kPi);

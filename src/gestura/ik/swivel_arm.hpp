@@ -50,6 +50,9 @@ struct SwivelGoal {
 struct SwivelPreference {
   float natural = deg(20.0f);            // the relaxed swivel (elbow a little out from below)
   std::optional<float> previous;         // last frame's swivel, to stay on one continuous solution
+  // When the solution near `previous` has to clamp a joint, also search the whole circle for a
+  // better one. Animation may ask for that only every few frames: the search is most of the cost.
+  bool search_circle = true;
 };
 
 struct SwivelSolution {

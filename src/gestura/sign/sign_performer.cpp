@@ -97,6 +97,7 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
       SwivelGoal goal{state.position - wrist_rotation * h.palm_centre_local, wrist_rotation};
       SwivelPreference prefer;
       prefer.previous = swivel[side];
+      prefer.search_circle = f % 3 == 0;  // a better elbow swivel is looked for ten times a second
       SwivelSolution arm = solve_swivel_arm(s, h.swivel, shoulder_at, shoulder_parent_rotation, goal, prefer);
       if (arm.orientation_excess > deg(1.0f)) {
         apply_swivel_solution(s, h.swivel, arm, pose);
