@@ -109,7 +109,7 @@ TEST(AvatarSource, ASignIsPerformedOnTheMakeHumanAvatar) {
       sign::parse_hamnosys_names("hamfinger2345,hamthumboutmod,hamextfingeru,hampalml,hamchin,hamtouch");
   const SignSynthesis r = synthesize_sign(s, rig);
   EXPECT_GT(r.stats.frames, 10);
-  const auto problem = synthesis_problem(r, rig, 0.05f);
+  const auto problem = synthesis_problem(r, rig, SynthesisTolerance{0.05f});
   EXPECT_FALSE(problem.has_value()) << *problem;
   // In the held posture the right (dominant) hand is at the chin, the left hand stays down.
   Pose pose;

@@ -31,9 +31,17 @@ TEST(SignCheck, WholeLexiconFromTheCli) {
 }
 
 TEST(SignCheck, SigmlSignIsSynthesizedFromTheCli) {
-  const CliRun r = run_cli("check " + gestura::test::shared_data() + "/sigml-isl/absorb.sigml");
+  const CliRun r = run_cli("check " + gestura::test::shared_data() + "/sigml-isl/aeroplane.sigml");
   EXPECT_NE(r.output.find("1 signs: 1 parsed, 1 synthesized, 0 failed"), std::string::npos) << r.output;
   EXPECT_EQ(r.status, 0);
+}
+
+TEST(SignCheck, AHandThatMissesItsPlannedPostureIsReported) {
+  // ISL ABSORB asks for a hand turn the arm cannot make at its place: the IK residual check says so.
+  const CliRun r = run_cli("check " + gestura::test::shared_data() + "/sigml-isl/absorb.sigml");
+  EXPECT_NE(r.output.find("absorb: synthesis failed: IK: hand"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("1 signs: 1 parsed, 0 synthesized, 1 failed"), std::string::npos) << r.output;
+  EXPECT_EQ(r.status, 1);
 }
 
 TEST(SignCheck, BadLinesAreReportedAndTheRestChecked) {

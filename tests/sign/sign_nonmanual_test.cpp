@@ -93,7 +93,7 @@ float peak_time(const Clip& clip, std::string_view name) {
 TEST(SignNonManual, HeadShakeTurnsNeckAndSkullbaseToAndFro) {
   const SignSynthesis r = perform("<hnm_head tag=\"SH\"/>\n");
   EXPECT_TRUE(r.warnings.empty());
-  EXPECT_FALSE(synthesis_problem(r, fx().rig, 1e9f).has_value());
+  EXPECT_FALSE(synthesis_problem(r, fx().rig, {1e9f, 1e9f, 1e9f, 1e9f}).has_value());
   const float s = r.plan.sign_start, e = r.plan.sign_end;
   ASSERT_GT(e - s, 0.4f);
   for (const char* joint : {"skullbase", "vc4"}) {
@@ -206,7 +206,7 @@ TEST(SignNonManual, EmptyTagsAskForNothing) {
 TEST(SignNonManual, RaisedShouldersLiftTheClaviclesWithinTheirLimits) {
   const SignSynthesis plain = perform("");
   const SignSynthesis raised = perform("<hnm_shoulder tag=\"UB\"/>\n");
-  EXPECT_FALSE(synthesis_problem(raised, fx().rig, 1e9f).has_value());
+  EXPECT_FALSE(synthesis_problem(raised, fx().rig, {1e9f, 1e9f, 1e9f, 1e9f}).has_value());
   const float mid = 0.5f * (raised.plan.sign_start + raised.plan.sign_end);
   const auto a = model_at(plain.clip, mid), b = model_at(raised.clip, mid);
   EXPECT_GT(position(b, "l_shoulder").y - position(a, "l_shoulder").y, 0.015f);
@@ -223,7 +223,7 @@ TEST(SignNonManual, RaisedShouldersLiftTheClaviclesWithinTheirLimits) {
 TEST(SignNonManual, BodyTiltedForwardLeansTheTrunk) {
   const SignSynthesis plain = perform("");
   const SignSynthesis lean = perform("<hnm_body tag=\"TF\"/>\n");
-  EXPECT_FALSE(synthesis_problem(lean, fx().rig, 1e9f).has_value());
+  EXPECT_FALSE(synthesis_problem(lean, fx().rig, {1e9f, 1e9f, 1e9f, 1e9f}).has_value());
   const float mid = 0.5f * (lean.plan.sign_start + lean.plan.sign_end);
   const auto a = model_at(plain.clip, mid), b = model_at(lean.clip, mid);
   EXPECT_GT(position(b, "skullbase").z - position(a, "skullbase").z, 0.04f);
@@ -239,7 +239,7 @@ TEST(SignNonManual, EyesLookUpOrFollowTheDominantHand) {
   const SignSynthesis plain = perform("");
   const SignSynthesis at_hand = perform("<hnm_eyegaze tag=\"HI\"/>\n");
   EXPECT_TRUE(at_hand.warnings.empty());
-  EXPECT_FALSE(synthesis_problem(at_hand, fx().rig, 1e9f).has_value());
+  EXPECT_FALSE(synthesis_problem(at_hand, fx().rig, {1e9f, 1e9f, 1e9f, 1e9f}).has_value());
   EXPECT_LT(off_target(at_hand.clip, mid), off_target(plain.clip, mid) - deg(20.0f));
 }
 
@@ -274,7 +274,7 @@ TEST(SignNonManual, IslSignsWithTiersArePerformedWithoutWarnings) {
       mapped += plan.mapped;
       const SignSynthesis r = synthesize_sign(s.manual, s.nonmanual, fx().rig);
       EXPECT_TRUE(r.warnings.empty()) << path << ": " << r.warnings.front().message;
-      EXPECT_FALSE(synthesis_problem(r, fx().rig, 1e9f).has_value()) << path;
+      EXPECT_FALSE(synthesis_problem(r, fx().rig, {1e9f, 1e9f, 1e9f, 1e9f}).has_value()) << path;
       EXPECT_GE(r.clip.find_channel(std::string(face::kJawOpen)), 0) << path;  // every one is a mouth picture
     }
   }

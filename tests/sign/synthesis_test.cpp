@@ -156,20 +156,23 @@ TEST(Synthesis, SymmetricSignsMirrorTheOtherHand) {
 TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   const std::string dir = shared_data() + "/sigml-isl";
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared data at " << dir;
-  int signs = 0, deep = 0;
+  int signs = 0, deep = 0, off = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     const std::string path = entry.path().string();
     for (const sign::SigmlSign& s : sign::read_sigml(sign::read_text_file(path), path)) {
       const SignSynthesis r = synthesize_sign(s.manual, fx().rig);
       ++signs;
-      const auto problem = synthesis_problem(r, fx().rig, 1e9f);  // NaN and limits only
+      const auto problem = synthesis_problem(r, fx().rig, {1e9f, 1e9f, 1e9f, 1e9f});  // NaN and limits only
       EXPECT_FALSE(problem.has_value()) << path << ": " << *problem;
       if (r.stats.max_penetration > 0.01f) ++deep;
+      if (synthesis_problem(r, fx().rig, {1e9f}).has_value()) ++off;
     }
   }
   EXPECT_EQ(signs, 100);
-  std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body\n", signs, deep);
-  EXPECT_LE(deep, 5);  // ratchet: the crude neck/shoulder capsules flag a few near-contact signs
+  std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body; %d off "
+              "their planned key postures (IK residual over 2 cm or 25 degrees)\n", signs, deep, off);
+  EXPECT_LE(deep, 3);   // ratchet (5 before the analytic swivel seed): the crude neck/shoulder capsules
+  EXPECT_LE(off, 35);   // ratchet: measured 30; 57 before the analytic swivel seed
 }
 
 TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
@@ -187,6 +190,11 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
   EXPECT_GT(joint(m, "r_wrist").z, 0.15f);
 }
 
+// Ratchets over the German and Polish lexicons (4,070 signs); lower them as synthesis improves.
+constexpr int kMaxDeep = 90;        // measured 86; 140 before the analytic swivel seed
+constexpr int kMaxOffPlace = 950;   // measured 934
+constexpr int kMaxOffTurn = 460;    // measured 446
+
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits; the count of
 // signs whose hand enters the (capsule) collision body by more than 1 cm is held by a ratchet.
 TEST(Synthesis, EveryLexiconSignIsPerformedWithinLimitsAndWithoutNaN) {
@@ -194,7 +202,7 @@ TEST(Synthesis, EveryLexiconSignIsPerformedWithinLimitsAndWithoutNaN) {
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "no shared data at " << path;
   std::ifstream file(path);
   std::string line;
-  int signs = 0, deep = 0, bad = 0;
+  int signs = 0, deep = 0, bad = 0, off_place = 0, off_2cm = 0, off_turn = 0;
   while (std::getline(file, line)) {
     const auto key = line.find("\"hamnosys\": \"");
     if (key == std::string::npos) continue;
@@ -208,15 +216,25 @@ TEST(Synthesis, EveryLexiconSignIsPerformedWithinLimitsAndWithoutNaN) {
     }
     const SignSynthesis r = synthesize_sign(parsed, fx().rig);
     ++signs;
-    if (const auto problem = synthesis_problem(r, fx().rig, 1e9f)) {
+    if (const auto problem = synthesis_problem(r, fx().rig, {1e9f, 1e9f, 1e9f, 1e9f})) {
       ADD_FAILURE() << line.substr(0, 80) << ": " << *problem;
       if (++bad > 10) break;
     }
     if (r.stats.max_penetration > 0.01f) ++deep;
+    const SynthesisTolerance tol;
+    if (r.stats.key_position_error > tol.position || r.stats.key_space_position_error > tol.space_position) ++off_place;
+    if (std::max(r.stats.key_position_error, r.stats.key_space_position_error) > tol.position) ++off_2cm;
+    if (r.stats.key_orientation_error > tol.orientation) ++off_turn;
   }
   EXPECT_GE(signs, 4000);
-  std::printf("lexicon: %d signs performed; %d with a hand more than 1 cm inside the collision body\n", signs, deep);
-  EXPECT_LE(deep, 140);  // ratchet (3.1 %): neck and shoulder contacts against the capsule body
+  std::printf("lexicon: %d signs performed; %d with a hand more than 1 cm inside the collision body; IK residual "
+              "at a key posture: off its place (2 cm at the body, 5 cm in space) in %d (over 2 cm anywhere in %d), "
+              "turned over 25 degrees in %d\n", signs, deep, off_place, off_2cm, off_turn);
+  EXPECT_LE(deep, kMaxDeep);  // ratchet: neck and shoulder contacts against the capsule body
+  // Ratchets on the IK residual (SynthesisTolerance). Before the analytic swivel seed (with one
+  // 2 cm threshold everywhere): 1,630 signs off their place, 599 turned more than 25°.
+  EXPECT_LE(off_place, kMaxOffPlace);
+  EXPECT_LE(off_turn, kMaxOffTurn);
 }
 
 TEST(Synthesis, BadRequestsGiveClearErrors) {

@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "gestura/core/error.hpp"
-#include "gestura/ik/combined.hpp"
+#include "gestura/sign/hand_solver.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sign_performer.hpp"
 
@@ -232,41 +232,15 @@ HandJointPosture SignMotionCache::solve_from(Hand hand, const HandState& state, 
   Pose pose = rig_->neutral;
   for (std::size_t j = 0; j < joints.size(); ++j) pose.rotations[static_cast<std::size_t>(joints[j])] = seed[j];
   apply_hand_posture(*rig_, hand, state.shape, pose);
-  // The settings of perform_plan (sign_performer.cpp), so both solve the same problem.
-  const quat wrist = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), state.orientation}, h.rest_frame.rotation,
-                                        h.rest_wrist_rotation);
-  IkTarget target;
-  target.position = state.position - wrist * h.palm_centre_local;
-  target.orientation = wrist;
-  target.has_orientation = true;
-  IkSettings settings;
-  settings.max_iterations = 60;
-  settings.position_tolerance = 5e-4f;
-  settings.orientation_tolerance = deg(1.0f);
-  settings.preferred_angles = h.preferred_angles;
-  settings.orientation_scale = 0.25f;
-  settings.null_space_gain = 0.5f;
-  IkWorkspace workspace(h.arm);
-  const mat4 base = parent_model_matrix(s, pose, h.arm.joints.front());
-  solve_combined(s, h.arm, base, target, settings, workspace, pose, 0);
+  // The solver of perform_plan (sign/hand_solver.hpp), so both solve the same problem; the seed's
+  // elbow is where the analytic arm solver looks first.
   std::vector<mat4> model(s.size());
   std::vector<vec3> points;
-  for (int pass = 0; pass < 3; ++pass) {
-    local_to_model(s, pose, model);
-    hand_surface_points(*rig_, hand, model, points);
-    float deepest = 0.0f;
-    vec3 outward(0, 0, 1);
-    for (const vec3& p : points) {
-      vec3 n;
-      const float d = body_signed_distance(*rig_, model, p, &n) - PerformOptions{}.body_margin;
-      if (d < deepest) deepest = d, outward = n;
-    }
-    if (deepest >= -1e-4f) break;
-    target.position += outward * (-deepest);
-    IkSettings escape = settings;
-    escape.orientation_scale = 0.08f;
-    solve_combined(s, h.arm, base, target, escape, workspace, pose, 0);
-  }
+  local_to_model(s, pose, model);
+  const auto at = [&](int j) { return vec3(model[static_cast<std::size_t>(j)][3]); };
+  HandSolverState solver(h.arm);
+  solver.swivel = measure_swivel(h.swivel, at(h.shoulder), at(h.elbow), at(h.wrist));
+  solve_hand(*rig_, hand, state, PerformOptions{}.body_margin, true, solver, pose, model, points);
   clamp_to_limits(s, pose);
   HandJointPosture out(joints.size());
   for (std::size_t j = 0; j < joints.size(); ++j) out[j] = pose.rotations[static_cast<std::size_t>(joints[j])];

@@ -26,6 +26,7 @@ HandState sample_hand(const HandTimeline& timeline, float t) {
   const float s = seg.linear_blend ? u : profile_progress(VelocityProfile::MinimumJerk, u);
   HandState out;
   out.active = seg.to.active || seg.from.active;
+  out.at_body = seg.to.at_body;
   // `to.position` includes where the paths end; the blend carries the rest of the change.
   vec3 path_end(0.0f);
   for (const Movement& m : seg.paths) path_end += sample(m, m.duration).position;

@@ -17,6 +17,10 @@ struct HandState {
   quat orientation{1, 0, 0, 0};  // hand frame: local +Y fingers, +Z palm normal (HandFrame::rotation)
   HandPosture shape;
   bool active = false;        // false: the hand rests at the side
+  // The hand is at (or within a finger's width of) the body: its place is a point a signer
+  // keeps. A place out in the signing space is a region, and the hand may give way a little
+  // there to take the notated turn.
+  bool at_body = false;
 };
 
 // Oscillations performed on top of a segment.

@@ -1,9 +1,11 @@
 #include "gestura/sign/sign_performer.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 #include "gestura/core/error.hpp"
-#include "gestura/ik/combined.hpp"
+#include "gestura/sign/hand_solver.hpp"
 
 namespace gestura {
 
@@ -48,11 +50,20 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
 
   Pose pose = rig.neutral;
   std::vector<mat4> model(s.size());
-  IkWorkspace workspace[2] = {IkWorkspace(rig.hands[0].arm), IkWorkspace(rig.hands[1].arm)};
+  HandSolverState solver[2] = {HandSolverState(rig.hands[0].arm), HandSolverState(rig.hands[1].arm)};
   std::vector<vec3> points;
   PerformanceStats st;
   st.frames = frames;
-  bool resting[2] = {true, true};  // the first frame (and any frame after rest) seeds the solver
+  // Key frames per hand: the frame nearest the end of each segment that leaves the hand signing.
+  std::vector<std::uint8_t> key[2];
+  for (int side = 0; side < 2; ++side) {
+    key[side].assign(static_cast<std::size_t>(frames), 0);
+    for (const HandSegment& seg : (side == 0 ? plan.right : plan.left).segments)
+      if (seg.to.active)
+        key[side][static_cast<std::size_t>(std::clamp(static_cast<int>(std::lround(seg.end * options.fps)), 0, frames - 1))] = 1;
+  }
+  HandState planned[2];
+  quat planned_wrist[2];
 
   for (int f = 0; f < frames; ++f) {
     const float t = static_cast<float>(f) / options.fps;
@@ -63,55 +74,17 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
       apply_hand_posture(rig, h.hand, state.shape, pose);
       const quat wrist_rotation = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), state.orientation},
                                                      h.rest_frame.rotation, h.rest_wrist_rotation);
-      IkTarget target;
-      target.position = state.position - wrist_rotation * h.palm_centre_local;
-      target.orientation = wrist_rotation;
-      target.has_orientation = true;
-      IkSettings settings;
-      settings.max_iterations = 60;
-      settings.position_tolerance = 5e-4f;
-      settings.orientation_tolerance = deg(1.0f);
-      settings.preferred_angles = h.preferred_angles;
-      // Hand orientation carries meaning; a centimetre of position matters less: weight a radian
-      // of orientation like a quarter metre of position.
-      settings.orientation_scale = 0.25f;
-      settings.null_space_gain = 0.5f;  // a firmer pull toward the relaxed posture: elbows stay down
-      const mat4 base = parent_model_matrix(s, pose, h.arm.joints.front());
-      // The first frame may need CCD's large steps; after that the previous frame is a good start and
-      // damped least squares alone keeps the arm on one continuous solution (no elbow flips).
+      planned[side] = state;
+      planned_wrist[side] = wrist_rotation;
       if (!state.active) {
         // At rest: the arm hangs exactly in its rest pose (a stretched arm at its limits is a
         // singular target for the iterative solvers).
         for (int j : h.arm.joints) pose.rotations[static_cast<std::size_t>(j)] = rig.rest.rotations[static_cast<std::size_t>(j)];
-        resting[side] = true;
+        solver[side].swivel.reset();
         continue;
       }
-      if (resting[side]) {
-        // Leaving rest: start from the relaxed signing posture, not the straight, singular arm.
-        for (int j : h.arm.joints) pose.rotations[static_cast<std::size_t>(j)] = rig.neutral.rotations[static_cast<std::size_t>(j)];
-      }
-      IkResult r = solve_combined(s, h.arm, base, target, settings, workspace[side], pose, resting[side] ? 8 : 0);
-      resting[side] = false;
-
-      // Keep the hand out of the body: push the whole hand along the body's outward normal at its
-      // deepest point, a few times (leaving one part of the body can enter another).
-      for (int pass = 0; pass < 3; ++pass) {
-        local_to_model(s, pose, model);
-        hand_surface_points(rig, h.hand, model, points);
-        float deepest = 0.0f;
-        vec3 outward(0, 0, 1);
-        for (const vec3& p : points) {
-          vec3 n;
-          const float d = body_signed_distance(rig, model, p, &n) - options.body_margin;
-          if (d < deepest) deepest = d, outward = n;
-        }
-        if (deepest >= -1e-4f) break;
-        target.position += outward * (-deepest);
-        // Getting out of the body comes before the exact hand orientation.
-        IkSettings escape = settings;
-        escape.orientation_scale = 0.08f;
-        r = solve_combined(s, h.arm, base, target, escape, workspace[side], pose, 0);
-      }
+      const HandSolveResult r = solve_hand(rig, h.hand, state, options.body_margin, f % 3 == 0, solver[side], pose,
+                                           model, points);
       st.max_position_error = std::max(st.max_position_error, r.position_error);
       st.max_orientation_error = std::max(st.max_orientation_error, r.orientation_error);
     }
@@ -120,6 +93,17 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
     for (const HandRig& h : rig.hands) {
       hand_surface_points(rig, h.hand, model, points);
       for (const vec3& p : points) st.max_penetration = std::max(st.max_penetration, -body_signed_distance(rig, model, p));
+    }
+    for (int side = 0; side < 2; ++side) {
+      if (!key[side][static_cast<std::size_t>(f)] || !planned[side].active) continue;
+      const HandRig& h = rig.hands[static_cast<std::size_t>(side)];
+      const mat4& w = model[static_cast<std::size_t>(h.wrist)];
+      const float dp = glm::distance(vec3(w * vec4(h.palm_centre_local, 1.0f)), planned[side].position);
+      const float da = glm::length(rotation_error(glm::normalize(glm::quat_cast(mat3(w))), planned_wrist[side]));
+      if (planned[side].at_body && dp > st.key_position_error) st.key_position_error = dp, st.key_position_time = t;
+      if (!planned[side].at_body && dp > st.key_space_position_error)
+        st.key_space_position_error = dp, st.key_space_position_time = t;
+      if (da > st.key_orientation_error) st.key_orientation_error = da, st.key_orientation_time = t;
     }
     for (int j : driven) clip.rotations[static_cast<std::size_t>(j)].add(t, pose.rotations[static_cast<std::size_t>(j)]);
   }

@@ -15,9 +15,19 @@ struct PerformOptions {
 
 struct PerformanceStats {
   int frames = 0;
-  float max_position_error = 0.0f;     // metres, IK residual of the wrist
+  float max_position_error = 0.0f;     // metres, IK residual of the wrist, any frame
   float max_orientation_error = 0.0f;  // radians
   float max_penetration = 0.0f;        // metres, hand points inside the collision body after solving
+  // How far the performed hand is from the plan at the planned key instants (the frame nearest
+  // the end of every segment that leaves a hand in a signing posture): the palm centre's distance
+  // and the angle between the performed and planned hand frames. Measured on the final pose, so
+  // everything the performer did (keeping the hand out of the body, clamping to limits) counts.
+  float key_position_error = 0.0f;     // metres, postures at the body (HandState::at_body)
+  float key_space_position_error = 0.0f;  // metres, postures out in the signing space
+  float key_orientation_error = 0.0f;  // radians
+  float key_position_time = 0.0f;      // seconds: when the largest position error happened
+  float key_space_position_time = 0.0f;
+  float key_orientation_time = 0.0f;   // seconds: when the largest orientation error happened
 };
 
 // A clip on the rig's skeleton, keyed every frame on the arms and fingers.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gestura/core/error.hpp"
+#include "gestura/sign/hand_part.hpp"
 #include "gestura/sign/movement_timing.hpp"
 
 namespace gestura {
@@ -22,7 +23,10 @@ constexpr float kCloseGap = 0.025f;
 constexpr float kNearGap = 0.07f;
 constexpr float kFarGap = 0.25f;
 constexpr float kBesideOffset = 0.07f;  // hamlrbeside: beside the site, on the hand's side
+constexpr float kFaceSideOffset = 0.045f;  // hamlrat at a central head site: its side (temple, mouth corner)
+constexpr float kTrunkSideOffset = 0.09f;  // hamlrat at a central trunk site: its side (below the nipple)
 constexpr float kBodyClearance = 0.005f;  // planned hand surfaces stay this far off the body
+constexpr float kAtBody = kCloseGap + 0.01f;  // a hand surface this near the body is at the body
 
 // Durations of actions without a path (seconds, normal speed).
 constexpr float kReplacementTime = 0.35f;
@@ -117,20 +121,27 @@ class Planner {
   // `seg` comes with its duration in [start, end] (start usually 0); it is placed at the hand's clock.
   // Moves a planned state out of the body: notation may ask for a movement towards the body from a
   // place already close to it; a signer stops at the surface.
+  // Also marks whether the hand ends up at the body (HandState::at_body).
   void keep_out(int h, HandState& s) {
+    s.at_body = false;
     if (!s.active) return;
     const auto pts = hand_points(h, s);
+    float nearest = 1e9f;
     for (int pass = 0; pass < 3; ++pass) {
       float deepest = 0.0f;
       vec3 outward(0, 0, 1);
+      nearest = 1e9f;
       for (const vec3& p : pts) {
         vec3 n;
         const float d = body_signed_distance(rig_, rig_.bind_model, s.position + p, &n) - kBodyClearance;
+        nearest = std::min(nearest, d);
         if (d < deepest) deepest = d, outward = n;
       }
-      if (deepest >= 0.0f) return;
+      if (deepest >= 0.0f) break;
       s.position += outward * (-deepest);
+      nearest = 0.0f;
     }
+    s.at_body = nearest < kAtBody;
   }
 
   void add_segment(int h, HandSegment seg) {
@@ -228,6 +239,25 @@ class Planner {
     return site.point + site.normal * gap - contact;
   }
 
+  // Palm-centre position that puts a named part of the hand (HamNoSys: "hamchin hamseqbegin
+  // hamfingertip hamseqend", the fingertips at the chin) `gap` metres out from the site point.
+  // Falls back to place_at for a part that is not on the hand.
+  vec3 place_part_at(int h, const HandState& s, const SitePlace& site, float gap, const sign::SitePoint& part) {
+    const HandRig& hr = rig_.hand(hand_of(h));
+    apply_hand_posture(rig_, hand_of(h), s.shape, scratch_);
+    clamp_to_limits(rig_.skeleton(), scratch_);
+    const auto on_hand = hand_part_site(rig_, hand_of(h), scratch_, s.shape, part);
+    if (!on_hand) return place_at(h, s, site, gap);
+    const quat wrist = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), s.orientation}, hr.rest_frame.rotation,
+                                          hr.rest_wrist_rotation);
+    return site.point + site.normal * gap - wrist * (on_hand->point - hr.palm_centre_local);
+  }
+
+  // The hand part the last location named for hand `h`, if any, else the nearest part.
+  vec3 place_at_last_site(int h, const HandState& s, float gap) {
+    return last_part_[h] ? place_part_at(h, s, last_site_[h], gap, *last_part_[h]) : place_at(h, s, last_site_[h], gap);
+  }
+
   SitePlace body_site(const std::string& name) const {
     SitePlace out;
     if (const BodySite* s = find_site(rig_.sites, name)) {
@@ -320,7 +350,13 @@ class Planner {
     if (!p.found) p = neutral_space(h);
     if (site == S::earlobe) p.point.y -= 0.02f;
     if (site == S::eyes && side == sign::Side::centre) p.point.y -= 0.02f;
-    if (side == sign::Side::beside) p.point.x += (hand_of(h) == Hand::Right ? -1.0f : 1.0f) * kBesideOffset;
+    const float outward = hand_of(h) == Hand::Right ? -1.0f : 1.0f;
+    if (side == sign::Side::beside) p.point.x += outward * kBesideOffset;
+    // hamlrat at a site the body has once, in the middle (forehead, chin, chest): that site's
+    // own side, toward the hand (the temple side of the forehead, the right of the chest). Sites
+    // the body has twice (cheek, eye, ear, shoulder) were named with the hand's side above.
+    if (side == sign::Side::dominant_side && name.rfind(own, 0) != 0)
+      p.point.x += outward * (region == sign::SiteRegion::trunk ? kTrunkSideOffset : kFaceSideOffset);
     return p;
   }
 
@@ -349,7 +385,9 @@ class Planner {
     (void)copy;
     last_site_[h] = p;
     has_site_[h] = true;
-    return place_at(h, s, p, gap_of(loc.proximity, sign::site_region(loc.site)));
+    last_part_[h] = loc.hand_part;
+    const float gap = gap_of(loc.proximity, sign::site_region(loc.site));
+    return loc.hand_part ? place_part_at(h, s, p, gap, *loc.hand_part) : place_at(h, s, p, gap);
   }
 
   // ---- the sign ------------------------------------------------------------------------------
@@ -394,7 +432,9 @@ class Planner {
       state_[1] = target[1];
       const SitePlace other = other_hand_site(0, p.location.nondominant->site);
       const auto proximity = p.hands_contact ? p.hands_contact : p.location.dominant->proximity;
-      target[0].position = place_at(0, target[0], other, gap_of(proximity, sign::SiteRegion::hand));
+      const sign::Location& own = *p.location.dominant;  // the dominant hand's part that touches
+      target[0].position = place_part_at(0, target[0], other, gap_of(proximity, sign::SiteRegion::hand),
+                                         sign::SitePoint{own.site, own.fingers, own.finger_part, own.side});
     }
     // Locations: the non-dominant hand first, as the dominant hand may be placed on it.
     for (int h : {1, 0}) {
@@ -661,7 +701,7 @@ class Planner {
         break;
       case MotionKind::none: duration = scaled(kHoldTime); break;
     }
-    if (m.target_contact && has_site_[h]) seg.to.position = place_at(h, seg.to, last_site_[h], gap_of(m.target_contact, sign::SiteRegion::face));
+    if (m.target_contact && has_site_[h]) seg.to.position = place_at_last_site(h, seg.to, gap_of(m.target_contact, sign::SiteRegion::face));
     return duration;
   }
 
@@ -669,7 +709,7 @@ class Planner {
     for (int h = 0; h < 2; ++h) {
       if (!(mask & (1 << h)) || !has_site_[h]) continue;
       HandState to = state_[h];
-      to.position = place_at(h, to, last_site_[h], gap_of(c.proximity, sign::SiteRegion::face));
+      to.position = place_at_last_site(h, to, gap_of(c.proximity, sign::SiteRegion::face));
       move_to(h, to, scaled(kContactTime));
     }
   }
@@ -711,6 +751,7 @@ class Planner {
   sign::Symmetry symmetry_;
   SitePlace last_site_[2];
   bool has_site_[2] = {false, false};
+  std::optional<sign::SitePoint> last_part_[2];  // the hand part the last location named
   const Element* last_action_ = nullptr;
   int last_mask_ = 1;
   const Element* last_hand_action_[2] = {nullptr, nullptr};

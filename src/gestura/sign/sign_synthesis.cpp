@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "gestura/anim/sampler.hpp"
@@ -16,6 +17,16 @@ SignSynthesis synthesize_sign(const sign::HamSign& sign, const SigningRig& rig, 
   out.clip = perform_plan(out.plan, rig, perform_options, &out.stats);
   return out;
 }
+
+namespace {
+
+std::string fixed(float v, int decimals) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, static_cast<double>(v));
+  return buf;
+}
+
+}  // namespace
 
 SignSynthesis synthesize_sign(const sign::HamSign& sign, std::span<const sign::NonManual> nonmanual,
                               const SigningRig& rig, const PlanOptions& plan_options,
@@ -41,7 +52,8 @@ SignSynthesis synthesize_sign(const sign::HamSign& sign, std::span<const sign::N
   return out;
 }
 
-std::optional<std::string> synthesis_problem(const SignSynthesis& result, const SigningRig& rig, float max_penetration) {
+std::optional<std::string> synthesis_problem(const SignSynthesis& result, const SigningRig& rig,
+                                             const SynthesisTolerance& tolerance) {
   const Skeleton& s = rig.skeleton();
   for (std::size_t j = 0; j < result.clip.rotations.size(); ++j) {
     const QuatTrack& tr = result.clip.rotations[j];
@@ -51,8 +63,20 @@ std::optional<std::string> synthesis_problem(const SignSynthesis& result, const 
         return "joint '" + s.names[j] + "' outside its limits at " + std::to_string(tr.times[k]) + " s";
     }
   }
-  if (result.stats.max_penetration > max_penetration)
-    return "hand inside the body by " + std::to_string(result.stats.max_penetration * 100.0f) + " cm";
+  const PerformanceStats& st = result.stats;
+  if (st.max_penetration > tolerance.penetration)
+    return "hand inside the body by " + fixed(st.max_penetration * 100.0f, 1) + " cm";
+  std::string ik;
+  if (st.key_position_error > tolerance.position)
+    ik = "hand " + fixed(st.key_position_error * 100.0f, 1) + " cm from its planned place at the body at " +
+         fixed(st.key_position_time, 2) + " s";
+  else if (st.key_space_position_error > tolerance.space_position)
+    ik = "hand " + fixed(st.key_space_position_error * 100.0f, 1) + " cm from its planned place in space at " +
+         fixed(st.key_space_position_time, 2) + " s";
+  if (st.key_orientation_error > tolerance.orientation)
+    ik += std::string(ik.empty() ? "hand" : ";") + " turned " + fixed(to_degrees(st.key_orientation_error), 0) +
+          "° from its planned orientation at " + fixed(st.key_orientation_time, 2) + " s";
+  if (!ik.empty()) return "IK: " + ik;
   return std::nullopt;
 }
 

@@ -24,10 +24,26 @@ SignSynthesis synthesize_sign(const sign::HamSign& sign, std::span<const sign::N
                               const SigningRig& rig, const PlanOptions& plan_options = {},
                               const PerformOptions& perform_options = {});
 
-// Why a synthesized sign is not acceptable (NaN, joint limits broken, hand inside the body deeper
-// than `max_penetration`), or nullopt when it is.
+// What a performed sign may deviate from its plan and still count as the notated sign.
+//   penetration: a hand point this deep inside the (capsule) body is visible as a hand in the body.
+//   position / orientation: the IK residual at the plan's key postures (PerformanceStats::key_*).
+//   At the body, signers vary a location by a couple of centimetres between repetitions, and a
+//   contact site is about finger-width; 2 cm keeps a touch a touch. A place out in the signing
+//   space (neutral space, "near" a site) is a region a hand's width across: 5 cm. Orientation is read at the
+//   resolution of the notation's own symbols: neighbouring extended-finger directions and palm
+//   orientations are 45° apart, so within 25° the hand still reads as the notated symbol and not
+//   its neighbour.
+struct SynthesisTolerance {
+  float penetration = 0.01f;      // metres
+  float position = 0.02f;         // metres, at the body
+  float space_position = 0.05f;   // metres, out in the signing space
+  float orientation = deg(25.0f); // radians
+};
+
+// Why a synthesized sign is not acceptable (NaN, joint limits broken, hand inside the body or
+// away from its planned posture beyond `tolerance`), or nullopt when it is.
 std::optional<std::string> synthesis_problem(const SignSynthesis& result, const SigningRig& rig,
-                                             float max_penetration = 0.01f);
+                                             const SynthesisTolerance& tolerance = {});
 
 // Connects `gestura check` (sign_check.hpp) to synthesis on the default avatar.
 void connect_synthesis_to_check();

@@ -37,7 +37,6 @@ HandRig make_hand(const Skeleton& s, const std::vector<mat4>& bind, Hand hand) {
     for (int k = 0; k < 3; ++k) h.fingers[f][k] = need(s, p + names[f] + std::to_string(k + 1));
     h.tips[f] = need(s, p + names[f] + "_tip");
   }
-  h.arm = make_chain(s, h.clavicle, h.wrist);
   const vec3 wrist = position_of(bind, h.wrist), index1 = position_of(bind, h.fingers[1][0]);
   const vec3 middle1 = position_of(bind, h.fingers[2][0]), pinky1 = position_of(bind, h.fingers[4][0]);
   h.rest_frame = hand_frame_from_joints(wrist, index1, middle1, pinky1, hand);
@@ -45,6 +44,9 @@ HandRig make_hand(const Skeleton& s, const std::vector<mat4>& bind, Hand hand) {
   // The hand's reference point: the middle of the palm, between the wrist and the knuckles.
   const vec3 centre = 0.4f * wrist + 0.6f * (index1 + middle1 + pinky1) / 3.0f;
   h.palm_centre_local = vec3(glm::inverse(bind[static_cast<std::size_t>(h.wrist)]) * vec4(centre, 1.0f));
+  // The solvers place the palm centre: a hand turned less than asked still sits where it should.
+  h.arm = make_chain(s, h.clavicle, h.wrist, h.palm_centre_local);
+  h.swivel = make_swivel_arm(s, h.shoulder, h.elbow, h.wrist);
   return h;
 }
 
@@ -66,9 +68,6 @@ SigningRig make_signing_rig(const Avatar& avatar) {
   for (HandRig& h : rig.hands) {
     const Pose ready = arm_ready_pose(s, h.hand == Hand::Right ? "r" : "l");
     for (int j : h.arm.joints) rig.neutral.rotations[static_cast<std::size_t>(j)] = ready.rotations[static_cast<std::size_t>(j)];
-    IkWorkspace ws(h.arm);
-    load_angles(s, h.arm, rig.neutral, ws);
-    h.preferred_angles = ws.angles;
   }
   for (HandRig& h : rig.hands) {
     const std::string p = h.hand == Hand::Right ? "r_" : "l_";
@@ -80,7 +79,16 @@ SigningRig make_signing_rig(const Avatar& avatar) {
   const int vl3 = need(s, "vl3"), vt6 = need(s, "vt6"), vt1 = need(s, "vt1"), vc7 = need(s, "vc7");
   const int skull = need(s, "skullbase");
   const vec3 belly = position_of(rig.bind_model, vl3), upper = position_of(rig.bind_model, vt1);
-  const float torso_r = std::clamp(distance_to_site(rig, "chest", position_of(rig.bind_model, vt6), 0.13f), 0.08f, 0.25f);
+  // The torso's radius makes its surface pass through the chest site: measured from the capsule's
+  // axis, not from the spine joint behind it (the axis leans forward with the upper back), so a
+  // palm laid on the chest touches the capsule where it touches the skin.
+  float torso_r = std::clamp(distance_to_site(rig, "chest", position_of(rig.bind_model, vt6), 0.13f), 0.08f, 0.25f);
+  if (const BodySite* chest = find_site(rig.sites, "chest")) {
+    const vec3 c = site_position(*chest, rig.bind_model), top = upper - vec3(0, 0.7f * torso_r, 0);
+    const vec3 axis = top - belly;
+    const float k = std::clamp(glm::dot(c - belly, axis) / glm::dot(axis, axis), 0.0f, 1.0f);
+    torso_r = std::clamp(glm::distance(c, belly + k * axis), 0.08f, 0.25f);
+  }
   rig.body.push_back({"torso", vt6, belly, upper - vec3(0, 0.7f * torso_r, 0), torso_r});
   const vec3 neck_a = position_of(rig.bind_model, vc7), neck_b = position_of(rig.bind_model, skull);
   const float neck_r = std::clamp(distance_to_site(rig, "neck", 0.5f * (neck_a + neck_b), 0.05f), 0.03f, 0.1f);

@@ -11,6 +11,7 @@
 #include "gestura/body/avatar.hpp"
 #include "gestura/body/body_sites.hpp"
 #include "gestura/ik/chain.hpp"
+#include "gestura/ik/swivel_arm.hpp"
 #include "gestura/sign/phonology_direction.hpp"
 #include "gestura/sign/phonology_handshape.hpp"
 
@@ -29,8 +30,8 @@ struct HandRig {
   int clavicle = -1, shoulder = -1, elbow = -1, wrist = -1;
   std::array<std::array<int, 3>, 5> fingers{};  // thumb1..3, index1..3, … pinky1..3
   std::array<int, 5> tips{};                     // *_tip sites
-  IkChain arm;                                   // clavicle → wrist, effector at the wrist
-  std::vector<float> preferred_angles;           // relaxed signing posture, per arm DoF
+  IkChain arm;                                   // clavicle → wrist, effector at the palm centre
+  SwivelArm swivel;                              // shoulder → elbow → wrist, solved analytically
   HandFrame rest_frame;                          // hand frame of the bind pose
   quat rest_wrist_rotation{1, 0, 0, 0};          // model rotation of the wrist at bind pose
   vec3 palm_centre_local{0.0f};                  // the hand's reference point, wrist frame

@@ -1,0 +1,37 @@
+#pragma once
+// Putting one hand where a HandState says: the arm by the analytic swivel solver (a natural elbow,
+// joint limits respected), refined by damped least squares, then pushed out of the collision body.
+// One frame of perform_plan, and what the sentence layer uses to solve a single posture, so both
+// solve exactly the same problem.
+#include <optional>
+#include <vector>
+
+#include "gestura/ik/chain.hpp"
+#include "gestura/sign/hand_timeline.hpp"
+#include "gestura/sign/signing_rig.hpp"
+
+namespace gestura {
+
+// What a hand's solver carries from one frame to the next.
+struct HandSolverState {
+  explicit HandSolverState(const IkChain& arm) : workspace(arm) {}
+  std::optional<float> swivel;  // the elbow swivel chosen last frame (none after rest)
+  IkWorkspace workspace;
+  std::vector<float> seed;      // this frame's analytic angles, the posture DLS keeps to
+};
+
+struct HandSolveResult {
+  float position_error = 0.0f;     // metres, the IK residual before leaving the body
+  float orientation_error = 0.0f;  // radians
+};
+
+// Contract: `state.active`; `pose` holds the rest of the body with the fingers already posed for
+// state.shape (apply_hand_posture). Poses the arm chain, clavicle to wrist, for the hand's place and turn;
+// `search_circle` lets the swivel solver look around the whole elbow circle (the costly part;
+// animation asks for it every few frames). `model` and `points` are scratch buffers. Does not clamp
+// the pose to joint limits (the caller does, once both hands are solved).
+HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
+                           bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
+                           std::vector<vec3>& points);
+
+}  // namespace gestura
