@@ -140,7 +140,7 @@ TEST(AvatarFace, TeethAndTongueSitInTheMouthBehindClosedLips) {
 
 TEST(AvatarFace, OpeningTheMouthShowsTeethTongueAndTheDarkCavity) {
   const Mesh& m = avatar().mesh;
-  const auto open = morphed(m, {{"aa", 1.0f}});
+  const auto open = morphed(m, {{"mouthOpen", 1.0f}});
   std::set<MaterialId> seen;
   for (float x = -0.012f; x <= 0.0121f; x += 0.002f)
     for (float y = 1.500f; y <= 1.5301f; y += 0.0015f)

@@ -219,33 +219,34 @@ Field soft(std::function<vec3(const vec3&)> on_skin) {
 
 std::vector<MorphRecipe> recipes(const Face& f) {
   std::vector<MorphRecipe> r;
-  auto viseme = [&](const char* name, float open, float wide, float round, float press, float tuck, vec3 tongue_move) {
+  // Visemes shape only the lips and the tongue: the jaw opening of each phoneme is the jaw bone's
+  // (face/viseme_track.hpp adds it to jaw_open), so mouthing and expressions never open it twice.
+  auto viseme = [&](const char* name, float wide, float round, float press, float tuck, vec3 tongue_move) {
     r.push_back({name, [=, &f](const FacePoint& fp) {
                    if (fp.part == Part::Eyeball) return vec3(0.0f);
-                   const vec3 shift = fp.part == Part::Tongue ? tongue_shift(f, fp.p, tongue_move) : vec3(0.0f);
-                   vec3 d = jaw_turn(f, fp, open, shift);
+                   vec3 d = fp.part == Part::Tongue ? tongue_shift(f, fp.p, tongue_move) : vec3(0.0f);
                    if (fp.part == Part::Soft)
                      d += mouth_wide(f, fp.p, wide) + mouth_round(f, fp.p, round) + mouth_press(f, fp.p, press) +
                           lower_lip_tuck(f, fp.p, tuck);
                    return d;
                  }});
   };
-  //       name  jaw°  wide round press tuck  tongue front (m at 1.70 m)
-  viseme("sil", 0.0f, 0.0f, 0.0f, 0.3f, 0.0f, vec3(0.0f));
-  viseme("PP", 0.0f, 0.0f, 0.1f, 1.0f, 0.0f, vec3(0.0f));
-  viseme("FF", 3.0f, 0.2f, 0.0f, 0.0f, 1.0f, vec3(0.0f));
-  viseme("TH", 7.0f, 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.009f, 0.016f));
-  viseme("DD", 7.0f, 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.006f, 0.004f));
-  viseme("kk", 9.0f, 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.003f, -0.002f));
-  viseme("CH", 5.0f, 0.0f, 0.6f, 0.0f, 0.0f, vec3(0, 0.004f, 0.0f));
-  viseme("SS", 3.0f, 0.6f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.002f));
-  viseme("nn", 6.0f, 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.006f, 0.003f));
-  viseme("RR", 6.0f, 0.0f, 0.4f, 0.0f, 0.0f, vec3(0, 0.003f, -0.002f));
-  viseme("aa", 16.0f, 0.1f, 0.0f, 0.0f, 0.0f, vec3(0.0f));
-  viseme("E", 10.0f, 0.6f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.0f));
-  viseme("ih", 8.0f, 0.4f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.0f));
-  viseme("oh", 12.0f, 0.0f, 0.7f, 0.0f, 0.0f, vec3(0.0f));
-  viseme("ou", 6.0f, 0.0f, 1.0f, 0.0f, 0.0f, vec3(0.0f));
+  //       name  wide round press tuck  tongue front (m at 1.70 m)
+  viseme("sil", 0.0f, 0.0f, 0.3f, 0.0f, vec3(0.0f));
+  viseme("PP", 0.0f, 0.1f, 1.0f, 0.0f, vec3(0.0f));
+  viseme("FF", 0.2f, 0.0f, 0.0f, 1.0f, vec3(0.0f));
+  viseme("TH", 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.009f, 0.016f));
+  viseme("DD", 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.006f, 0.004f));
+  viseme("kk", 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.003f, -0.002f));
+  viseme("CH", 0.0f, 0.6f, 0.0f, 0.0f, vec3(0, 0.004f, 0.0f));
+  viseme("SS", 0.6f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.002f));
+  viseme("nn", 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.006f, 0.003f));
+  viseme("RR", 0.0f, 0.4f, 0.0f, 0.0f, vec3(0, 0.003f, -0.002f));
+  viseme("aa", 0.1f, 0.0f, 0.0f, 0.0f, vec3(0.0f));
+  viseme("E", 0.6f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.0f));
+  viseme("ih", 0.4f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.0f));
+  viseme("oh", 0.0f, 0.7f, 0.0f, 0.0f, vec3(0.0f));
+  viseme("ou", 0.0f, 1.0f, 0.0f, 0.0f, vec3(0.0f));
 
   const char* suffix[2] = {"_L", "_R"};
   for (int e = 0; e < 2; ++e) {

@@ -9,6 +9,7 @@
 #include "gestura/core/error.hpp"
 #include "gestura/face/eye_gaze.hpp"
 #include "gestura/face/face_channels.hpp"
+#include "gestura/face/jaw_motion.hpp"
 #include "gestura/face/mouthing.hpp"
 #include "gestura/face/nonmanual.hpp"
 #include "gestura/face/nonmanual_from_translation.hpp"
@@ -175,19 +176,6 @@ bool is_blank(std::string_view text) {
   return std::all_of(text.begin(), text.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
 }
 
-// Drives the jaw joint from the jaw_open channel (face_channels.hpp: x = jaw_open · kJawOpenMaxDegrees).
-void write_jaw(const Skeleton& skeleton, Clip& clip) {
-  const int channel = clip.find_channel(std::string(face::kJawOpen));
-  const int jaw = skeleton.find("temporomandibular");
-  if (channel < 0 || jaw < 0) return;
-  const FloatTrack& open = clip.channels[static_cast<std::size_t>(channel)];
-  QuatTrack& track = clip.rotations[static_cast<std::size_t>(jaw)];
-  track = {};
-  const quat rest = skeleton.rest_rotations[static_cast<std::size_t>(jaw)];
-  for (std::size_t k = 0; k < open.size(); ++k)
-    track.add(open.times[k], rest * glm::angleAxis(glm::radians(open.values[k] * face::kJawOpenMaxDegrees), vec3(1, 0, 0)));
-}
-
 }  // namespace
 
 Signer::Signer(const Avatar& avatar, LayeredLexicon& lexicon)
@@ -341,7 +329,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
   }
   if (!face_actions.empty()) face::write_face_channels(face_actions, out.clip);
   face::write_eye_gaze(skeleton, out.clip, options.fps);
-  write_jaw(skeleton, out.clip);
+  face::write_jaw_from_channel(skeleton, out.clip);
   out.clip.duration = std::max(out.clip.duration, out.clip.end_time());
   out.duration = out.clip.duration;
   return out;
