@@ -171,8 +171,8 @@ TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   EXPECT_EQ(signs, 100);
   std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body; %d off "
               "their planned key postures (IK residual over 2 cm or 25 degrees)\n", signs, deep, off);
-  EXPECT_LE(deep, 3);   // ratchet (5 before the analytic swivel seed): the crude neck/shoulder capsules
-  EXPECT_LE(off, 35);   // ratchet: measured 30; 57 before the analytic swivel seed
+  EXPECT_LE(deep, 2);   // ratchet: measured 1 (5 before the analytic swivel seed): the crude neck/shoulder capsules
+  EXPECT_LE(off, 25);   // ratchet: measured 22 (30 before hands in space took reachable places; 57 before the analytic swivel seed)
 }
 
 TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
@@ -191,9 +191,11 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 }
 
 // Ratchets over the German and Polish lexicons (4,070 signs); lower them as synthesis improves.
-constexpr int kMaxDeep = 90;        // measured 86; 140 before the analytic swivel seed
-constexpr int kMaxOffPlace = 950;   // measured 934
-constexpr int kMaxOffTurn = 460;    // measured 446
+// Before hands out in space took places their arm can turn them at (arm_reach.hpp): 934 off
+// place, 446 turned, 86 in the body.
+constexpr int kMaxDeep = 80;        // measured 76; 140 before the analytic swivel seed
+constexpr int kMaxOffPlace = 715;   // measured 701
+constexpr int kMaxOffTurn = 405;    // measured 392
 
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits; the count of
 // signs whose hand enters the (capsule) collision body by more than 1 cm is held by a ratchet.

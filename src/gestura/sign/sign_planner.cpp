@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gestura/core/error.hpp"
+#include "gestura/sign/arm_reach.hpp"
 #include "gestura/sign/hand_part.hpp"
 #include "gestura/sign/movement_timing.hpp"
 
@@ -27,6 +28,13 @@ constexpr float kFaceSideOffset = 0.045f;  // hamlrat at a central head site: it
 constexpr float kTrunkSideOffset = 0.09f;  // hamlrat at a central trunk site: its side (below the nipple)
 constexpr float kBodyClearance = 0.005f;  // planned hand surfaces stay this far off the body
 constexpr float kAtBody = kCloseGap + 0.01f;  // a hand surface this near the body is at the body
+// A hand out in space moves at most this far from its notated place to where the arm can turn it
+// as notated (arm_reach.hpp); within `kTurnSettled` radians of clamped joint range it is turned.
+constexpr float kMaxSpaceShift = 0.15f;
+constexpr float kTurnSettled = deg(2.0f);
+// Palm centres this close belong to hands held together: one is placed relative to the other,
+// and moving either alone would part them.
+constexpr float kHandsTogether = 0.15f;
 
 // Durations of actions without a path (seconds, normal speed).
 constexpr float kReplacementTime = 0.35f;
@@ -142,6 +150,41 @@ class Planner {
       nearest = 0.0f;
     }
     s.at_body = nearest < kAtBody;
+  }
+
+  // A place out in the signing space is a region: the hand takes the place in it, nearest the
+  // notated one, where the arm can make the notated turn (fingers straight up raise the hand, a
+  // palm turned in brings it closer), as a signer's does, rather than twisting at its limits.
+  // A hand held to the other one stays where it is (settle_together moves such pairs).
+  void settle_in_space(int h, HandState& s, const HandState& other) {
+    keep_out(h, s);
+    if (!s.active || s.at_body) return;
+    if (other.active && glm::distance(other.position, s.position) < kHandsTogether) return;
+    const HandTurn turn{hand_of(h), s.position, s.orientation};
+    const ReachableShift shift = nearest_reachable_shift(rig_, std::span(&turn, 1), kMaxSpaceShift, kTurnSettled);
+    if (shift.offset == vec3(0.0f)) return;
+    s.position += shift.offset;
+    keep_out(h, s);
+  }
+
+  // The same for both hands of a posture; hands held together out in space move together.
+  // Only the hands the posture places (`posed`) move.
+  void settle_together(HandState (&target)[2], const bool (&posed)[2]) {
+    const bool together = posed[0] && posed[1] && glm::distance(target[0].position, target[1].position) < kHandsTogether;
+    if (!together) {
+      for (int h = 0; h < 2; ++h)
+        if (posed[h]) settle_in_space(h, target[h], target[1 - h]);
+      return;
+    }
+    for (int h = 0; h < 2; ++h) keep_out(h, target[h]);
+    if (target[0].at_body || target[1].at_body) return;
+    const HandTurn turns[2] = {{Hand::Right, target[0].position, target[0].orientation},
+                               {Hand::Left, target[1].position, target[1].orientation}};
+    const ReachableShift shift = nearest_reachable_shift(rig_, turns, kMaxSpaceShift, kTurnSettled);
+    for (int h = 0; h < 2; ++h) {
+      target[h].position += shift.offset;
+      keep_out(h, target[h]);
+    }
   }
 
   void add_segment(int h, HandSegment seg) {
@@ -405,8 +448,10 @@ class Planner {
       if (h == 1 && p.handshape.dominant && (both_hands() || !m.nondominant_only)) return hand_posture_of(*p.handshape.dominant);
       return make_handshape(BasicHandshape::Flat);
     };
+    bool posed[2] = {false, false};
     for (int h = 0; h < 2; ++h) {
       const bool active = h == 0 ? dominant_signs : other_signs;
+      posed[h] = active;
       if (!active) continue;
       HandState& s = target[h];
       s.active = true;
@@ -474,6 +519,7 @@ class Planner {
       SitePlace other = other_hand_site(0, sign::Site::palm);
       target[0].position = place_at(0, target[0], other, gap_of(p.hands_contact, sign::SiteRegion::hand));
     }
+    settle_together(target, posed);
     // Move in (from rest or from the previous segment), then hold the posture briefly.
     for (int h = 0; h < 2; ++h) state_[h] = timeline_[h].segments.empty() ? rest_hand_state(rig_, hand_of(h)) : timeline_[h].segments.back().to;
     for (int h = 0; h < 2; ++h) {
@@ -621,6 +667,7 @@ class Planner {
       seg.to.position += sample(mv, mv.duration).position;
     }
     last_hand_action_[h] = leaves.empty() ? nullptr : leaves.front();
+    settle_in_space(h, seg.to, state_[1 - h]);
     add_segment(h, std::move(seg));
   }
 
