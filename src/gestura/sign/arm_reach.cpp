@@ -28,7 +28,7 @@ float arm_reach_excess(const SigningRig& rig, Hand hand, const vec3& palm_positi
 }
 
 ReachableShift nearest_reachable_shift(const SigningRig& rig, std::span<const HandTurn> hands, float max_shift,
-                                       float settled) {
+                                       float settled, const std::function<bool(const vec3&)>& allowed) {
   auto excess_at = [&](const vec3& offset) {
     float e = 0.0f;
     for (const HandTurn& t : hands) e += arm_reach_excess(rig, t.hand, t.palm + offset, t.orientation);
@@ -49,7 +49,7 @@ ReachableShift nearest_reachable_shift(const SigningRig& rig, std::span<const Ha
           if (x == 0 && y == 0 && z == 0) continue;
           const vec3 offset = r * glm::normalize(vec3(mirror * static_cast<float>(x), y, z));
           const float e = excess_at(offset);
-          if (e < shell_best.excess - kClearlyLess) shell_best = {offset, e};
+          if (e < shell_best.excess - kClearlyLess && (!allowed || allowed(offset))) shell_best = {offset, e};
         }
     if (shell_best.excess < settled) return shell_best;  // the nearest shell that makes the turn
     const float score = shell_best.excess * kMetresPerRadian + r;

@@ -4,6 +4,7 @@
 // palm in brings it closer. The planner asks for the nearest place to the notated one from which
 // the arm makes the turn within its joint ranges, judged by the analytic swivel arm (the clavicle
 // relaxed, as the hand solver seeds it).
+#include <functional>
 #include <span>
 
 #include "gestura/sign/signing_rig.hpp"
@@ -31,8 +32,9 @@ struct ReachableShift {
 // each), moving all `hands` together (hands held to each other stay so), after which their
 // summed arm_reach_excess is below `settled` radians; when there is none, the one that trades
 // excess against distance best (a radian of clamped turn weighs like 25 cm, as in the hand
-// solver). No shift when the hands are already settled.
+// solver). No shift when the hands are already settled. Shifts for which `allowed` (when given)
+// is false are passed over: the planner keeps hands out in space clear of the body.
 ReachableShift nearest_reachable_shift(const SigningRig& rig, std::span<const HandTurn> hands, float max_shift,
-                                       float settled);
+                                       float settled, const std::function<bool(const vec3&)>& allowed = {});
 
 }  // namespace gestura

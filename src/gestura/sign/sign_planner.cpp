@@ -29,8 +29,13 @@ constexpr float kTrunkSideOffset = 0.09f;  // hamlrat at a central trunk site: i
 constexpr float kBodyClearance = 0.005f;  // planned hand surfaces stay this far off the body
 constexpr float kAtBody = kCloseGap + 0.01f;  // a hand surface this near the body is at the body
 // A hand out in space moves at most this far from its notated place to where the arm can turn it
-// as notated (arm_reach.hpp); within `kTurnSettled` radians of clamped joint range it is turned.
-constexpr float kMaxSpaceShift = 0.15f;
+// as notated (arm_reach.hpp), and no farther than it is from the body (a hand "near" a site stays
+// near it; neutral space, well in front of the body, is the region that gives way most); it
+// keeps `kSpaceClearance` from the body. Within `kTurnSettled` radians of clamped joint range it
+// is turned.
+constexpr float kMaxSpaceShift = 0.24f;
+constexpr float kMinSpaceShift = 0.06f;
+constexpr float kSpaceClearance = kAtBody;
 constexpr float kTurnSettled = deg(2.0f);
 // Palm centres this close belong to hands held together: one is placed relative to the other,
 // and moving either alone would part them.
@@ -152,6 +157,13 @@ class Planner {
     s.at_body = nearest < kAtBody;
   }
 
+  // How far the hand's nearest point (hand_points) is from the body with its palm centre at `at`.
+  float clearance(const std::array<vec3, 11>& pts, const vec3& at) const {
+    float nearest = 1e9f;
+    for (const vec3& p : pts) nearest = std::min(nearest, body_signed_distance(rig_, rig_.bind_model, at + p));
+    return nearest;
+  }
+
   // A place out in the signing space is a region: the hand takes the place in it, nearest the
   // notated one, where the arm can make the notated turn (fingers straight up raise the hand, a
   // palm turned in brings it closer), as a signer's does, rather than twisting at its limits.
@@ -161,7 +173,11 @@ class Planner {
     if (!s.active || s.at_body) return;
     if (other.active && glm::distance(other.position, s.position) < kHandsTogether) return;
     const HandTurn turn{hand_of(h), s.position, s.orientation};
-    const ReachableShift shift = nearest_reachable_shift(rig_, std::span(&turn, 1), kMaxSpaceShift, kTurnSettled);
+    const auto pts = hand_points(h, s);
+    const float room = clearance(pts, s.position);
+    const ReachableShift shift = nearest_reachable_shift(
+        rig_, std::span(&turn, 1), std::clamp(room + kMinSpaceShift, kMinSpaceShift, kMaxSpaceShift), kTurnSettled,
+        [&](const vec3& offset) { return clearance(pts, s.position + offset) >= std::min(room, kSpaceClearance); });
     if (shift.offset == vec3(0.0f)) return;
     s.position += shift.offset;
     keep_out(h, s);
@@ -180,7 +196,13 @@ class Planner {
     if (target[0].at_body || target[1].at_body) return;
     const HandTurn turns[2] = {{Hand::Right, target[0].position, target[0].orientation},
                                {Hand::Left, target[1].position, target[1].orientation}};
-    const ReachableShift shift = nearest_reachable_shift(rig_, turns, kMaxSpaceShift, kTurnSettled);
+    const std::array<std::array<vec3, 11>, 2> pts = {hand_points(0, target[0]), hand_points(1, target[1])};
+    const float room = std::min(clearance(pts[0], target[0].position), clearance(pts[1], target[1].position));
+    const ReachableShift shift = nearest_reachable_shift(
+        rig_, turns, std::clamp(room + kMinSpaceShift, kMinSpaceShift, kMaxSpaceShift), kTurnSettled, [&](const vec3& offset) {
+          return std::min(clearance(pts[0], target[0].position + offset), clearance(pts[1], target[1].position + offset)) >=
+                 std::min(room, kSpaceClearance);
+        });
     for (int h = 0; h < 2; ++h) {
       target[h].position += shift.offset;
       keep_out(h, target[h]);
