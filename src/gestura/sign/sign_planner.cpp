@@ -29,9 +29,9 @@ constexpr float kTrunkSideOffset = 0.09f;  // hamlrat at a central trunk site: i
 constexpr float kBodyClearance = 0.005f;  // planned hand surfaces stay this far off the body
 constexpr float kAtBody = kCloseGap + 0.01f;  // a hand surface this near the body is at the body
 // A hand out in space moves at most this far from its notated place to where the arm can turn it
-// as notated (arm_reach.hpp), and no farther than it is from the body (a hand "near" a site stays
-// near it; neutral space, well in front of the body, is the region that gives way most); it
-// keeps `kSpaceClearance` from the body. Within `kTurnSettled` radians of clamped joint range it
+// as notated (arm_reach.hpp), and no more than `kMinSpaceShift` farther than it is from the body
+// (a hand "near" a site stays near it; neutral space, well in front of the body, is the region
+// that gives way most); it keeps `kSpaceClearance` from the body (or what it had, if less). Within `kTurnSettled` radians of clamped joint range it
 // is turned.
 constexpr float kMaxSpaceShift = 0.24f;
 constexpr float kMinSpaceShift = 0.06f;
