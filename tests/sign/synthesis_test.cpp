@@ -153,6 +153,17 @@ TEST(Synthesis, SymmetricSignsMirrorTheOtherHand) {
   EXPECT_LT(right.x, 0.0f);  // the dominant (right) hand on the signer's right
 }
 
+TEST(Synthesis, AMovementIntoTheFaceStopsAtItsSurface) {
+  // From close in front of the chin, "move in": the hand meets the chin and stays in front of the
+  // face (it used to pass through the head and be pushed out at the back of it).
+  const SignSynthesis r = synth("hamflathand,hamfingerstraightmod,hamextfingeru,hampalml,hamchin,hamclose,hammovei,hamtouch");
+  EXPECT_LT(r.stats.max_penetration, 0.01f);
+  for (float t = r.plan.sign_start; t < r.plan.sign_end; t += 0.05f) {
+    const auto m = held_pose(r, t);
+    EXPECT_GT(joint(m, "r_wrist").z, joint(m, "skullbase").z) << "at " << t << " s";
+  }
+}
+
 TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   const std::string dir = shared_data() + "/sigml-isl";
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared data at " << dir;
@@ -193,9 +204,9 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 // Ratchets over the German and Polish lexicons (4,070 signs); lower them as synthesis improves.
 // Before hands out in space took places their arm can turn them at (arm_reach.hpp): 934 off
 // place, 446 turned, 86 in the body.
-constexpr int kMaxDeep = 72;        // measured 68; 140 before the analytic swivel seed
-constexpr int kMaxOffPlace = 685;   // measured 671
-constexpr int kMaxOffTurn = 392;    // measured 380
+constexpr int kMaxDeep = 69;        // measured 65; 140 before the analytic swivel seed
+constexpr int kMaxOffPlace = 680;   // measured 667
+constexpr int kMaxOffTurn = 388;    // measured 377
 
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits; the count of
 // signs whose hand enters the (capsule) collision body by more than 1 cm is held by a ratchet.

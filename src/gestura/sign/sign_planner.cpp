@@ -28,6 +28,7 @@ constexpr float kFaceSideOffset = 0.045f;  // hamlrat at a central head site: it
 constexpr float kTrunkSideOffset = 0.09f;  // hamlrat at a central trunk site: its side (below the nipple)
 constexpr float kBodyClearance = 0.005f;  // planned hand surfaces stay this far off the body
 constexpr float kAtBody = kCloseGap + 0.01f;  // a hand surface this near the body is at the body
+constexpr float kPassThrough = 0.02f;  // a planned hand this deep in the body went into it, not onto it
 // A hand out in space moves at most this far from its notated place to where the arm can turn it
 // as notated (arm_reach.hpp), and no more than `kMinSpaceShift` farther than it is from the body
 // (a hand "near" a site stays near it; neutral space, well in front of the body, is the region
@@ -209,7 +210,24 @@ class Planner {
     }
   }
 
+  // A movement that would take the hand deep into the body (notation asking for a movement
+  // towards the body from a place already close to it) stops where it meets the surface, on the
+  // side it came from. Pushing its end out along the nearest surface normal instead could carry a
+  // hand that went through the head out at the back of it.
+  void stop_at_surface(int h, const HandState& from, HandState& to) {
+    if (!from.active || !to.active) return;
+    const auto pts = hand_points(h, to);
+    if (clearance(pts, to.position) > -kPassThrough || clearance(pts, from.position) < kBodyClearance) return;
+    float outside = 0.0f, inside = 1.0f;
+    for (int i = 0; i < 12; ++i) {
+      const float mid = 0.5f * (outside + inside);
+      (clearance(pts, glm::mix(from.position, to.position, mid)) >= kBodyClearance ? outside : inside) = mid;
+    }
+    to.position = glm::mix(from.position, to.position, outside);
+  }
+
   void add_segment(int h, HandSegment seg) {
+    stop_at_surface(h, seg.from, seg.to);
     keep_out(h, seg.to);
     const float duration = std::max(seg.end - seg.start, 1e-3f);
     seg.start = clock_[h];
