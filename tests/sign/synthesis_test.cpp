@@ -164,6 +164,17 @@ TEST(Synthesis, AMovementIntoTheFaceStopsAtItsSurface) {
   }
 }
 
+TEST(Synthesis, AMovementAcrossTheFaceStopsAtItsSurface) {
+  // From close beside the forehead, "move in and left": the hand meets the forehead on its own
+  // (right) side (it used to pass across the face to the other side).
+  const SignSynthesis r = synth("hamflathand,hamextfingerul,hampalmdr,hamforehead,hamlrbeside,hamclose,hammoveil,hamtouch");
+  EXPECT_LT(r.stats.max_penetration, 0.01f);
+  for (float t = r.plan.sign_start; t < r.plan.sign_end; t += 0.05f) {
+    const auto m = held_pose(r, t);
+    EXPECT_LT(joint(m, "r_wrist").x, joint(m, "skullbase").x) << "at " << t << " s";
+  }
+}
+
 TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   const std::string dir = shared_data() + "/sigml-isl";
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared data at " << dir;
@@ -182,8 +193,8 @@ TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   EXPECT_EQ(signs, 100);
   std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body; %d off "
               "their planned key postures (IK residual over 2 cm or 25 degrees)\n", signs, deep, off);
-  EXPECT_LE(deep, 3);   // ratchet: measured 2 (5 before the analytic swivel seed): the crude neck/shoulder capsules
-  EXPECT_LE(off, 25);   // ratchet: measured 22 (30 before hands in space took reachable places; 57 before the analytic swivel seed)
+  EXPECT_LE(deep, 2);   // ratchet: measured 1 (5 before the analytic swivel seed): the crude neck/shoulder capsules
+  EXPECT_LE(off, 24);   // ratchet: measured 21 (30 before hands in space took reachable places; 57 before the analytic swivel seed)
 }
 
 TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
@@ -204,9 +215,9 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 // Ratchets over the German and Polish lexicons (4,070 signs); lower them as synthesis improves.
 // Before hands out in space took places their arm can turn them at (arm_reach.hpp): 934 off
 // place, 446 turned, 86 in the body.
-constexpr int kMaxDeep = 69;        // measured 65; 140 before the analytic swivel seed
-constexpr int kMaxOffPlace = 680;   // measured 667
-constexpr int kMaxOffTurn = 388;    // measured 377
+constexpr int kMaxDeep = 53;        // measured 49; 140 before the analytic swivel seed
+constexpr int kMaxOffPlace = 650;   // measured 638
+constexpr int kMaxOffTurn = 357;    // measured 347
 
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits; the count of
 // signs whose hand enters the (capsule) collision body by more than 1 cm is held by a ratchet.

@@ -211,19 +211,27 @@ class Planner {
   }
 
   // A movement that would take the hand deep into the body (notation asking for a movement
-  // towards the body from a place already close to it) stops where it meets the surface, on the
-  // side it came from. Pushing its end out along the nearest surface normal instead could carry a
-  // hand that went through the head out at the back of it.
+  // towards or across the body from a place already close to it) stops where it meets the
+  // surface, on the side it came from. Pushing its end out along the nearest surface normal
+  // instead could carry a hand that went through the head out at the back of it, or across the
+  // face to its other side.
   void stop_at_surface(int h, const HandState& from, HandState& to) {
     if (!from.active || !to.active) return;
     const auto pts = hand_points(h, to);
-    if (clearance(pts, to.position) > -kPassThrough || clearance(pts, from.position) < kBodyClearance) return;
-    float outside = 0.0f, inside = 1.0f;
-    for (int i = 0; i < 12; ++i) {
-      const float mid = 0.5f * (outside + inside);
-      (clearance(pts, glm::mix(from.position, to.position, mid)) >= kBodyClearance ? outside : inside) = mid;
+    if (clearance(pts, from.position) < kBodyClearance) return;
+    auto at = [&](float t) { return glm::mix(from.position, to.position, t); };
+    constexpr int kSamples = 8;
+    for (int k = 1; k <= kSamples; ++k) {
+      float inside = static_cast<float>(k) / kSamples;
+      if (clearance(pts, at(inside)) > -kPassThrough) continue;
+      float outside = static_cast<float>(k - 1) / kSamples;
+      for (int i = 0; i < 10; ++i) {
+        const float mid = 0.5f * (outside + inside);
+        (clearance(pts, at(mid)) >= kBodyClearance ? outside : inside) = mid;
+      }
+      to.position = at(outside);
+      return;
     }
-    to.position = glm::mix(from.position, to.position, outside);
   }
 
   void add_segment(int h, HandSegment seg) {
