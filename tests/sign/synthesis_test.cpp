@@ -194,7 +194,7 @@ TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body; %d off "
               "their planned key postures (IK residual over 2 cm or 25 degrees)\n", signs, deep, off);
   EXPECT_LE(deep, 2);   // ratchet: measured 1 (5 before the analytic swivel seed): the crude neck/shoulder capsules
-  EXPECT_LE(off, 24);   // ratchet: measured 21 (30 before hands in space took reachable places; 57 before the analytic swivel seed)
+  EXPECT_LE(off, 24);   // ratchet: measured 22 (30 before hands in space took reachable places; 57 before the analytic swivel seed)
 }
 
 TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
@@ -215,9 +215,9 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 // Ratchets over the German and Polish lexicons (4,070 signs); lower them as synthesis improves.
 // Before hands out in space took places their arm can turn them at (arm_reach.hpp): 934 off
 // place, 446 turned, 86 in the body.
-constexpr int kMaxDeep = 53;        // measured 49; 140 before the analytic swivel seed
-constexpr int kMaxOffPlace = 650;   // measured 638
-constexpr int kMaxOffTurn = 357;    // measured 347
+constexpr int kMaxDeep = 52;        // measured 48; 140 before the analytic swivel seed
+constexpr int kMaxOffPlace = 642;   // measured 630
+constexpr int kMaxOffTurn = 351;    // measured 341
 
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits; the count of
 // signs whose hand enters the (capsule) collision body by more than 1 cm is held by a ratchet.

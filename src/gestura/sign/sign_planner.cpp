@@ -677,16 +677,25 @@ class Planner {
   }
 
   void perform_simultaneous(const std::vector<const Element*>& leaves, int mask, float start) {
+    const bool both = (mask & 3) == 3;
     for (int h = 0; h < 2; ++h) {
       if (!(mask & (1 << h))) continue;
       if (clock_[h] < start) hold(h, start - clock_[h]);
       const bool copy = h == 1 && (mask & 1);  // the non-dominant copy of a dominant action
-      simultaneous_for_hand(leaves, h, copy);
+      simultaneous_for_hand(leaves, h, copy, !both);
     }
+    if (!both) return;
+    // Both hands moved: settle their ends in space together, so hands held to each other stay so.
+    HandState ends[2] = {timeline_[0].segments.back().to, timeline_[1].segments.back().to};
+    const bool posed[2] = {true, true};
+    settle_together(ends, posed);
+    for (int h = 0; h < 2; ++h) timeline_[h].segments.back().to = state_[h] = ends[h];
   }
 
   // One segment for one hand combining all leaves: paths are summed, changes happen together.
-  void simultaneous_for_hand(const std::vector<const Element*>& leaves, int h, bool copy) {
+  // `settle`: take the nearest place in space where the arm makes the turn (settle_in_space);
+  // the caller does that when it moves both hands.
+  void simultaneous_for_hand(const std::vector<const Element*>& leaves, int h, bool copy, bool settle = true) {
     HandSegment seg;
     seg.from = state_[h];
     seg.to = state_[h];
@@ -715,7 +724,7 @@ class Planner {
       seg.to.position += sample(mv, mv.duration).position;
     }
     last_hand_action_[h] = leaves.empty() ? nullptr : leaves.front();
-    settle_in_space(h, seg.to, state_[1 - h]);
+    if (settle) settle_in_space(h, seg.to, state_[1 - h]);
     add_segment(h, std::move(seg));
   }
 
