@@ -37,6 +37,7 @@ constexpr float kPassThrough = 0.02f;  // a planned hand this deep in the body w
 constexpr float kMaxSpaceShift = 0.24f;
 constexpr float kMinSpaceShift = 0.06f;
 constexpr float kSpaceClearance = kAtBody;
+constexpr float kMaxSideShift = 0.10f;  // side to side: a hand keeps to its side of the body
 constexpr float kTurnSettled = deg(2.0f);
 // Palm centres this close belong to hands held together: one is placed relative to the other,
 // and moving either alone would part them.
@@ -181,7 +182,7 @@ class Planner {
     const ReachableShift shift = nearest_reachable_shift(
         rig_, std::span(&turn, 1), std::clamp(room + kMinSpaceShift, kMinSpaceShift, kMaxSpaceShift), kTurnSettled,
         [&](const vec3& offset) {
-          return glm::dot(offset, movement) >= -0.5f * glm::dot(movement, movement) &&
+          return std::abs(offset.x) <= kMaxSideShift && glm::dot(offset, movement) >= -0.5f * glm::dot(movement, movement) &&
                  clearance(pts, s.position + offset) >= std::min(room, kSpaceClearance);
         });
     if (shift.offset == vec3(0.0f)) return;
