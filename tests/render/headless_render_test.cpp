@@ -152,9 +152,9 @@ TEST_F(HeadlessRender, MorphTargetOpensTheMouthOnBothPaths) {
   face.target = joint_position("skullbase") + vec3(0.0f, -0.02f, 0.08f);
   face.distance = 0.45f;
   const View view{orbit_camera(face, float(kW) / kH), {0, 0, kW, kH}};
-  const Image closed = draw({view}, SkinningDevice::Gpu, morph_weights("aa", 0.0f));
-  const Image open_gpu = draw({view}, SkinningDevice::Gpu, morph_weights("aa", 1.0f));
-  const Image open_cpu = draw({view}, SkinningDevice::Cpu, morph_weights("aa", 1.0f));
+  const Image closed = draw({view}, SkinningDevice::Gpu, morph_weights("mouthOpen", 0.0f));
+  const Image open_gpu = draw({view}, SkinningDevice::Gpu, morph_weights("mouthOpen", 1.0f));
+  const Image open_cpu = draw({view}, SkinningDevice::Cpu, morph_weights("mouthOpen", 1.0f));
   int changed = 0;
   long gpu_cpu = 0;
   for (int y = 0; y < kH; ++y)
