@@ -25,8 +25,10 @@ constexpr FingerFlexion kCurled[4] = {flex(82, 100, 55), flex(86, 100, 55), flex
 constexpr FingerFlexion kStraight = flex(0, 0, 0);
 
 // Thumb poses shared by several shapes.
-// Alongside: resting against the radial side of the index (ASL A, the HamNoSys flat hand).
-constexpr ThumbPose kThumbAlongside = thumb(0, 8, 10, 8, 5);
+// Alongside: resting against the radial side of the index (ASL A, the HamNoSys flat hand), its tip
+// ~2 cm from the palm plane (at 0° abduction the avatar's thumb stands 4–6 cm out of it, which held
+// a flat palm 5–10 cm off the chest it should touch).
+constexpr ThumbPose kThumbAlongside = thumb(0, -15, 0, 8, 5);
 // Across: metacarpal swung toward the little finger and pronated so the pad lies over the middle
 // phalanges of the curled index/middle (ASL S, 1, U).
 constexpr ThumbPose kThumbAcross = thumb(40, 22, 42, 32, 22);
@@ -96,7 +98,7 @@ std::optional<Enum> find_name(const Named (&table)[N], std::string_view name) {
 }  // namespace
 
 const FingerLimits kFingerLimits{{0.0f, deg(90)}, {0.0f, deg(110)}, {0.0f, deg(80)}, {deg(-20), deg(30)}};
-const ThumbLimits kThumbLimits{{deg(-45), deg(50)}, {0.0f, deg(70)}, {0.0f, deg(60)}, {0.0f, deg(60)}, {deg(-10), deg(80)}};
+const ThumbLimits kThumbLimits{{deg(-45), deg(50)}, {deg(-15), deg(70)}, {0.0f, deg(60)}, {0.0f, deg(60)}, {deg(-10), deg(80)}};
 
 std::string anatomical_violation(const HandPosture& h) {
   static constexpr const char* kFingerNames[4] = {"index", "middle", "ring", "pinky"};

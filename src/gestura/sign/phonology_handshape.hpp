@@ -10,7 +10,8 @@
 //   thumb (radial), middle, ring and pinky toward the little-finger side (ulnar). Limits −20..30°.
 // - Thumb: cmc_flexion moves the first metacarpal in the palm plane toward the little finger
 //   (negative = radial abduction, the "L" thumb); cmc_abduction lifts it out of the palm plane
-//   (palmar abduction); cmc_opposition is the axial pronation that turns the thumb pad to face
+//   (palmar abduction; negative presses it back toward the palm plane, from the avatar's rest
+//   thumb, which already stands ~4 cm out of it); cmc_opposition is the axial pronation that turns the thumb pad to face
 //   the finger pads. mcp / ip are flexions. Limits in kThumbLimits below.
 #include <array>
 #include <cstdint>
