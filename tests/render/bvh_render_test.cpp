@@ -11,14 +11,8 @@
 #include "gestura/render/camera.hpp"
 #include "support/avatar_subject.hpp"
 #include "support/cli.hpp"
+#include "support/png_file.hpp"
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
 
 namespace gestura {
 namespace {
@@ -44,19 +38,11 @@ class RenderBvh : public ::testing::Test {
   fs::path dir_;
 };
 
-struct Png {
-  int w = 0, h = 0;
-  std::vector<std::uint8_t> rgb;
-  explicit Png(const std::string& file) {
-    int n = 0;
-    stbi_uc* p = stbi_load(file.c_str(), &w, &h, &n, 3);
-    if (p) rgb.assign(p, p + w * h * 3), stbi_image_free(p);
-  }
-  bool background(glm::ivec2 px) const {  // --background #808080
-    const std::uint8_t* p = &rgb[static_cast<std::size_t>((px.y * w + px.x) * 3)];
-    return std::abs(p[0] - 128) <= 1 && std::abs(p[1] - 128) <= 1 && std::abs(p[2] - 128) <= 1;
-  }
-};
+// --background #808080
+bool background(const test::PngPixels& image, glm::ivec2 px) {
+  const std::uint8_t* p = image.at(px.x, px.y);
+  return std::abs(p[0] - 128) <= 1 && std::abs(p[1] - 128) <= 1 && std::abs(p[2] - 128) <= 1;
+}
 
 glm::ivec2 project(const Camera& camera, vec3 p) {
   const vec4 clip = camera.projection * camera.view * vec4(p, 1.0f);
@@ -81,9 +67,9 @@ TEST_F(RenderBvh, RaisedArmMovesTheHandPixels) {
   const std::string common = " --size 320x180 --background '#808080' --camera front";
   ASSERT_EQ(render(bvh + " --time 1 -o " + path("raised.png") + common), 0);
   ASSERT_EQ(render("--rest -o " + path("rest.png") + common), 0);
-  const Png up(path("raised.png")), down(path("rest.png"));
-  ASSERT_EQ(up.w, kW);
-  ASSERT_EQ(down.w, kW);
+  const test::PngPixels up = test::read_png(path("raised.png"), 3), down = test::read_png(path("rest.png"), 3);
+  ASSERT_EQ(up.width, kW);
+  ASSERT_EQ(down.width, kW);
 
   auto hand_at = [&](const quat& shoulder_rotation) {
     Pose pose = rest_pose(s);
@@ -97,10 +83,10 @@ TEST_F(RenderBvh, RaisedArmMovesTheHandPixels) {
   const glm::ivec2 hand_up = project(camera, hand_at(raised));
   const glm::ivec2 hand_down = project(camera, hand_at(quat(1.0f, 0.0f, 0.0f, 0.0f)));
   for (glm::ivec2 px : {hand_up, hand_down}) ASSERT_TRUE(px.x >= 0 && px.x < kW && px.y >= 0 && px.y < kH) << px.x << "," << px.y;
-  EXPECT_FALSE(up.background(hand_up)) << "the raised hand is drawn where the BVH put it";
-  EXPECT_TRUE(down.background(hand_up)) << "nothing there at rest";
-  EXPECT_FALSE(down.background(hand_down));
-  EXPECT_TRUE(up.background(hand_down)) << "the hand has left its rest place";
+  EXPECT_FALSE(background(up, hand_up)) << "the raised hand is drawn where the BVH put it";
+  EXPECT_TRUE(background(down, hand_up)) << "nothing there at rest";
+  EXPECT_FALSE(background(down, hand_down));
+  EXPECT_TRUE(background(up, hand_down)) << "the hand has left its rest place";
 }
 
 TEST_F(RenderBvh, ClipOnAnotherSkeletonIsAClearError) {

@@ -13,14 +13,8 @@ extern "C" {
 #include <unistd.h>
 
 #include "support/cli.hpp"
+#include "support/png_file.hpp"
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
 
 namespace {
 
@@ -40,16 +34,15 @@ constexpr const char* kFlatHandAtChest = "hamflathand,hamextfingeru,hampalml,ham
 // the slate shirt) in the chest band below the neck: rows 45%..75%, middle half of the columns.
 // Measured on 320x240 shots: 451 with the flat hand at the chest, 0 at rest.
 int skin_pixels_at_chest(const std::string& png) {
-  int w = 0, h = 0, n = 0;
-  stbi_uc* pixels = stbi_load(png.c_str(), &w, &h, &n, 3);
-  if (!pixels) return -1;
+  const gestura::test::PngPixels image = gestura::test::read_png(png, 3);
+  if (!image.loaded()) return -1;
+  const int w = image.width, h = image.height;
   int skin = 0;
   for (int y = h * 45 / 100; y < h * 3 / 4; ++y)
     for (int x = w / 4; x < w * 3 / 4; ++x) {
-      const stbi_uc* p = pixels + (y * w + x) * 3;
+      const std::uint8_t* p = image.at(x, y);
       skin += p[0] > 90 && p[0] > p[1] + 15 && p[1] > p[2] && p[0] > p[2] + 35;
     }
-  stbi_image_free(pixels);
   return skin;
 }
 

@@ -14,16 +14,10 @@ extern "C" {
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/render_job.hpp"
 #include "support/cli.hpp"
+#include "support/png_file.hpp"
 #include "support/test_figure.hpp"
 #include "gestura/render/video_writer.hpp"
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
 
 namespace gestura {
 namespace {
@@ -93,12 +87,10 @@ RenderJob job(const std::string& output, int w = 160, int h = 96, int fps = 30) 
 TEST_F(RenderOutput, PngDecodesWithTheRequestedSize) {
   const std::string out = path("still.png");
   render_to_file(figure(), job(out, 200, 120));
-  int w = 0, h = 0, n = 0;
-  stbi_uc* pixels = stbi_load(out.c_str(), &w, &h, &n, 4);
-  ASSERT_NE(pixels, nullptr);
-  EXPECT_EQ(w, 200);
-  EXPECT_EQ(h, 120);
-  stbi_image_free(pixels);
+  const test::PngPixels image = test::read_png(out, 4);
+  ASSERT_TRUE(image.loaded());
+  EXPECT_EQ(image.width, 200);
+  EXPECT_EQ(image.height, 120);
   EXPECT_EQ(files(), std::vector<std::string>{"still.png"});
 }
 
@@ -107,18 +99,15 @@ TEST_F(RenderOutput, ContactSheetIsOnePngOfSixteenDifferentTiles) {
   RenderJob j = job(out, 320, 192);
   j.sheet = true;
   EXPECT_EQ(render_to_file(figure(), j).frames, 16);
-  int w = 0, h = 0, n = 0;
-  stbi_uc* pixels = stbi_load(out.c_str(), &w, &h, &n, 4);
-  ASSERT_NE(pixels, nullptr);
-  EXPECT_EQ(w, 320);
-  EXPECT_EQ(h, 192);
+  const test::PngPixels image = test::read_png(out, 4);
+  ASSERT_TRUE(image.loaded());
+  EXPECT_EQ(image.width, 320);
+  EXPECT_EQ(image.height, 192);
   // The first tile (rest) and the sixth (mid-wave) differ: the sheet walks through the clip.
   int differing = 0;
   for (int y = 0; y < 48; ++y)
-    for (int x = 0; x < 80; ++x)
-      differing += pixels[(y * w + x) * 4] != pixels[((48 + y) * w + 80 + x) * 4];
+    for (int x = 0; x < 80; ++x) differing += image.at(x, y)[0] != image.at(80 + x, 48 + y)[0];
   EXPECT_GT(differing, 40);
-  stbi_image_free(pixels);
 }
 
 TEST_F(RenderOutput, Mp4HasExactFrameCountAndRate) {

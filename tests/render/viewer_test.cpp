@@ -8,14 +8,8 @@
 #include <string>
 
 #include "support/cli.hpp"
+#include "support/png_file.hpp"
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
 
 namespace {
 
@@ -29,14 +23,14 @@ TEST(RenderViewer, ScreenshotUnderXvfbShowsTheFigure) {
       run_command(std::string("timeout 60 xvfb-run -a ") + GESTURA_CLI +
                   " view --rest --size 320x240 --background '#808080' --frames 10 --screenshot " + shot.string());
   ASSERT_EQ(view.status, 0) << view.output;
-  int w = 0, h = 0, n = 0;
-  stbi_uc* pixels = stbi_load(shot.string().c_str(), &w, &h, &n, 3);
+  const gestura::test::PngPixels image = gestura::test::read_png(shot.string(), 3);
   fs::remove(shot);
-  ASSERT_NE(pixels, nullptr);
+  ASSERT_TRUE(image.loaded());
+  const int w = image.width, h = image.height;
   EXPECT_EQ(w, 320);
   EXPECT_EQ(h, 240);
   auto is_background = [&](int x, int y) {
-    const stbi_uc* p = pixels + (y * w + x) * 3;
+    const std::uint8_t* p = image.at(x, y);
     return std::abs(p[0] - 128) <= 1 && std::abs(p[1] - 128) <= 1 && std::abs(p[2] - 128) <= 1;
   };
   EXPECT_TRUE(is_background(0, 0));
@@ -44,7 +38,6 @@ TEST(RenderViewer, ScreenshotUnderXvfbShowsTheFigure) {
   int figure = 0;
   for (int y = 0; y < h; ++y) figure += !is_background(w / 2, y);
   EXPECT_GT(figure, h / 2) << "the body runs down the middle column";
-  stbi_image_free(pixels);
 }
 
 }  // namespace
