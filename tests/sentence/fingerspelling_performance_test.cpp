@@ -14,18 +14,12 @@
 #include "gestura/lexicon/lexicon_files.hpp"
 #include "gestura/sentence/fingerspelling_performance.hpp"
 #include "gestura/sentence/signer.hpp"
+#include "support/signing_avatar.hpp"
 
 namespace gestura {
 namespace {
 
-struct World {
-  Avatar avatar = build_avatar();
-  SigningRig rig = make_signing_rig(avatar);
-};
-const World& world() {
-  static const World w;
-  return w;
-}
+const test::SigningAvatar& world() { return test::signing_avatar(); }
 const Skeleton& skeleton() { return world().avatar.skeleton; }
 
 FingerspellingPerformance spell(const std::string& text, ManualAlphabet alphabet = ManualAlphabet::Asl) {

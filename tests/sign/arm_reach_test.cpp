@@ -1,19 +1,13 @@
 #include <gtest/gtest.h>
 
 #include "gestura/sign/arm_reach.hpp"
+#include "support/signing_avatar.hpp"
 
 using namespace gestura;
 
 namespace {
 
-struct Fixture {
-  Avatar avatar = build_avatar();
-  SigningRig rig = make_signing_rig(avatar);
-};
-const Fixture& fx() {
-  static const Fixture f;
-  return f;
-}
+const test::SigningAvatar& fx() { return test::signing_avatar(); }
 
 // The right hand's palm centre and hand frame in the rig's relaxed signing posture: a place and
 // turn the arm has just made, so certainly within its ranges.

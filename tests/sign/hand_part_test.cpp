@@ -4,19 +4,13 @@
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/hand_part.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
+#include "support/signing_avatar.hpp"
 
 using namespace gestura;
 
 namespace {
 
-struct Fixture {
-  Avatar avatar = build_avatar();
-  SigningRig rig = make_signing_rig(avatar);
-};
-const Fixture& fx() {
-  static const Fixture f;
-  return f;
-}
+const test::SigningAvatar& fx() { return test::signing_avatar(); }
 
 // Model matrices of the held posture of a one-posture sign.
 std::vector<mat4> held(const std::string& names) {

@@ -12,19 +12,13 @@
 #include "gestura/sign/sigml.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
 #include "support/shared_data.hpp"
+#include "support/signing_avatar.hpp"
 
 using namespace gestura;
 
 namespace {
 
-struct Fixture {
-  Avatar avatar = build_avatar();
-  SigningRig rig = make_signing_rig(avatar);
-};
-const Fixture& fx() {
-  static const Fixture f;
-  return f;
-}
+const test::SigningAvatar& fx() { return test::signing_avatar(); }
 
 // A one-handed sign held in front of the chest (flat hand, fingers up, palm to the left, a short
 // movement forward), with the given non-manual elements written on the lines after line 3.

@@ -12,19 +12,13 @@
 #include "gestura/sign/sigml.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
 #include "support/shared_data.hpp"
+#include "support/signing_avatar.hpp"
 
 using namespace gestura;
 
 namespace {
 
-struct Fixture {
-  Avatar avatar = build_avatar();
-  SigningRig rig = make_signing_rig(avatar);
-};
-const Fixture& fx() {
-  static const Fixture f;
-  return f;
-}
+const test::SigningAvatar& fx() { return test::signing_avatar(); }
 
 using gestura::test::shared_data;
 
