@@ -96,3 +96,25 @@ TEST(IkSwivelArm, RejectsChainsItCannotSolve) {
   EXPECT_THROW(make_swivel_arm(s, fx().wrist, fx().elbow, fx().shoulder), Error);
   EXPECT_THROW(make_swivel_arm(s, fx().shoulder, s.find("r_thumb1"), fx().wrist), Error);
 }
+
+// measure_swivel reads back the swivel angle a solution placed the elbow at: what lets a solve
+// continue from a given arm posture.
+TEST(IkSwivelArm, MeasuredSwivelOfASolvedArmIsTheSolutionsSwivel) {
+  const Skeleton& s = fx().s;
+  const Pose rest = rest_pose(s);
+  const mat4 parent = parent_model_matrix(s, rest, fx().shoulder);
+  const vec3 at = vec3(parent * vec4(s.rest_translations[static_cast<std::size_t>(fx().shoulder)], 1.0f));
+  const quat parent_rotation = glm::normalize(glm::quat_cast(mat3(parent)));
+  // A wrist 35 cm in front of the chest, palm left: reachable with the elbow anywhere from low to out.
+  const SwivelGoal goal{at + vec3(0.12f, -0.20f, 0.25f), glm::angleAxis(deg(90.0f), vec3(0, 0, 1))};
+  for (float swivel : {deg(-10.0f), deg(20.0f), deg(50.0f)}) {
+    const SwivelSolution r = solve_swivel_arm_at(s, fx().arm, at, parent_rotation, goal, swivel, SwivelPreference{});
+    Pose pose = rest;
+    apply_swivel_solution(s, fx().arm, r, pose);
+    std::vector<mat4> m(s.size());
+    local_to_model(s, pose, m);
+    auto p = [&](int j) { return vec3(m[static_cast<std::size_t>(j)][3]); };
+    EXPECT_NEAR(measure_swivel(fx().arm, p(fx().shoulder), p(fx().elbow), p(fx().wrist)), r.swivel, deg(2.0f))
+        << "asked for " << swivel;
+  }
+}
