@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "gestura/body/avatar.hpp"
 #include "gestura/body/body_sites.hpp"
 
 using namespace gestura;
@@ -91,4 +92,30 @@ TEST(BodySites, RayCastFindsTheNearestHit) {
   EXPECT_NEAR(hit->distance, 4.0f, 0.01f);
   EXPECT_LT(hit->normal.z, -0.99f);  // outward normal where the ray enters from −Z
   EXPECT_FALSE(cast_ray(m, vec3(0, 0, -5), vec3(0, 1, 0)).has_value());
+}
+
+TEST(BodySites, OnTheAvatarTheChinIsTheJawsFrontWithUnderChinBeneathIt) {
+  // The default avatar's chin stands 5-6 cm in front of its throat. The chin site is its front
+  // (a slanted ray once slid under it onto the jaw line), under_chin the jaw's underside (a ray
+  // from inside the head once went down the neck to the chest, 23 cm low), the neck the throat.
+  const Avatar avatar = build_avatar();
+  const Skeleton& s = avatar.skeleton;
+  const auto sites = find_body_sites(s, avatar.mesh);
+  std::vector<mat4> model(s.size());
+  local_to_model(s, rest_pose(s), model);
+  const auto at = [&](const char* n) { return site_position(*find_site(sites, n), model); };
+  const auto normal = [&](const char* n) { return site_normal(*find_site(sites, n), model); };
+  const vec3 chin = at("chin"), under = at("under_chin"), neck = at("neck");
+  EXPECT_GT(chin.z, neck.z + 0.03f);
+  EXPECT_NEAR(chin.z, at("lower_lip").z, 0.015f);  // the chin's front is about as far forward as the lips
+  EXPECT_GT(normal("chin").z, 0.8f);
+  EXPECT_LT(under.y, chin.y);
+  EXPECT_GT(under.y, chin.y - 0.04f);
+  EXPECT_LT(under.z, chin.z - 0.01f);
+  EXPECT_GT(under.z, neck.z);
+  EXPECT_LT(normal("under_chin").y, -0.7f);  // faces down
+  EXPECT_LT(neck.y, under.y - 0.01f);
+  // A site's normal is the surface's around it, not one triangle's: the closed lips' seam once
+  // gave the lips a normal 57° off the face's forward direction.
+  EXPECT_GT(normal("lips").z, 0.8f);
 }

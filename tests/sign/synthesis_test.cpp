@@ -198,8 +198,8 @@ TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   EXPECT_EQ(signs, 100);
   std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body; %d off "
               "their planned key postures (IK residual over 2 cm or 25 degrees)\n", signs, deep, off);
-  EXPECT_LE(deep, 2);   // ratchet: measured 1 (5 before the analytic swivel seed): the crude neck/shoulder capsules
-  EXPECT_LE(off, 24);   // ratchet: measured 22 (30 before hands in space took reachable places; 57 before the analytic swivel seed)
+  EXPECT_EQ(deep, 0);   // issue #5: no hand more than 1 cm inside the body (5 before the analytic swivel seed, 1 before detours)
+  EXPECT_LE(off, 23);   // ratchet: measured 21 (30 before hands in space took reachable places; 57 before the analytic swivel seed)
 }
 
 TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
@@ -220,12 +220,14 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 // Ratchets over the German and Polish lexicons (4,070 signs); lower them as synthesis improves.
 // Before hands out in space took places their arm can turn them at (arm_reach.hpp): 934 off
 // place, 446 turned, 86 in the body.
-constexpr int kMaxDeep = 51;        // measured 47; 140 before the analytic swivel seed
-constexpr int kMaxOffPlace = 668;   // measured 655
-constexpr int kMaxOffTurn = 357;    // measured 347
+// A hand at the body is measured at the point where it meets the body (planned_contact) since
+// the lower face joined the collision body and its sites (chin, lips) count as at the body.
+constexpr int kMaxOffPlace = 650;   // measured 637
+constexpr int kMaxOffTurn = 350;    // measured 342
 
-// Every sign of the German and Polish lexicons: no NaN, no joint outside its limits; the count of
-// signs whose hand enters the (capsule) collision body by more than 1 cm is held by a ratchet.
+// Every sign of the German and Polish lexicons: no NaN, no joint outside its limits, no hand more
+// than 1 cm inside the collision body (issue #5; 140 signs did before the analytic swivel seed,
+// 44 before transitions took detours round the body and the solver its straight way out).
 TEST(Synthesis, EveryLexiconSignIsPerformedWithinLimitsAndWithoutNaN) {
   const std::string path = shared_data() + "/hamnosys/signs.jsonl";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "no shared data at " << path;
@@ -259,7 +261,7 @@ TEST(Synthesis, EveryLexiconSignIsPerformedWithinLimitsAndWithoutNaN) {
   std::printf("lexicon: %d signs performed; %d with a hand more than 1 cm inside the collision body; IK residual "
               "at a key posture: off its place (2 cm at the body, 5 cm in space) in %d (over 2 cm anywhere in %d), "
               "turned over 25 degrees in %d\n", signs, deep, off_place, off_2cm, off_turn);
-  EXPECT_LE(deep, kMaxDeep);  // ratchet: neck and shoulder contacts against the capsule body
+  EXPECT_EQ(deep, 0);
   // Ratchets on the IK residual (SynthesisTolerance). Before the analytic swivel seed (with one
   // 2 cm threshold everywhere): 1,630 signs off their place, 599 turned more than 25°.
   EXPECT_LE(off_place, kMaxOffPlace);
@@ -280,4 +282,40 @@ TEST(Synthesis, BadRequestsGiveClearErrors) {
   strict.strict = true;
   EXPECT_THROW(sign::parse_hamnosys_names("hamflathand,hamparbegin,hamextfingeru", strict), Error);
   EXPECT_THROW(sign::parse_hamnosys_names("hamchest,hamextfingeru,hamflathand,hamparend"), Error);
+}
+
+TEST(Synthesis, AReturnToRestFromTheNeckBowsOutRoundTheChest) {
+  // DGS: a C hand touching the neck, then down along it. The straight line from there to the
+  // resting hand at the hip runs through the chest (the chest stands 6 cm further forward than
+  // the throat), so the way back bows forward.
+  const SignSynthesis r = synthesize_sign(
+      sign::parse_hamnosys_names("hamcee12,hamextfingeril,hampalmdr,hamneck,hamtouch,hammoved"), fx().rig);
+  const HandSegment& back = r.plan.right.segments.back();
+  ASSERT_FALSE(back.to.active);     // the return to rest
+  EXPECT_GT(back.detour.z, 0.05f);  // forward, round the chest
+  EXPECT_LE(r.stats.max_penetration, 0.01f);
+  // The planned palm centre keeps further off the body all the way down than on the straight
+  // line, which passes within a finger's length of the chest (and the fingers through it).
+  float straight = 1e9f, bowed = 1e9f;
+  for (int k = 1; k < 10; ++k) {
+    const float u = static_cast<float>(k) / 10.0f, t = back.start + (back.end - back.start) * u;
+    bowed = std::min(bowed, body_signed_distance(fx().rig, fx().rig.bind_model, sample_hand(r.plan.right, t).position));
+    straight = std::min(straight, body_signed_distance(fx().rig, fx().rig.bind_model, glm::mix(back.from.position, back.to.position, u)));
+  }
+  EXPECT_LT(straight, 0.07f);
+  EXPECT_GT(bowed, straight + 0.04f);
+}
+
+TEST(Synthesis, HandPosturesAreClampedIntoTheFingerJointLimits) {
+  // A thumb asked for more than its joints allow is posed at their limits, so that what the
+  // planner and the solver keep out of the body is the hand that will be performed.
+  HandPosture shape = make_handshape(BasicHandshape::Flat);
+  shape.thumb.cmc_abduction = deg(150.0f);
+  shape.thumb.cmc_flexion = deg(-120.0f);
+  shape.thumb.mcp = deg(170.0f);
+  Pose pose = fx().rig.rest;
+  apply_hand_posture(fx().rig, Hand::Right, shape, pose);
+  const Skeleton& s = fx().avatar.skeleton;
+  for (const auto& finger : fx().rig.hand(Hand::Right).fingers)
+    for (int j : finger) EXPECT_TRUE(within_limits(s, j, pose.rotations[static_cast<std::size_t>(j)])) << s.names[static_cast<std::size_t>(j)];
 }

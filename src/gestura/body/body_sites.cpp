@@ -34,6 +34,10 @@ std::optional<RayHit> cast_ray(const Mesh& mesh, const vec3& origin, const vec3&
 
 namespace {
 
+constexpr float kBelowChin = 0.09f;        // metres: start of the under-chin ray, in front of the throat
+constexpr float kBehindChinFront = 0.03f;
+constexpr float kNormalSpread = 0.004f;    // metres between the rays a site's normal is averaged over
+
 struct Anchors {
   const Skeleton& skeleton;
   std::vector<vec3> position;  // bind-pose model positions
@@ -64,9 +68,21 @@ void add_site(const Anchors& anchors, const Mesh& mesh, const SiteRay& ray, std:
                        ? cast_ray(mesh, ray.origin + kOutside * glm::normalize(ray.direction), -ray.direction)
                        : cast_ray(mesh, ray.origin, ray.direction);
   if (!hit) return;
+  // The normal is averaged over the hit and four neighbouring rays (kNormalSpread around it): a
+  // single triangle's normal can be a crease's, like the closed lips' seam, and point far off
+  // the way the surface faces there.
+  const vec3 dir = glm::normalize(ray.direction);
+  const vec3 side = glm::normalize(glm::cross(dir, std::abs(dir.y) < 0.9f ? vec3(0, 1, 0) : vec3(1, 0, 0)));
+  const vec3 offsets[4] = {side, -side, glm::cross(dir, side), -glm::cross(dir, side)};
+  vec3 normal = hit->normal;
+  for (const vec3& o : offsets) {
+    const vec3 at = (ray.from_outside ? ray.origin + kOutside * dir : ray.origin) + o * kNormalSpread;
+    const auto near = cast_ray(mesh, at, ray.from_outside ? -dir : dir);
+    if (near && glm::distance(near->point, hit->point) < 2.5f * kNormalSpread) normal += near->normal;
+  }
   const mat4 inv = glm::inverse(anchors.model[static_cast<std::size_t>(ray.joint)]);
   out.push_back(BodySite{ray.name, ray.joint, vec3(inv * vec4(hit->point, 1.0f)),
-                         glm::normalize(vec3(inv * vec4(hit->normal, 0.0f)))});
+                         glm::normalize(vec3(inv * vec4(glm::normalize(normal), 0.0f)))});
 }
 
 }  // namespace
@@ -95,8 +111,9 @@ std::vector<BodySite> find_body_sites(const Skeleton& skeleton, const Mesh& mesh
     rays.push_back({"upper_lip", skull, level(-0.62f), fwd, true});
     rays.push_back({"lips", skull, level(-0.70f), fwd, true});
     rays.push_back({"lower_lip", skull, level(-0.78f), fwd, true});
-    rays.push_back({"chin", skull, level(-0.98f), glm::normalize(vec3(0, -0.25f, 1)), true});
-    rays.push_back({"under_chin", skull, level(-0.85f) + vec3(0, 0, 0.02f), glm::normalize(vec3(0, -1, 0.35f))});
+    // The chin is the front of the jaw's point, level with the bottom of the face; the surface
+    // under it (under_chin) is found once the chin is known, below.
+    rays.push_back({"chin", skull, level(-0.97f), fwd, true});
     for (int side = 0; side < 2; ++side) {
       const float x = side == 0 ? 1.0f : -1.0f;
       const std::string p = side == 0 ? "l_" : "r_";
@@ -108,8 +125,12 @@ std::vector<BodySite> find_body_sites(const Skeleton& skeleton, const Mesh& mesh
       rays.push_back({p + "temple", skull, level(0.25f), glm::normalize(vec3(x, 0, 0.6f))});
     }
   }
-  // Neck and trunk: forward rays from the spine.
-  const char* trunk[][2] = {{"neck", "vc4"}, {"chest", "vt6"}, {"stomach", "vt12"}, {"belly", "vl3"}};
+  // Neck: the throat halfway up the neck (vc4 sits level with the jaw line, where a forward ray
+  // meets the underside of the jaw rather than the neck).
+  const int vc7 = a.find("vc7"), vc4 = a.find("vc4");
+  if (vc7 >= 0 && vc4 >= 0) rays.push_back({"neck", vc4, 0.5f * (a.at(vc7) + a.at(vc4)), fwd});
+  // Trunk: forward rays from the spine.
+  const char* trunk[][2] = {{"chest", "vt6"}, {"stomach", "vt12"}, {"belly", "vl3"}};
   for (auto& [site, joint] : trunk) {
     const int j = a.find(joint);
     if (j >= 0) rays.push_back({site, j, a.at(j), fwd});
@@ -150,6 +171,12 @@ std::vector<BodySite> find_body_sites(const Skeleton& skeleton, const Mesh& mesh
     }
   }
   for (const SiteRay& r : rays) add_site(a, mesh, r, sites);
+  // Under the chin: straight up from in front of the throat, a little behind the chin's front,
+  // onto the underside of the jaw.
+  if (const BodySite* chin = find_site(sites, "chin")) {
+    const vec3 front = vec3(a.model[static_cast<std::size_t>(chin->joint)] * vec4(chin->local_offset, 1.0f));
+    add_site(a, mesh, {"under_chin", chin->joint, front + vec3(0.0f, -kBelowChin, -kBehindChinFront), up}, sites);
+  }
   return sites;
 }
 

@@ -6,6 +6,69 @@
 
 namespace gestura {
 
+namespace {
+
+constexpr int kEscapePasses = 5;           // pushes out of the body per frame
+constexpr float kEscapeTolerance = 0.002f;  // metres deeper than the margin that calls for the straight way out
+constexpr float kEscapeStep = 0.01f;        // metres per step of it
+constexpr int kEscapeSteps = 15;
+constexpr float kContactTolerance = 0.002f;  // metres a hand's contact point may miss before it is corrected
+
+constexpr float kContactTurnCost = deg(2.0f);  // turn a contact correction may cost…
+constexpr float kTurnRead = deg(24.0f);         // …or up to this (a turn still read as notated)
+
+// The arm chain's joint rotations, to go back to.
+struct ArmSnapshot {
+  const IkChain* arm;
+  std::vector<quat> rotations;
+  ArmSnapshot(const IkChain& chain, const Pose& pose) : arm(&chain) {
+    for (int j : chain.joints) rotations.push_back(pose.rotations[static_cast<std::size_t>(j)]);
+  }
+  void restore(Pose& pose) const {
+    for (std::size_t i = 0; i < rotations.size(); ++i) pose.rotations[static_cast<std::size_t>(arm->joints[i])] = rotations[i];
+  }
+};
+
+// Damped least squares, then the chain clamped into its joint limits as the final pose will be
+// (the solver's own limit handling leaves angles a hair outside), so that what is measured
+// against the body afterwards is what will be performed.
+IkResult solve_within_limits(const Skeleton& s, const IkChain& arm, const mat4& base, const IkTarget& target,
+                             const IkSettings& settings, IkWorkspace& workspace, Pose& pose) {
+  const IkResult r = solve_dls(s, arm, base, target, settings, workspace, pose);
+  for (int j : arm.joints) clamp_joint_to_limits(s, j, pose.rotations[static_cast<std::size_t>(j)]);
+  return r;
+}
+
+// How deep the hand's deepest surface point is inside the body plus `margin` (0 when clear).
+float hand_depth(const SigningRig& rig, const HandRig& h, float margin, const Pose& pose, std::vector<mat4>& model,
+                 std::vector<vec3>& points) {
+  local_to_model(rig.skeleton(), pose, model);
+  hand_surface_points(rig, h.hand, model, points);
+  float depth = 0.0f;
+  for (const vec3& p : points) depth = std::max(depth, margin - body_signed_distance(rig, model, p));
+  return depth;
+}
+
+}  // namespace
+
+vec3 planned_contact(const SigningRig& rig, Hand hand, const HandState& state, std::span<const mat4> model,
+                     std::span<const vec3> points, std::size_t& index) {
+  const HandRig& h = rig.hand(hand);
+  const quat wrist_rotation = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), state.orientation},
+                                                 h.rest_frame.rotation, h.rest_wrist_rotation);
+  const mat4 to_wrist = glm::inverse(model[static_cast<std::size_t>(h.wrist)]);
+  float nearest = 1e9f;
+  vec3 best = state.position;
+  index = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const vec3 local = vec3(to_wrist * vec4(points[i], 1.0f));
+    const vec3 planned = state.position + wrist_rotation * (local - h.palm_centre_local);
+    const float d = body_signed_distance(rig, model, planned);
+    if (d < nearest) nearest = d, best = planned, index = i;
+  }
+  return best;
+}
+
 HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
                            bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
                            std::vector<vec3>& points) {
@@ -57,11 +120,38 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
   settings.preferred_angles = solver.seed;
   settings.orientation_scale = state.at_body ? 0.08f : 0.25f;
   settings.null_space_gain = 0.3f;
-  IkResult r = solve_dls(s, h.arm, base, target, settings, solver.workspace, pose);
+  IkResult r = solve_within_limits(s, h.arm, base, target, settings, solver.workspace, pose);
 
-  // Keep the hand out of the body: push the whole hand along the body's outward normal at its
-  // deepest point, a few times (leaving one part of the body can enter another).
-  for (int pass = 0; pass < 3; ++pass) {
+  // At the body, what must be in place is the part of the hand that meets it, not the palm
+  // centre: where the arm cannot make the exact turn, an index fingertip 10 cm out from the palm
+  // centre would swing centimetres off the chin it touches. Shift the target by the contact
+  // point's miss and solve again.
+  if (state.at_body) {
+    local_to_model(s, pose, model);
+    hand_surface_points(rig, h.hand, model, points);
+    std::size_t contact = 0;
+    const vec3 planned = planned_contact(rig, h.hand, state, model, points, contact);
+    const vec3 miss = planned - points[contact];
+    if (glm::length(miss) > kContactTolerance) {
+      // Kept unless it costs the notated turn: a hand turned away from its notated orientation
+      // reads as another sign, a contact point a few centimetres off does not.
+      const ArmSnapshot before(h.arm, pose);
+      target.position += miss;
+      const IkResult moved = solve_within_limits(s, h.arm, base, target, settings, solver.workspace, pose);
+      if (moved.orientation_error > std::max(r.orientation_error + kContactTurnCost, kTurnRead)) {
+        before.restore(pose);
+        target.position -= miss;
+      } else {
+        r = moved;
+      }
+    }
+  }
+
+  // Keep the hand out of the body: push the whole hand out, a few times (leaving one part of the
+  // body can enter another). Out is away from the body at the palm centre while that is outside:
+  // a fingertip that went past the middle of the neck has its nearest surface at the back, and
+  // pushing along its own normal would drive the hand further in.
+  for (int pass = 0; pass < kEscapePasses; ++pass) {
     local_to_model(s, pose, model);
     hand_surface_points(rig, h.hand, model, points);
     float deepest = 0.0f;
@@ -72,11 +162,42 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
       if (d < deepest) deepest = d, outward = n;
     }
     if (deepest >= -1e-4f) break;
+    vec3 palm_outward;
+    const mat4& w = model[static_cast<std::size_t>(h.wrist)];
+    if (body_signed_distance(rig, model, vec3(w * vec4(h.palm_centre_local, 1.0f)), &palm_outward) > 0.0f)
+      outward = palm_outward;
     target.position += outward * (-deepest);
     // Getting out of the body comes before the exact hand orientation.
     IkSettings escape = settings;
     escape.orientation_scale = 0.08f;
-    r = solve_dls(s, h.arm, base, target, escape, solver.workspace, pose);
+    r = solve_within_limits(s, h.arm, base, target, escape, solver.workspace, pose);
+  }
+
+  // Still inside: the arm could not follow the pushes (a place too near its own shoulder for the
+  // notated turn, fingers curled into the head). Move the hand straight out from the body at its
+  // planned place, keeping the notated turn, a step at a time until it is clear; if nothing
+  // clears it, the least deep of the tries. Rare (a few frames of a few signs in thousands).
+  float depth = hand_depth(rig, h, body_margin, pose, model, points);
+  if (depth > kEscapeTolerance) {
+    local_to_model(s, pose, model);
+    vec3 out(0, 0, 1);
+    body_signed_distance(rig, model, state.position, &out);
+    ArmSnapshot best(h.arm, pose);
+    float best_depth = depth;
+    IkResult best_r = r;
+    // Out from the body, or forward into the signing space (the way out when the place is
+    // beyond the arm's reach, right above its own shoulder), or between the two.
+    const vec3 ways[] = {out, vec3(0, 0, 1), glm::normalize(out + vec3(0, 0, 1) + vec3(0, 0, 1e-3f))};
+    for (int step = 1; step <= kEscapeSteps && best_depth > kEscapeTolerance; ++step)
+      for (const vec3& way : ways) {
+        target.position = state.position + way * (kEscapeStep * static_cast<float>(step));
+        r = solve_within_limits(s, h.arm, base, target, settings, solver.workspace, pose);
+        depth = hand_depth(rig, h, body_margin, pose, model, points);
+        if (depth < best_depth) best_depth = depth, best_r = r, best = ArmSnapshot(h.arm, pose);
+        if (best_depth <= kEscapeTolerance) break;
+      }
+    best.restore(pose);
+    r = best_r;
   }
   return HandSolveResult{r.position_error, r.orientation_error};
 }

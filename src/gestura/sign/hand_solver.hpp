@@ -4,6 +4,7 @@
 // One frame of perform_plan, and what the sentence layer uses to solve a single posture, so both
 // solve exactly the same problem.
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "gestura/ik/chain.hpp"
@@ -33,5 +34,12 @@ struct HandSolveResult {
 HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
                            bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
                            std::vector<vec3>& points);
+
+// The point where a hand at the body meets it: of the hand's surface points (hand_surface_points
+// of the posed `model`, passed as `points`), the one nearest the body once the hand is placed and
+// turned as `state` plans. Returns that point's planned position; `index` is its place in `points`.
+// Contract: `model` holds the hand's fingers as posed for state.shape.
+vec3 planned_contact(const SigningRig& rig, Hand hand, const HandState& state, std::span<const mat4> model,
+                     std::span<const vec3> points, std::size_t& index);
 
 }  // namespace gestura

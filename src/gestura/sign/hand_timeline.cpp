@@ -1,6 +1,7 @@
 #include "gestura/sign/hand_timeline.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "gestura/sign/movement_timing.hpp"
 
@@ -34,6 +35,7 @@ HandState sample_hand(const HandTimeline& timeline, float t) {
   out.orientation = glm::slerp(seg.from.orientation, seg.to.orientation, s);
   out.shape = mix(seg.from.shape, seg.to.shape, s);
   for (const Movement& m : seg.paths) out.position += sample(m, u * m.duration).position;
+  out.position += seg.detour * std::sin(kPi * s);
   if (seg.oscillation != Oscillation::None && seg.oscillation_cycles > 0) {
     // Envelope so the oscillation starts and ends at rest.
     const float envelope = std::sin(kPi * u);

@@ -35,6 +35,8 @@ struct HandSegment {
   float oscillation_cycles = 0.0f;
   FingerSet oscillating_fingers = 0;
   bool linear_blend = false;       // blend from→to at constant speed (paths drive the timing instead)
+  vec3 detour{0.0f};               // the path bows out by this much halfway (sin π·progress), to pass
+                                   // around the body instead of through it
 };
 
 struct HandTimeline {

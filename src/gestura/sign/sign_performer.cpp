@@ -98,7 +98,14 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
       if (!key[side][static_cast<std::size_t>(f)] || !planned[side].active) continue;
       const HandRig& h = rig.hands[static_cast<std::size_t>(side)];
       const mat4& w = model[static_cast<std::size_t>(h.wrist)];
-      const float dp = glm::distance(vec3(w * vec4(h.palm_centre_local, 1.0f)), planned[side].position);
+      // At the body, the hand's place is where it meets the body (its contact point); in space, the palm centre.
+      float dp = glm::distance(vec3(w * vec4(h.palm_centre_local, 1.0f)), planned[side].position);
+      if (planned[side].at_body) {
+        hand_surface_points(rig, h.hand, model, points);
+        std::size_t contact = 0;
+        const vec3 planned_point = planned_contact(rig, h.hand, planned[side], model, points, contact);
+        dp = glm::distance(planned_point, points[contact]);
+      }
       const float da = glm::length(rotation_error(glm::normalize(glm::quat_cast(mat3(w))), planned_wrist[side]));
       if (planned[side].at_body && dp > st.key_position_error) st.key_position_error = dp, st.key_position_time = t;
       if (!planned[side].at_body && dp > st.key_space_position_error)

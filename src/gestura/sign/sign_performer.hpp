@@ -19,8 +19,9 @@ struct PerformanceStats {
   float max_orientation_error = 0.0f;  // radians
   float max_penetration = 0.0f;        // metres, hand points inside the collision body after solving
   // How far the performed hand is from the plan at the planned key instants (the frame nearest
-  // the end of every segment that leaves a hand in a signing posture): the palm centre's distance
-  // and the angle between the performed and planned hand frames. Measured on the final pose, so
+  // the end of every segment that leaves a hand in a signing posture): the distance of the point
+  // where the hand meets the body (planned_contact) for a hand at the body, of the palm centre for
+  // a hand in space, and the angle between the performed and planned hand frames. Measured on the final pose, so
   // everything the performer did (keeping the hand out of the body, clamping to limits) counts.
   float key_position_error = 0.0f;     // metres, postures at the body (HandState::at_body)
   float key_space_position_error = 0.0f;  // metres, postures out in the signing space

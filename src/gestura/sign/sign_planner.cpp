@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "gestura/core/error.hpp"
@@ -29,6 +30,9 @@ constexpr float kTrunkSideOffset = 0.09f;  // hamlrat at a central trunk site: i
 constexpr float kBodyClearance = 0.005f;  // planned hand surfaces stay this far off the body
 constexpr float kAtBody = kCloseGap + 0.01f;  // a hand surface this near the body is at the body
 constexpr float kPassThrough = 0.02f;  // a planned hand this deep in the body went into it, not onto it
+constexpr float kDetourStep = 0.01f;       // detours around the body are searched in these steps
+constexpr float kMaxDetour = 0.30f;        // … up to this far out
+constexpr float kDetourTolerance = 0.002f;  // a path may pass this much nearer the body than its ends
 // A hand out in space moves at most this far from its notated place to where the arm can turn it
 // as notated (arm_reach.hpp), and no more than `kMinSpaceShift` farther than it is from the body
 // (a hand "near" a site stays near it; neutral space, well in front of the body, is the region
@@ -107,6 +111,19 @@ class Planner {
  public:
   Planner(const SigningRig& rig, const PlanOptions& options) : rig_(rig), options_(options) {
     scratch_ = rig.rest;
+    // Sites on the head and trunk (not on the arms, which move; a hand "close" above the
+    // shoulder top is out of its own arm's reach, and is placed in the space in front of it).
+    for (const BodySite& site : rig.sites) {
+      bool on_moving_arm = false;
+      for (const HandRig& hr : rig.hands)
+        for (int j : hr.arm.joints)
+          if (j == site.joint) on_moving_arm = true;
+      for (const HandRig& hr : rig.hands)
+        for (const auto& finger : hr.fingers)
+          for (int j : finger)
+            if (j == site.joint) on_moving_arm = true;
+      if (!on_moving_arm) body_site_points_.push_back(site_position(site, rig.bind_model));
+    }
     for (int h = 0; h < 2; ++h) state_[h] = rest_hand_state(rig, hand_of(h));
   }
 
@@ -153,10 +170,23 @@ class Planner {
         if (d < deepest) deepest = d, outward = n;
       }
       if (deepest >= 0.0f) break;
+      // Out is away from the body at the palm centre while that is outside: a fingertip past
+      // the middle of the neck has its nearest surface at the back of it.
+      vec3 palm_outward;
+      if (body_signed_distance(rig_, rig_.bind_model, s.position, &palm_outward) > 0.0f) outward = palm_outward;
       s.position += outward * (-deepest);
       nearest = 0.0f;
     }
-    s.at_body = nearest < kAtBody;
+    s.at_body = nearest < kAtBody || near_a_body_site(pts, s.position);
+  }
+
+  // The collision body is a few capsules and misses what stands out of them (the chin, nose,
+  // lips): a hand this near one of the body's sites is at the body too.
+  bool near_a_body_site(const std::array<vec3, 11>& pts, const vec3& at) const {
+    for (const vec3& site : body_site_points_)
+      for (const vec3& p : pts)
+        if (glm::distance(at + p, site) < kAtBody) return true;
+    return false;
   }
 
   // How far the hand's nearest point (hand_points) is from the body with its palm centre at `at`.
@@ -224,7 +254,7 @@ class Planner {
   void stop_at_surface(int h, const HandState& from, HandState& to) {
     if (!from.active || !to.active) return;
     const auto pts = hand_points(h, to);
-    if (clearance(pts, from.position) < kBodyClearance) return;
+    if (clearance(pts, from.position) < -kPassThrough) return;  // already in it: nothing to stop at
     auto at = [&](float t) { return glm::mix(from.position, to.position, t); };
     constexpr int kSamples = 8;
     for (int k = 1; k <= kSamples; ++k) {
@@ -240,9 +270,76 @@ class Planner {
     }
   }
 
+  // A path between two places that would take the hand through the body on the way (from the
+  // chin down to rest, from rest up past the head to its top, from one cheek to the other) bows
+  // out around it, as a signer's hand does: the smallest detour, in the first direction that
+  // works (forward; forward and out to the hand's side; forward and up; out along the body's
+  // normal at either end), that keeps the hand along the way as far off the body as it is at
+  // either end. Checked at 11 instants with the hand's interpolated turn and shape.
+  void detour_around_body(int h, HandSegment& seg) {
+    if (!seg.from.active && !seg.to.active) return;
+    if (seg.paths.empty() && seg.from.position == seg.to.position) return;  // a hold
+    const std::array<vec3, 11> ends[2] = {hand_points(h, seg.from), hand_points(h, seg.to)};
+    // Hand points in the hand's own frame, so they can be carried by the interpolated turn.
+    std::array<vec3, 11> local[2];
+    for (int e = 0; e < 2; ++e) {
+      const quat inv = glm::inverse(e == 0 ? seg.from.orientation : seg.to.orientation);
+      for (std::size_t i = 0; i < 11; ++i) local[e][i] = inv * ends[e][i];
+    }
+    constexpr int kSamples = 12;
+    struct Instant {
+      vec3 position;
+      std::array<vec3, 11> points;
+      float bump;
+    };
+    std::array<Instant, kSamples - 1> path;
+    detour_timeline_.segments.assign(1, seg);
+    detour_timeline_.segments[0].detour = vec3(0.0f);
+    const float span = seg.end - seg.start;
+    for (int k = 1; k < kSamples; ++k) {
+      const float u = static_cast<float>(k) / kSamples;
+      const float progress = seg.linear_blend ? u : profile_progress(VelocityProfile::MinimumJerk, u);
+      const HandState at = sample_hand(detour_timeline_, seg.start + u * span);
+      Instant& in = path[static_cast<std::size_t>(k - 1)];
+      in.position = at.position;
+      for (std::size_t i = 0; i < 11; ++i) in.points[i] = at.orientation * glm::mix(local[0][i], local[1][i], progress);
+      in.bump = std::sin(kPi * progress);
+    }
+    const float required = std::min({clearance(ends[0], seg.from.position), clearance(ends[1], seg.to.position),
+                                     kBodyClearance}) - kDetourTolerance;
+    auto worst_clearance = [&](const vec3& detour) {
+      float worst = 1e9f;
+      for (const Instant& in : path) {
+        const vec3 at = in.position + detour * in.bump;
+        for (const vec3& p : in.points) worst = std::min(worst, body_signed_distance(rig_, rig_.bind_model, at + p));
+      }
+      return worst;
+    };
+    if (worst_clearance(vec3(0.0f)) >= required) return;
+    const float side = h == 0 ? -1.0f : 1.0f;  // the right hand's side is −x
+    vec3 from_normal(0, 0, 1), to_normal(0, 0, 1);
+    body_signed_distance(rig_, rig_.bind_model, seg.from.position, &from_normal);
+    body_signed_distance(rig_, rig_.bind_model, seg.to.position, &to_normal);
+    const vec3 directions[] = {vec3(0, 0, 1), glm::normalize(vec3(side, 0, 1)), glm::normalize(vec3(0, 1, 1)),
+                               from_normal, to_normal};
+    vec3 best(0.0f);
+    float best_clearance = -1e9f;
+    for (float amount = kDetourStep; amount <= kMaxDetour + 1e-4f; amount += kDetourStep)
+      for (const vec3& d : directions) {
+        const float c = worst_clearance(d * amount);
+        if (c >= required) {
+          seg.detour = d * amount;
+          return;
+        }
+        if (c > best_clearance) best_clearance = c, best = d * amount;
+      }
+    seg.detour = best;  // nothing clears it: the detour that comes closest
+  }
+
   void add_segment(int h, HandSegment seg) {
     stop_at_surface(h, seg.from, seg.to);
     keep_out(h, seg.to);
+    detour_around_body(h, seg);
     const float duration = std::max(seg.end - seg.start, 1e-3f);
     seg.start = clock_[h];
     seg.end = clock_[h] + duration;
@@ -854,6 +951,8 @@ class Planner {
   const SigningRig& rig_;
   PlanOptions options_;
   Pose scratch_;
+  std::vector<vec3> body_site_points_;  // bind-pose positions of the body's own sites (near_a_body_site)
+  HandTimeline detour_timeline_;  // scratch for detour_around_body
   SignPlan plan_;
   HandTimeline timeline_[2];
   HandState state_[2];

@@ -11,6 +11,8 @@ namespace gestura {
 
 namespace {
 
+constexpr float kFaceRadius = 0.035f;  // metres: the lower face's capsule (about the chin's half width)
+
 int need(const Skeleton& s, const std::string& name) {
   const int j = s.find(name);
   if (j < 0) throw Error("signing rig: the avatar has no joint '" + name + "'");
@@ -98,6 +100,18 @@ SigningRig make_signing_rig(const Avatar& avatar) {
   const vec3 head_c = 0.5f * (neck_b + top) + vec3(0, 0, 0.015f);
   const float head_r = std::clamp(distance_to_site(rig, "forehead", head_c, 0.09f), 0.06f, 0.14f) * 0.92f;
   rig.body.push_back({"head", skull, head_c - vec3(0, 0.02f, 0), head_c + vec3(0, 0.02f, 0), head_r});
+  // The lower face (chin, lips, the nose's base) stands out of the head's sphere by 4-5 cm: a
+  // capsule from the chin up to the nose, its surface through the chin and the lips.
+  const BodySite* chin = find_site(rig.sites, "chin");
+  const BodySite* lips = find_site(rig.sites, "lips");
+  const BodySite* nose = find_site(rig.sites, "nose");
+  if (chin && lips && nose) {
+    const vec3 chin_at = site_position(*chin, rig.bind_model), lips_at = site_position(*lips, rig.bind_model);
+    const float r = kFaceRadius;
+    const vec3 low = chin_at - site_normal(*chin, rig.bind_model) * r;
+    const vec3 high(lips_at.x, site_position(*nose, rig.bind_model).y, lips_at.z - r);
+    rig.body.push_back({"face", skull, low, high, r});
+  }
   for (CollisionCapsule& c : rig.body) {  // model space at bind pose → the carrying joint's frame
     const mat4 to_joint = glm::inverse(rig.bind_model[static_cast<std::size_t>(c.joint)]);
     c.a = vec3(to_joint * vec4(c.a, 1.0f));
@@ -150,6 +164,11 @@ void apply_hand_posture(const SigningRig& rig, Hand hand, const HandPosture& pos
       joint_rotation(s, tj[0], vec3(t.cmc_flexion, mirror * -t.cmc_opposition, mirror * -t.cmc_abduction));
   pose.rotations[static_cast<std::size_t>(tj[1])] = joint_rotation(s, tj[1], vec3(t.mcp, 0, 0));
   pose.rotations[static_cast<std::size_t>(tj[2])] = joint_rotation(s, tj[2], vec3(t.ip, 0, 0));
+  // A hand posture is what this hand can make: some notated shapes ask a thumb or finger joint for
+  // more than its range. Clamped here, so every user of the posed hand (contact geometry, keeping
+  // the hand out of the body) sees the fingers as they will be performed.
+  for (const auto& finger : h.fingers)
+    for (int j : finger) clamp_joint_to_limits(s, j, pose.rotations[static_cast<std::size_t>(j)]);
 }
 
 HandGeometry hand_geometry(const SigningRig& rig, Hand hand, const Pose& pose) {

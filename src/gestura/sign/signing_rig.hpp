@@ -45,7 +45,7 @@ struct SigningRig {
   Pose rest;                          // bind pose
   Pose neutral;                       // arms in the relaxed signing posture (hands low, in front)
   std::array<HandRig, 2> hands;       // [0] = right (dominant), [1] = left
-  std::vector<CollisionCapsule> body; // torso, neck, head
+  std::vector<CollisionCapsule> body; // torso, neck, head, lower face
 
   const HandRig& hand(Hand h) const { return hands[h == Hand::Right ? 0 : 1]; }
   const Skeleton& skeleton() const { return avatar->skeleton; }
@@ -58,7 +58,8 @@ SigningRig make_signing_rig(const Avatar& avatar);
 // the closest capsule. `model` are the current joint model matrices.
 float body_signed_distance(const SigningRig& rig, std::span<const mat4> model, const vec3& p, vec3* outward = nullptr);
 
-// Finger joint local rotations for a hand posture (thumb included), written into `pose`.
+// Finger joint local rotations for a hand posture (thumb included), written into `pose`, clamped
+// into the joints' limits.
 void apply_hand_posture(const SigningRig& rig, Hand hand, const HandPosture& posture, Pose& pose);
 
 // Hand geometry for a posture: positions relative to the wrist, in the wrist's frame, of the palm

@@ -148,23 +148,25 @@ static vec3 clamp_angles(const JointDofs& d, vec3 a) {
   return a;
 }
 
+bool clamp_joint_to_limits(const Skeleton& skeleton, int joint, quat& local_rotation) {
+  const JointDofs& d = skeleton.dofs[static_cast<std::size_t>(joint)];
+  if (d.axes == 0) return false;
+  const vec3 a = joint_angles(skeleton, joint, local_rotation);
+  const vec3 c = clamp_angles(d, a);
+  if (c == a) return false;
+  // Joints whose range spans more than 180° (the shoulder) have rotations with two Euler readings;
+  // the clamped rotation can read back through the other one. Clamp again until it reads inside.
+  quat q = joint_rotation(skeleton, joint, c);
+  for (int pass = 0; pass < 3 && !within_limits(skeleton, joint, q, 1e-4f); ++pass)
+    q = joint_rotation(skeleton, joint, clamp_angles(d, joint_angles(skeleton, joint, q)));
+  local_rotation = q;
+  return true;
+}
+
 int clamp_to_limits(const Skeleton& skeleton, Pose& pose) {
   int changed = 0;
-  for (std::size_t j = 0; j < skeleton.size(); ++j) {
-    const JointDofs& d = skeleton.dofs[j];
-    if (d.axes == 0) continue;
-    const int ji = static_cast<int>(j);
-    const vec3 a = joint_angles(skeleton, ji, pose.rotations[j]);
-    const vec3 c = clamp_angles(d, a);
-    if (c == a) continue;
-    // Joints whose range spans more than 180° (the shoulder) have rotations with two Euler readings;
-    // the clamped rotation can read back through the other one. Clamp again until it reads inside.
-    quat q = joint_rotation(skeleton, ji, c);
-    for (int pass = 0; pass < 3 && !within_limits(skeleton, ji, q, 1e-4f); ++pass)
-      q = joint_rotation(skeleton, ji, clamp_angles(d, joint_angles(skeleton, ji, q)));
-    pose.rotations[j] = q;
-    ++changed;
-  }
+  for (std::size_t j = 0; j < skeleton.size(); ++j)
+    if (clamp_joint_to_limits(skeleton, static_cast<int>(j), pose.rotations[j])) ++changed;
   return changed;
 }
 

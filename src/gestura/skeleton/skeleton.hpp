@@ -96,6 +96,8 @@ quat joint_rotation(const Skeleton& skeleton, int joint, const vec3& angles);
 // Clamps every joint of `pose` into its limits (locked axes to 0). Returns the number of joints
 // changed. Joints with no free axis keep their rotation (they are not articulated).
 int clamp_to_limits(const Skeleton& skeleton, Pose& pose);
+// The same for one joint's local rotation; returns whether it changed.
+bool clamp_joint_to_limits(const Skeleton& skeleton, int joint, quat& local_rotation);
 bool within_limits(const Skeleton& skeleton, int joint, const quat& local_rotation,
                    float tolerance = deg(0.5f));
 
