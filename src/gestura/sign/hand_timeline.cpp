@@ -17,6 +17,15 @@ constexpr float kPlayAmplitude = 0.45f;   // radians, finger flexion
 
 }  // namespace
 
+quat blend_turn(const quat& from, const quat& to, float s, bool long_way) {
+  if (!long_way) return glm::slerp(from, to, s);
+  // glm::mix interpolates along the arc between the two quaternions as given: with `to` on the
+  // far hemisphere from `from` that is the long way round.
+  const quat far = glm::dot(from, to) > 0.0f ? -to : to;
+  const quat q = glm::normalize(glm::mix(from, far, s));
+  return glm::dot(q, to) < 0.0f ? -q : q;  // the same turn, written on `to`'s side (so s = 1 gives `to`)
+}
+
 HandState sample_hand(const HandTimeline& timeline, float t) {
   const auto& segs = timeline.segments;
   auto it = std::upper_bound(segs.begin(), segs.end(), t, [](float v, const HandSegment& s) { return v < s.end; });
@@ -27,12 +36,13 @@ HandState sample_hand(const HandTimeline& timeline, float t) {
   const float s = seg.linear_blend ? u : profile_progress(VelocityProfile::MinimumJerk, u);
   HandState out;
   out.active = seg.to.active || seg.from.active;
-  out.at_body = seg.to.at_body;
+  // At the body while it stays there; a hand on its way to the body gets there at the end.
+  out.at_body = seg.to.at_body && (seg.from.at_body || u >= 1.0f);
   // `to.position` includes where the paths end; the blend carries the rest of the change.
   vec3 path_end(0.0f);
   for (const Movement& m : seg.paths) path_end += sample(m, m.duration).position;
   out.position = glm::mix(seg.from.position, seg.to.position - path_end, s);
-  out.orientation = glm::slerp(seg.from.orientation, seg.to.orientation, s);
+  out.orientation = blend_turn(seg.from.orientation, seg.to.orientation, s, seg.long_turn);
   out.shape = mix(seg.from.shape, seg.to.shape, s);
   for (const Movement& m : seg.paths) out.position += sample(m, u * m.duration).position;
   out.position += seg.detour * std::sin(kPi * s);

@@ -37,6 +37,8 @@ struct HandSegment {
   bool linear_blend = false;       // blend from→to at constant speed (paths drive the timing instead)
   vec3 detour{0.0f};               // the path bows out by this much halfway (sin π·progress), to pass
                                    // around the body instead of through it
+  bool long_turn = false;          // turn from → to the long way round (the short way passes a
+                                   // forearm twist or wrist bend beyond the arm's range)
 };
 
 struct HandTimeline {
@@ -47,5 +49,8 @@ struct HandTimeline {
 
 // The hand's state at time t (clamped to the timeline). Contract: the timeline is not empty.
 HandState sample_hand(const HandTimeline& timeline, float t);
+
+// The hand's turn a fraction `s` of the way from `from` to `to`, the short or the long way round.
+quat blend_turn(const quat& from, const quat& to, float s, bool long_way);
 
 }  // namespace gestura

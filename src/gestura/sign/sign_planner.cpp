@@ -30,6 +30,8 @@ constexpr float kTrunkSideOffset = 0.09f;  // hamlrat at a central trunk site: i
 constexpr float kBodyClearance = 0.005f;  // planned hand surfaces stay this far off the body
 constexpr float kAtBody = kCloseGap + 0.01f;  // a hand surface this near the body is at the body
 constexpr float kPassThrough = 0.02f;  // a planned hand this deep in the body went into it, not onto it
+constexpr float kLongTurnWorthTrying = deg(100.0f);  // turns this large may go the long way round
+constexpr float kLongTurnMargin = 0.3f;   // radians of clamped turn the long way must save
 constexpr float kDetourStep = 0.01f;       // detours around the body are searched in these steps
 constexpr float kMaxDetour = 0.30f;        // … up to this far out
 constexpr float kDetourTolerance = 0.002f;  // a path may pass this much nearer the body than its ends
@@ -336,10 +338,28 @@ class Planner {
     seg.detour = best;  // nothing clears it: the detour that comes closest
   }
 
+  // A turn is taken the short way round unless that way passes a forearm twist or wrist bend the
+  // arm cannot make and the long way does not: from the resting hand (palm in, fingers down) to
+  // fingers up with the palm forward, the short way twists the forearm far past its range mid-way
+  // and the arm would swing about to follow it.
+  void choose_turn_way(int h, HandSegment& seg) {
+    if (!seg.from.active && !seg.to.active) return;
+    const quat a = seg.from.orientation, b = seg.to.orientation;
+    if (std::abs(glm::dot(a, b)) > std::cos(0.5f * kLongTurnWorthTrying)) return;  // a small turn
+    float excess[2] = {0.0f, 0.0f};
+    for (int way = 0; way < 2; ++way)
+      for (float u : {0.25f, 0.5f, 0.75f}) {
+        const vec3 at = glm::mix(seg.from.position, seg.to.position, u) + seg.detour * std::sin(kPi * u);
+        excess[way] += arm_reach_excess(rig_, hand_of(h), at, blend_turn(a, b, u, way == 1));
+      }
+    seg.long_turn = excess[1] + kLongTurnMargin < excess[0];
+  }
+
   void add_segment(int h, HandSegment seg) {
     stop_at_surface(h, seg.from, seg.to);
     keep_out(h, seg.to);
     detour_around_body(h, seg);
+    choose_turn_way(h, seg);
     const float duration = std::max(seg.end - seg.start, 1e-3f);
     seg.start = clock_[h];
     seg.end = clock_[h] + duration;
