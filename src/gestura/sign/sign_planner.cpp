@@ -30,6 +30,7 @@ constexpr float kTrunkSideOffset = 0.09f;  // hamlrat at a central trunk site: i
 constexpr float kBodyClearance = 0.005f;  // planned hand surfaces stay this far off the body
 constexpr float kAtBody = kCloseGap + 0.01f;  // a hand surface this near the body is at the body
 constexpr float kPassThrough = 0.02f;  // a planned hand this deep in the body went into it, not onto it
+const vec3 kBaseHandOffset(-0.06f, -0.02f, -0.03f);  // a base hand waits this far in from the neutral space
 constexpr float kLongTurnWorthTrying = deg(100.0f);  // turns this large may go the long way round
 constexpr float kLongTurnMargin = 0.3f;   // radians of clamped turn the long way must save
 constexpr float kDetourStep = 0.01f;       // detours around the body are searched in these steps
@@ -611,7 +612,14 @@ class Planner {
     HandState target[2] = {state_[0], state_[1]};
     const sign::Posture& p = m.posture;
     const bool dominant_signs = !m.nondominant_only;
-    const bool other_signs = m.nondominant_only || both_hands() || p.handshape.nondominant.has_value() ||
+    auto on_hand = [](const std::optional<sign::Location>& l) {
+      return l && (sign::site_region(l->site) == sign::SiteRegion::hand || sign::site_region(l->site) == sign::SiteRegion::finger);
+    };
+    // The dominant hand placed at a part of the other hand (its palm, back, fingers) makes the
+    // other hand the base: it comes up in front, near the midline, even when nothing else is
+    // written for it, instead of being met hanging at the hip.
+    const bool base_hand = dominant_signs && on_hand(p.location.dominant) && !p.location.nondominant;
+    const bool other_signs = m.nondominant_only || both_hands() || base_hand || p.handshape.nondominant.has_value() ||
                              p.location.nondominant.has_value() || p.orientation.nondominant.has_value();
     auto shape_for = [&](int h) -> HandPosture {
       const auto& own = h == 0 ? p.handshape.dominant : p.handshape.nondominant;
@@ -632,19 +640,22 @@ class Planner {
       const bool copy_o = !own_o && h == 1;
       const sign::Orientation default_o{sign::Direction::up_out, std::nullopt, false,
                                         h == 0 ? sign::Direction::left : sign::Direction::right};
-      const sign::Orientation& o = own_o ? *own_o : (p.orientation.dominant && h == 1 ? *p.orientation.dominant : default_o);
-      s.orientation = orientation_of(h, o, s.orientation, copy_o || (h == 1 && !own_o && both_hands()));
+      // A base hand written with nothing of its own is a flat hand, palm up, fingers forward.
+      const bool plain_base = h == 1 && base_hand && !both_hands() && !own_o && !p.handshape.nondominant;
+      const sign::Orientation base_o{sign::Direction::out, std::nullopt, false, sign::Direction::up};
+      if (plain_base) s.shape = make_handshape(BasicHandshape::Flat);
+      const sign::Orientation& o = plain_base ? base_o
+                                   : own_o   ? *own_o
+                                             : (p.orientation.dominant && h == 1 ? *p.orientation.dominant : default_o);
+      s.orientation = orientation_of(h, o, s.orientation, !plain_base && (copy_o || (h == 1 && !own_o && both_hands())));
     }
     // A hand constellation names a part of each hand (the dominant hand's pinky side on the other
     // hand's palm): the non-dominant hand waits in front, near the midline, and the dominant hand
     // brings its part to the named part of the other hand.
-    auto on_hand = [](const std::optional<sign::Location>& l) {
-      return l && (sign::site_region(l->site) == sign::SiteRegion::hand || sign::site_region(l->site) == sign::SiteRegion::finger);
-    };
     const bool constellation = on_hand(p.location.dominant) && on_hand(p.location.nondominant);
     if (constellation) {
       target[1].active = true;
-      target[1].position = neutral_space(1).point + vec3(-0.06f, -0.02f, -0.03f);
+      target[1].position = neutral_space(1).point + kBaseHandOffset;
       state_[1] = target[1];
       const SitePlace other = other_hand_site(0, p.location.nondominant->site);
       const auto proximity = p.hands_contact ? p.hands_contact : p.location.dominant->proximity;
@@ -657,7 +668,10 @@ class Planner {
       if (constellation) break;
       if (!target[h].active) continue;
       const auto& own_l = h == 0 ? p.location.dominant : p.location.nondominant;
-      if (own_l) {
+      if (h == 1 && base_hand) {
+        target[1].position = neutral_space(1).point + kBaseHandOffset;
+        state_[1] = target[1];
+      } else if (own_l) {
         target[h].position = location_position(h, *own_l, target[h], false);
         if (h == 1) state_[1] = target[1];  // the dominant hand's placement reads it
       } else if (h == 1 && p.location.dominant && both_hands()) {
