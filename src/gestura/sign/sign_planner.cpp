@@ -615,10 +615,14 @@ class Planner {
     auto on_hand = [](const std::optional<sign::Location>& l) {
       return l && (sign::site_region(l->site) == sign::SiteRegion::hand || sign::site_region(l->site) == sign::SiteRegion::finger);
     };
-    // The dominant hand placed at a part of the other hand (its palm, back, fingers) makes the
-    // other hand the base: it comes up in front, near the midline, even when nothing else is
-    // written for it, instead of being met hanging at the hip.
-    const bool base_hand = dominant_signs && on_hand(p.location.dominant) && !p.location.nondominant;
+    // The dominant hand placed at a part of the other hand (its palm, back, fingers) or of its
+    // forearm or wrist makes the other hand the base: it comes up in front, near the midline,
+    // even when nothing else is written for it, instead of being met hanging at the hip.
+    auto on_forearm = [](const std::optional<sign::Location>& l) {
+      return l && (l->site == sign::Site::lower_arm || l->site == sign::Site::wrist_back || l->site == sign::Site::wrist_pulse);
+    };
+    const bool base_hand =
+        dominant_signs && (on_hand(p.location.dominant) || on_forearm(p.location.dominant)) && !p.location.nondominant;
     const bool other_signs = m.nondominant_only || both_hands() || base_hand || p.handshape.nondominant.has_value() ||
                              p.location.nondominant.has_value() || p.orientation.nondominant.has_value();
     auto shape_for = [&](int h) -> HandPosture {
@@ -640,9 +644,13 @@ class Planner {
       const bool copy_o = !own_o && h == 1;
       const sign::Orientation default_o{sign::Direction::up_out, std::nullopt, false,
                                         h == 0 ? sign::Direction::left : sign::Direction::right};
-      // A base hand written with nothing of its own is a flat hand, palm up, fingers forward.
+      // A base hand written with nothing of its own is a flat hand: palm up and fingers forward
+      // to be touched on the hand, palm down and fingers across the body on the forearm or wrist.
       const bool plain_base = h == 1 && base_hand && !both_hands() && !own_o && !p.handshape.nondominant;
-      const sign::Orientation base_o{sign::Direction::out, std::nullopt, false, sign::Direction::up};
+      const sign::Orientation base_o =
+          on_forearm(p.location.dominant)
+              ? sign::Orientation{sign::Direction::right, std::nullopt, false, sign::Direction::down}
+              : sign::Orientation{sign::Direction::out, std::nullopt, false, sign::Direction::up};
       if (plain_base) s.shape = make_handshape(BasicHandshape::Flat);
       const sign::Orientation& o = plain_base ? base_o
                                    : own_o   ? *own_o
