@@ -200,7 +200,7 @@ TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body; %d off "
               "their planned key postures (IK residual over 2 cm or 25 degrees)\n", signs, deep, off);
   EXPECT_EQ(deep, 0);   // issue #5: no hand more than 1 cm inside the body (5 before the analytic swivel seed, 1 before detours)
-  EXPECT_LE(off, 23);   // ratchet: measured 21 (30 before hands in space took reachable places; 57 before the analytic swivel seed)
+  EXPECT_LE(off, 21);   // ratchet: measured 19 (30 before hands in space took reachable places; 57 before the analytic swivel seed)
 }
 
 TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
@@ -223,8 +223,8 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 // place, 446 turned, 86 in the body.
 // A hand at the body is measured at the point where it meets the body (planned_contact) since
 // the lower face joined the collision body and its sites (chin, lips) count as at the body.
-constexpr int kMaxOffPlace = 505;   // measured 494
-constexpr int kMaxOffTurn = 238;    // measured 228
+constexpr int kMaxOffPlace = 475;   // measured 465
+constexpr int kMaxOffTurn = 215;    // measured 206
 
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits, no hand more
 // than 1 cm inside the collision body (issue #5; 140 signs did before the analytic swivel seed,
@@ -382,4 +382,32 @@ TEST(Synthesis, AHandAtTheOtherWristBringsThatForearmUpAcrossTheBody) {
   EXPECT_GT(wrist.y, 0.95f);
   EXPECT_LT(std::abs(wrist.y - elbow.y), 0.12f);  // the forearm roughly level
   EXPECT_LT(glm::distance(joint(m, "r_index_tip"), wrist), 0.08f);
+}
+
+TEST(Synthesis, NotationNamingAPartOfTheRestingHandDoesNotSendTheHandToTheHip) {
+  // DGS PROFESSION1A: thumb tip at the chin, a small arc, and the thumb tip at the chin again,
+  // written "…chin, (touch, thumb tip)". The part after the arc reads as a place on the other
+  // hand, which rests at the hip: the hand went 75 cm down to it. It stays at the face now.
+  const SignSynthesis r = synthesize_sign(
+      sign::parse_hamnosys_names("hamfist,hamthumboutmod,hamextfingerul,hampalmdl,hamchin,hamlrat,hamseqbegin,hamtouch,"
+                                 "hamthumb,hamfingertip,hamseqend,hammovel,hamarcr,hamlrat,hamchin,hamseqbegin,hamtouch,"
+                                 "hamthumb,hamfingertip,hamseqend"),
+      fx().rig);
+  for (float t = r.plan.sign_start; t <= r.plan.sign_end; t += 0.1f)
+    EXPECT_GT(sample_hand(r.plan.right, t).position.y, 1.3f) << t;
+}
+
+TEST(Synthesis, AWristOnTheOtherHandIsAHandConstellationInFrontOfTheBody) {
+  // DGS TO-PALM1: the dominant wrist's back at the other index finger's pad, both flat palms down.
+  // Both hands come up together in front (they met at 0.6 m, by the thighs).
+  const SignSynthesis r = synthesize_sign(
+      sign::parse_hamnosys_names("hamflathand,hamparbegin,hamextfingerol,hampalmd,hamplus,hamextfingeror,hampalmd,"
+                                 "hamparend,hamparbegin,hamwristback,hamplus,hamindexfinger,hamfingerpad,hamparend,hamclose"),
+      fx().rig);
+  const auto m = held_pose(r);
+  for (const char* j : {"r_wrist", "l_wrist"}) {
+    EXPECT_GT(joint(m, j).y, 1.0f) << j;
+    EXPECT_GT(joint(m, j).z, 0.15f) << j;
+  }
+  EXPECT_LT(glm::distance(joint(m, "r_wrist"), joint(m, "l_index2")), 0.10f);
 }

@@ -587,6 +587,17 @@ class Planner {
     return kNearGap;
   }
 
+  // A location an action moves the hand to. One on the other hand while that hand rests at the
+  // hip is not a place to go (the hand would dive to the hip): such notation names a part of the
+  // moving hand (a thumb tip that touches) that the sign's own place already fixes, so the hand
+  // stays where it is.
+  vec3 action_location(int h, const sign::Location& loc, const HandState& s, bool copy) {
+    const sign::SiteRegion region = sign::site_region(loc.site);
+    const bool on_other_hand = loc.nondominant_hand || region == sign::SiteRegion::hand || region == sign::SiteRegion::finger;
+    if (on_other_hand && !state_[1 - h].active) return s.position;
+    return location_position(h, loc, s, copy);
+  }
+
   vec3 location_position(int h, const sign::Location& loc, const HandState& s, bool copy) {
     sign::Side side = loc.side;
     const bool on_other = loc.nondominant_hand;
@@ -657,10 +668,11 @@ class Planner {
                                              : (p.orientation.dominant && h == 1 ? *p.orientation.dominant : default_o);
       s.orientation = orientation_of(h, o, s.orientation, !plain_base && (copy_o || (h == 1 && !own_o && both_hands())));
     }
-    // A hand constellation names a part of each hand (the dominant hand's pinky side on the other
-    // hand's palm): the non-dominant hand waits in front, near the midline, and the dominant hand
+    // A hand constellation names a part of each hand or wrist (the dominant hand's pinky side on
+    // the other hand's palm, a wrist on the back of the other hand): the non-dominant hand waits in front, near the midline, and the dominant hand
     // brings its part to the named part of the other hand.
-    const bool constellation = on_hand(p.location.dominant) && on_hand(p.location.nondominant);
+    auto on_hand_or_wrist = [&](const std::optional<sign::Location>& l) { return on_hand(l) || on_forearm(l); };
+    const bool constellation = on_hand_or_wrist(p.location.dominant) && on_hand_or_wrist(p.location.nondominant);
     if (constellation) {
       target[1].active = true;
       target[1].position = neutral_space(1).point + kBaseHandOffset;
@@ -855,7 +867,7 @@ class Planner {
         seg.to.orientation = orientation_of(h, *o, seg.to.orientation, copy);
         duration = std::max(duration, scaled(kReplacementTime));
       } else if (const sign::Location* l = e->location()) {
-        seg.to.position = location_position(h, *l, seg.to, copy);
+        seg.to.position = action_location(h, *l, seg.to, copy);
         duration = std::max(duration, transition_time(seg.from, seg.to));
       } else if (const sign::Motion* m = e->motion()) {
         duration = std::max(duration, add_motion(*m, h, copy, alternate, seg));
@@ -886,7 +898,7 @@ class Planner {
       case MotionKind::crossing:
       case MotionKind::x_shaped: {
         if (m.target) {
-          seg.to.position = location_position(h, *m.target, seg.to, copy);
+          seg.to.position = action_location(h, *m.target, seg.to, copy);
           duration = scaled(straight_duration(glm::distance(seg.from.position, seg.to.position), speed));
           break;
         }
@@ -941,11 +953,11 @@ class Planner {
         duration = scaled(kReplacementTime);
         break;
       case MotionKind::replacement:
-        if (m.target) seg.to.position = location_position(h, *m.target, seg.to, copy);
+        if (m.target) seg.to.position = action_location(h, *m.target, seg.to, copy);
         duration = scaled(kReplacementTime * speed_factor(speed));
         break;
       case MotionKind::to_location:
-        if (m.target) seg.to.position = location_position(h, *m.target, seg.to, copy);
+        if (m.target) seg.to.position = action_location(h, *m.target, seg.to, copy);
         duration = scaled(straight_duration(glm::distance(seg.from.position, seg.to.position), speed));
         break;
       case MotionKind::none: duration = scaled(kHoldTime); break;
