@@ -119,7 +119,7 @@ std::vector<BodySite> find_body_sites(const Skeleton& skeleton, const Mesh& mesh
       const std::string p = side == 0 ? "l_" : "r_";
       const int eye = side == 0 ? l_eye : r_eye;
       rays.push_back({p + "eye", skull, vec3(a.at(eye).x, eyes.y, axis.z), fwd, true});
-      rays.push_back({p + "cheek", skull, level(-0.40f) + vec3(x * half_eyes, 0, 0), glm::normalize(vec3(0.6f * x, 0, 1)),
+      rays.push_back({p + "cheek", skull, level(-0.40f) + vec3(x * half_eyes, 0, 0), glm::normalize(vec3(0.3f * x, 0, 1)),
                       true});
       rays.push_back({p + "ear", skull, level(-0.12f), vec3(x, 0, 0)});
       rays.push_back({p + "temple", skull, level(0.25f), glm::normalize(vec3(x, 0, 0.6f))});
