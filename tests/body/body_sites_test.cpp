@@ -103,6 +103,7 @@ TEST(BodySites, OnTheAvatarTheChinIsTheJawsFrontWithUnderChinBeneathIt) {
   const auto sites = find_body_sites(s, avatar.mesh);
   std::vector<mat4> model(s.size());
   local_to_model(s, rest_pose(s), model);
+  for (const char* n : {"chin", "under_chin", "neck", "lower_lip", "lips"}) ASSERT_NE(find_site(sites, n), nullptr) << n;
   const auto at = [&](const char* n) { return site_position(*find_site(sites, n), model); };
   const auto normal = [&](const char* n) { return site_normal(*find_site(sites, n), model); };
   const vec3 chin = at("chin"), under = at("under_chin"), neck = at("neck");

@@ -31,7 +31,7 @@ TEST(SignCheck, WholeLexiconFromTheCli) {
 }
 
 TEST(SignCheck, SigmlSignIsSynthesizedFromTheCli) {
-  const CliRun r = run_cli("check " + gestura::test::shared_data() + "/sigml-isl/aeroplane.sigml");
+  const CliRun r = run_cli("check " + gestura::test::shared_data() + "/sigml-isl/cup.sigml");
   EXPECT_NE(r.output.find("1 signs: 1 parsed, 1 synthesized, 0 failed"), std::string::npos) << r.output;
   EXPECT_EQ(r.status, 0);
 }

@@ -1,6 +1,10 @@
 #include "gestura/sign/hand_solver.hpp"
 
+#include <algorithm>
+#include <array>
+
 #include "gestura/ik/dls.hpp"
+#include "gestura/ik/residual.hpp"
 #include "gestura/ik/swivel_arm.hpp"
 #include "gestura/sign/sign_performer.hpp"
 
@@ -14,18 +18,24 @@ constexpr float kEscapeStep = 0.01f;        // metres per step of it
 constexpr int kEscapeSteps = 15;
 constexpr float kContactTolerance = 0.002f;  // metres a hand's contact point may miss before it is corrected
 
-constexpr float kContactTurnCost = deg(2.0f);  // turn a contact correction may cost…
-constexpr float kTurnRead = deg(24.0f);         // …or up to this (a turn still read as notated)
+constexpr float kSpaceTurnWeight = 0.25f;  // metres a radian of turn weighs against place, out in space…
+constexpr float kBodyTurnWeight = 0.08f;   // …and at the body, where the place is a point a signer keeps
+constexpr float kContactTurnCost = deg(2.0f);  // turn a contact correction may cost, or up to kTurnRead:
+constexpr float kTurnRead = deg(24.0f);  // just inside the 25° within which a 45°-step notated turn still
+                                         // reads as itself (synthesis_problem's tolerance)
 
-// The arm chain's joint rotations, to go back to.
+// The arm chain's joint rotations, to go back to (no allocation: this is per-frame code).
 struct ArmSnapshot {
+  static constexpr std::size_t kMaxJoints = 8;  // clavicle to wrist is 4 on H-Anim arms
   const IkChain* arm;
-  std::vector<quat> rotations;
+  std::array<quat, kMaxJoints> rotations;
   ArmSnapshot(const IkChain& chain, const Pose& pose) : arm(&chain) {
-    for (int j : chain.joints) rotations.push_back(pose.rotations[static_cast<std::size_t>(j)]);
+    for (std::size_t i = 0; i < std::min(kMaxJoints, chain.joints.size()); ++i)
+      rotations[i] = pose.rotations[static_cast<std::size_t>(chain.joints[i])];
   }
   void restore(Pose& pose) const {
-    for (std::size_t i = 0; i < rotations.size(); ++i) pose.rotations[static_cast<std::size_t>(arm->joints[i])] = rotations[i];
+    for (std::size_t i = 0; i < std::min(kMaxJoints, arm->joints.size()); ++i)
+      pose.rotations[static_cast<std::size_t>(arm->joints[i])] = rotations[i];
   }
 };
 
@@ -34,8 +44,17 @@ struct ArmSnapshot {
 // against the body afterwards is what will be performed.
 IkResult solve_within_limits(const Skeleton& s, const IkChain& arm, const mat4& base, const IkTarget& target,
                              const IkSettings& settings, IkWorkspace& workspace, Pose& pose) {
-  const IkResult r = solve_dls(s, arm, base, target, settings, workspace, pose);
-  for (int j : arm.joints) clamp_joint_to_limits(s, j, pose.rotations[static_cast<std::size_t>(j)]);
+  IkResult r = solve_dls(s, arm, base, target, settings, workspace, pose);
+  bool clamped = false;
+  for (int j : arm.joints) clamped |= clamp_joint_to_limits(s, j, pose.rotations[static_cast<std::size_t>(j)]);
+  if (clamped) {  // the residual of the pose that will be performed
+    load_angles(s, arm, pose, workspace);
+    quat effector_rotation;
+    const vec3 effector = chain_forward(s, arm, pose, base, workspace, effector_rotation);
+    const int iterations = r.iterations;
+    r = measure_residual(effector, effector_rotation, target, settings);
+    r.iterations = iterations;
+  }
   return r;
 }
 
@@ -118,7 +137,7 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
   settings.position_tolerance = 1e-3f;
   settings.orientation_tolerance = deg(1.5f);
   settings.preferred_angles = solver.seed;
-  settings.orientation_scale = state.at_body ? 0.08f : 0.25f;
+  settings.orientation_scale = glm::mix(kSpaceTurnWeight, kBodyTurnWeight, state.body_weight);
   settings.null_space_gain = 0.3f;
   IkResult r = solve_within_limits(s, h.arm, base, target, settings, solver.workspace, pose);
 
@@ -126,12 +145,12 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
   // centre: where the arm cannot make the exact turn, an index fingertip 10 cm out from the palm
   // centre would swing centimetres off the chin it touches. Shift the target by the contact
   // point's miss and solve again.
-  if (state.at_body) {
+  if (state.body_weight > 0.0f) {
     local_to_model(s, pose, model);
     hand_surface_points(rig, h.hand, model, points);
     std::size_t contact = 0;
     const vec3 planned = planned_contact(rig, h.hand, state, model, points, contact);
-    const vec3 miss = planned - points[contact];
+    const vec3 miss = (planned - points[contact]) * state.body_weight;
     if (glm::length(miss) > kContactTolerance) {
       // Kept unless it costs the notated turn: a hand turned away from its notated orientation
       // reads as another sign, a contact point a few centimetres off does not.

@@ -18,7 +18,8 @@ constexpr float kPlayAmplitude = 0.45f;   // radians, finger flexion
 }  // namespace
 
 quat blend_turn(const quat& from, const quat& to, float s, bool long_way) {
-  if (!long_way) return glm::slerp(from, to, s);
+  // The long way between (nearly) the same turn is undefined (a full turn about any axis).
+  if (!long_way || std::abs(glm::dot(from, to)) > 0.9999f) return glm::slerp(from, to, s);
   // glm::mix interpolates along the arc between the two quaternions as given: with `to` on the
   // far hemisphere from `from` that is the long way round.
   const quat far = glm::dot(from, to) > 0.0f ? -to : to;
@@ -29,15 +30,27 @@ quat blend_turn(const quat& from, const quat& to, float s, bool long_way) {
 HandState sample_hand(const HandTimeline& timeline, float t) {
   const auto& segs = timeline.segments;
   auto it = std::upper_bound(segs.begin(), segs.end(), t, [](float v, const HandSegment& s) { return v < s.end; });
-  if (it == segs.end()) return segs.back().to;
+  if (it == segs.end()) {
+    HandState last = segs.back().to;
+    last.body_weight = last.at_body ? 1.0f : 0.0f;
+    return last;
+  }
   const HandSegment& seg = *it;
   const float span = seg.end - seg.start;
   const float u = span > 0 ? std::clamp((t - seg.start) / span, 0.0f, 1.0f) : 1.0f;
   const float s = seg.linear_blend ? u : profile_progress(VelocityProfile::MinimumJerk, u);
   HandState out;
   out.active = seg.to.active || seg.from.active;
-  // At the body while it stays there; a hand on its way to the body gets there at the end.
-  out.at_body = seg.to.at_body && (seg.from.at_body || u >= 1.0f);
+  // At the body while it stays there; a hand on its way to (from) the body settles onto (off) it
+  // over the last (first) kSettleTime.
+  if (seg.from.at_body && seg.to.at_body) {
+    out.body_weight = 1.0f;
+  } else {
+    const float arriving = seg.to.at_body ? std::clamp(1.0f - (seg.end - t) / kSettleTime, 0.0f, 1.0f) : 0.0f;
+    const float leaving = seg.from.at_body ? std::clamp(1.0f - (t - seg.start) / kSettleTime, 0.0f, 1.0f) : 0.0f;
+    out.body_weight = std::max(arriving, leaving);
+  }
+  out.at_body = out.body_weight >= 0.5f;
   // `to.position` includes where the paths end; the blend carries the rest of the change.
   vec3 path_end(0.0f);
   for (const Movement& m : seg.paths) path_end += sample(m, m.duration).position;

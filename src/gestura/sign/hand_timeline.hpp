@@ -21,7 +21,15 @@ struct HandState {
   // keeps. A place out in the signing space is a region, and the hand may give way a little
   // there to take the notated turn.
   bool at_body = false;
+  // Sampled states only (sample_hand): how far the hand has settled onto the body, 0..1. It rises
+  // over the last kSettleTime of an approach to the body and falls over the first of a departure,
+  // so what the solver does differently at the body (the contact point kept in place, the turn
+  // weighed less) eases in and out instead of switching in one frame.
+  float body_weight = 0.0f;
 };
+
+// Seconds over which a hand arriving at (leaving) the body settles onto (off) it.
+constexpr float kSettleTime = 0.15f;
 
 // Oscillations performed on top of a segment.
 enum class Oscillation : std::uint8_t { None, Nod, Swing, Twist, FingerPlay };

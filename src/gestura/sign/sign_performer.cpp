@@ -59,8 +59,9 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
   for (int side = 0; side < 2; ++side) {
     key[side].assign(static_cast<std::size_t>(frames), 0);
     for (const HandSegment& seg : (side == 0 ? plan.right : plan.left).segments)
-      if (seg.to.active)
-        key[side][static_cast<std::size_t>(std::clamp(static_cast<int>(std::lround(seg.end * options.fps)), 0, frames - 1))] = 1;
+      if (seg.to.active)  // 2: a posture at the body, 1: out in space
+        key[side][static_cast<std::size_t>(std::clamp(static_cast<int>(std::lround(seg.end * options.fps)), 0, frames - 1))] =
+            seg.to.at_body ? 2 : 1;
   }
   HandState planned[2];
   quat planned_wrist[2];
@@ -100,15 +101,16 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
       const mat4& w = model[static_cast<std::size_t>(h.wrist)];
       // At the body, the hand's place is where it meets the body (its contact point); in space, the palm centre.
       float dp = glm::distance(vec3(w * vec4(h.palm_centre_local, 1.0f)), planned[side].position);
-      if (planned[side].at_body) {
+      const bool at_body = key[side][static_cast<std::size_t>(f)] == 2;
+      if (at_body) {
         hand_surface_points(rig, h.hand, model, points);
         std::size_t contact = 0;
         const vec3 planned_point = planned_contact(rig, h.hand, planned[side], model, points, contact);
         dp = glm::distance(planned_point, points[contact]);
       }
       const float da = glm::length(rotation_error(glm::normalize(glm::quat_cast(mat3(w))), planned_wrist[side]));
-      if (planned[side].at_body && dp > st.key_position_error) st.key_position_error = dp, st.key_position_time = t;
-      if (!planned[side].at_body && dp > st.key_space_position_error)
+      if (at_body && dp > st.key_position_error) st.key_position_error = dp, st.key_position_time = t;
+      if (!at_body && dp > st.key_space_position_error)
         st.key_space_position_error = dp, st.key_space_position_time = t;
       if (da > st.key_orientation_error) st.key_orientation_error = da, st.key_orientation_time = t;
     }

@@ -33,6 +33,8 @@ constexpr float kPassThrough = 0.02f;  // a planned hand this deep in the body w
 const vec3 kBaseHandOffset(-0.06f, -0.02f, -0.03f);  // a base hand waits this far in from the neutral space
 constexpr float kLongTurnWorthTrying = deg(100.0f);  // turns this large may go the long way round
 constexpr float kLongTurnMargin = 0.3f;   // radians of clamped turn the long way must save
+constexpr float kRiseForward = 0.2f;      // a hand rising from rest comes forward by this much of its rise…
+constexpr float kMaxRiseForward = 0.15f;  // …up to this (metres)
 constexpr float kDetourStep = 0.01f;       // detours around the body are searched in these steps
 constexpr float kMaxDetour = 0.30f;        // … up to this far out
 constexpr float kDetourTolerance = 0.002f;  // a path may pass this much nearer the body than its ends
@@ -257,7 +259,7 @@ class Planner {
   void stop_at_surface(int h, const HandState& from, HandState& to) {
     if (!from.active || !to.active) return;
     const auto pts = hand_points(h, to);
-    if (clearance(pts, from.position) < -kPassThrough) return;  // already in it: nothing to stop at
+    if (clearance(pts, from.position) < kBodyClearance) return;  // starts at the body: keep_out and the detour handle it
     auto at = [&](float t) { return glm::mix(from.position, to.position, t); };
     constexpr int kSamples = 8;
     for (int k = 1; k <= kSamples; ++k) {
@@ -280,6 +282,7 @@ class Planner {
   // normal at either end), that keeps the hand along the way as far off the body as it is at
   // either end. Checked at 11 instants with the hand's interpolated turn and shape.
   void detour_around_body(int h, HandSegment& seg) {
+    seg.detour = vec3(0.0f);
     if (!seg.from.active && !seg.to.active) return;
     if (seg.paths.empty() && seg.from.position == seg.to.position) return;  // a hold
     const std::array<vec3, 11> ends[2] = {hand_points(h, seg.from), hand_points(h, seg.to)};
@@ -297,7 +300,6 @@ class Planner {
     };
     std::array<Instant, kSamples - 1> path;
     detour_timeline_.segments.assign(1, seg);
-    detour_timeline_.segments[0].detour = vec3(0.0f);
     const float span = seg.end - seg.start;
     for (int k = 1; k < kSamples; ++k) {
       const float u = static_cast<float>(k) / kSamples;
@@ -356,11 +358,31 @@ class Planner {
     seg.long_turn = excess[1] + kLongTurnMargin < excess[0];
   }
 
+  // A hand rising from rest (or sinking back to it) travels in front of the body, as a signer's
+  // does, not straight up its side: the straight line from the hip to the face runs past the
+  // armpit, where the arm can only follow with the elbow thrown back.
+  static void come_up_in_front(HandSegment& seg) {
+    if (seg.from.active == seg.to.active) return;
+    const HandState& signing = seg.to.active ? seg.to : seg.from;
+    if (signing.position.z < 0.0f) return;  // a place behind the shoulders (the back) is reached round the side
+    const float rise = std::abs(seg.to.position.y - seg.from.position.y);
+    seg.detour.z = std::max(seg.detour.z, std::min(kRiseForward * rise, kMaxRiseForward));
+  }
+
   void add_segment(int h, HandSegment seg) {
     stop_at_surface(h, seg.from, seg.to);
     keep_out(h, seg.to);
+    // The way to turn is judged where the detour takes the arm; a hand turning the long way has
+    // its detour checked again with that turn (its fingers sweep elsewhere).
     detour_around_body(h, seg);
+    come_up_in_front(seg);
     choose_turn_way(h, seg);
+    if (seg.long_turn) {
+      const vec3 first = seg.detour;
+      detour_around_body(h, seg);
+      if (glm::length(seg.detour) < glm::length(first)) seg.detour = first;  // never less room than judged with
+      come_up_in_front(seg);
+    }
     const float duration = std::max(seg.end - seg.start, 1e-3f);
     seg.start = clock_[h];
     seg.end = clock_[h] + duration;
@@ -587,13 +609,16 @@ class Planner {
     return kNearGap;
   }
 
-  // A location an action moves the hand to. One on the other hand while that hand rests at the
-  // hip is not a place to go (the hand would dive to the hip): such notation names a part of the
+  // A location an action moves the hand to. One on the other hand or forearm while that hand
+  // rests at the hip is not a place to go (the hand would dive to the hip): such notation names a part of the
   // moving hand (a thumb tip that touches) that the sign's own place already fixes, so the hand
   // stays where it is.
   vec3 action_location(int h, const sign::Location& loc, const HandState& s, bool copy) {
     const sign::SiteRegion region = sign::site_region(loc.site);
-    const bool on_other_hand = loc.nondominant_hand || region == sign::SiteRegion::hand || region == sign::SiteRegion::finger;
+    const bool on_other_forearm =
+        loc.site == sign::Site::lower_arm || loc.site == sign::Site::wrist_back || loc.site == sign::Site::wrist_pulse;
+    const bool on_other_hand = loc.nondominant_hand || region == sign::SiteRegion::hand ||
+                               region == sign::SiteRegion::finger || on_other_forearm;
     if (on_other_hand && !state_[1 - h].active) return s.position;
     return location_position(h, loc, s, copy);
   }
