@@ -117,7 +117,7 @@ int run(const std::vector<std::string>& args) {
   }
   if (args[0] == "sites") {
     const Request r = parse(args, 1);
-    const gestura::Avatar a = gestura::build_avatar(r.params, r.options);
+    const gestura::Avatar a = build(r);
     const std::string json = gestura::body_sites_json(a.skeleton, gestura::find_body_sites(a.skeleton, a.mesh));
     if (r.output.empty()) {
       std::fputs(json.c_str(), stdout);

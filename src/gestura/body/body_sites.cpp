@@ -34,8 +34,12 @@ std::optional<RayHit> cast_ray(const Mesh& mesh, const vec3& origin, const vec3&
 
 namespace {
 
-constexpr float kBelowChin = 0.09f;        // metres: start of the under-chin ray, in front of the throat
-constexpr float kBehindChinFront = 0.03f;
+constexpr float kOutside = 0.5f;           // metres: rays cast from outside start this far out
+constexpr float kProfileStep = 0.002f;     // metres between the rays of the face's midline profile
+constexpr float kProfileDepth = 0.14f;     // how far below the lower lip the profile is followed
+constexpr float kChinEdge = 0.012f;        // a step back this large ends the chin (its underside)
+constexpr float kChinHeight = 0.02f;       // the chin's front is looked for at most this far above that edge
+constexpr float kUnderChinRay = 0.025f;    // the under-chin ray starts this far below the edge
 constexpr float kNormalSpread = 0.004f;    // metres between the rays a site's normal is averaged over
 
 struct Anchors {
@@ -63,7 +67,6 @@ struct SiteRay {
 
 void add_site(const Anchors& anchors, const Mesh& mesh, const SiteRay& ray, std::vector<BodySite>& out) {
   if (ray.joint < 0) return;
-  constexpr float kOutside = 0.5f;  // metres: well clear of the head
   const auto hit = ray.from_outside
                        ? cast_ray(mesh, ray.origin + kOutside * glm::normalize(ray.direction), -ray.direction)
                        : cast_ray(mesh, ray.origin, ray.direction);
@@ -83,6 +86,48 @@ void add_site(const Anchors& anchors, const Mesh& mesh, const SiteRay& ray, std:
   const mat4 inv = glm::inverse(anchors.model[static_cast<std::size_t>(ray.joint)]);
   out.push_back(BodySite{ray.name, ray.joint, vec3(inv * vec4(hit->point, 1.0f)),
                          glm::normalize(vec3(inv * vec4(glm::normalize(normal), 0.0f)))});
+}
+
+// The chin, the surface under it and the throat, from the face's midline profile: horizontal
+// rays from the front, kProfileStep apart, down from the lower lip. Where the profile steps back
+// by more than kChinEdge the jaw's underside begins; the chin's front is where the profile, followed
+// up from that edge, stops coming forward (at most kChinHeight up), under_chin is met by a ray straight up from in front of the throat
+// just below it, and the neck is the throat halfway from there down to the neck's base (vc7).
+// Fixed fractions of the head's height missed the chin's front on heads of other proportions
+// (a slanted ray slid under it onto the jaw line).
+void add_chin_and_neck(const Anchors& a, const Mesh& mesh, int skull, float lower_lip_y, std::vector<BodySite>& out) {
+  const float x = a.at(skull).x, back_z = a.at(skull).z;
+  struct ProfilePoint {
+    float y, z;
+  };
+  std::vector<ProfilePoint> profile;
+  for (float y = lower_lip_y - kProfileStep; y > lower_lip_y - kProfileDepth; y -= kProfileStep) {
+    const auto hit = cast_ray(mesh, vec3(x, y, back_z + kOutside), vec3(0, 0, -1));
+    if (hit) profile.push_back({y, hit->point.z});
+  }
+  std::size_t edge = 0;
+  for (std::size_t k = 1; k < profile.size() && edge == 0; ++k)
+    if (profile[k].z < profile[k - 1].z - kChinEdge) edge = k;
+  if (edge == 0) return;  // no chin to be found on this mesh: no chin sites rather than invented ones
+  // Up from the edge while the profile still comes forward: the chin's front, below the hollow
+  // under the lower lip (or kChinHeight up, on a face without one).
+  std::size_t front = edge - 1;
+  while (front > 0 && profile[front - 1].z >= profile[front].z && profile[front - 1].y <= profile[edge - 1].y + kChinHeight)
+    --front;
+  const ProfilePoint chin = profile[front];
+  add_site(a, mesh, {"chin", skull, vec3(x, chin.y, back_z), vec3(0, 0, 1), true}, out);
+  // Straight up from in front of the throat, between the chin's front and the neck below it.
+  const float ray_y = profile[edge].y - kUnderChinRay;
+  float throat_z = profile[edge].z;
+  for (const ProfilePoint& p : profile)
+    if (std::abs(p.y - ray_y) < kProfileStep) throat_z = std::max(throat_z, p.z);
+  const float ray_z = std::max(0.5f * (chin.z + profile[edge].z), throat_z + 0.005f);
+  if (ray_z < chin.z) add_site(a, mesh, {"under_chin", skull, vec3(x, ray_y, ray_z), vec3(0, 1, 0)}, out);
+  const int vc7 = a.find("vc7"), vc4 = a.find("vc4");
+  if (vc7 >= 0) {
+    const float neck_y = 0.5f * (profile[edge].y + a.at(vc7).y);
+    add_site(a, mesh, {"neck", vc4 >= 0 ? vc4 : vc7, vec3(x, neck_y, a.at(vc7).z), vec3(0, 0, 1)}, out);
+  }
 }
 
 }  // namespace
@@ -111,9 +156,6 @@ std::vector<BodySite> find_body_sites(const Skeleton& skeleton, const Mesh& mesh
     rays.push_back({"upper_lip", skull, level(-0.62f), fwd, true});
     rays.push_back({"lips", skull, level(-0.70f), fwd, true});
     rays.push_back({"lower_lip", skull, level(-0.78f), fwd, true});
-    // The chin is the front of the jaw's point, level with the bottom of the face; the surface
-    // under it (under_chin) is found once the chin is known, below.
-    rays.push_back({"chin", skull, level(-0.97f), fwd, true});
     for (int side = 0; side < 2; ++side) {
       const float x = side == 0 ? 1.0f : -1.0f;
       const std::string p = side == 0 ? "l_" : "r_";
@@ -125,10 +167,6 @@ std::vector<BodySite> find_body_sites(const Skeleton& skeleton, const Mesh& mesh
       rays.push_back({p + "temple", skull, level(0.25f), glm::normalize(vec3(x, 0, 0.6f))});
     }
   }
-  // Neck: the throat halfway up the neck (vc4 sits level with the jaw line, where a forward ray
-  // meets the underside of the jaw rather than the neck).
-  const int vc7 = a.find("vc7"), vc4 = a.find("vc4");
-  if (vc7 >= 0 && vc4 >= 0) rays.push_back({"neck", vc4, 0.5f * (a.at(vc7) + a.at(vc4)), fwd});
   // Trunk: forward rays from the spine.
   const char* trunk[][2] = {{"chest", "vt6"}, {"stomach", "vt12"}, {"belly", "vl3"}};
   for (auto& [site, joint] : trunk) {
@@ -171,12 +209,9 @@ std::vector<BodySite> find_body_sites(const Skeleton& skeleton, const Mesh& mesh
     }
   }
   for (const SiteRay& r : rays) add_site(a, mesh, r, sites);
-  // Under the chin: straight up from in front of the throat, a little behind the chin's front,
-  // onto the underside of the jaw.
-  if (const BodySite* chin = find_site(sites, "chin")) {
-    const vec3 front = vec3(a.model[static_cast<std::size_t>(chin->joint)] * vec4(chin->local_offset, 1.0f));
-    add_site(a, mesh, {"under_chin", chin->joint, front + vec3(0.0f, -kBelowChin, -kBehindChinFront), up}, sites);
-  }
+  if (skull >= 0)
+    if (const BodySite* lip = find_site(sites, "lower_lip"))
+      add_chin_and_neck(a, mesh, skull, site_position(*lip, a.model).y, sites);
   return sites;
 }
 
