@@ -223,6 +223,23 @@ TEST(HamnosysParser, HandPartAtLocation) {
   EXPECT_EQ(sign.main().actions[0].motion()->direction, Direction::out);
 }
 
+// DGS PROFESSION1A: after the arc, "…chin, (touch, thumb tip)" again names the part of the moving
+// hand that reaches the chin, as in the posture (read alone it was a place on the other hand).
+TEST(HamnosysParser, HandPartAfterAMovementsPlace) {
+  const HamSign sign = parse_hamnosys_names(
+      "hamfist,hamthumboutmod,hamextfingerul,hampalmdl,hamchin,hamlrat,hamseqbegin,hamtouch,hamthumb,hamfingertip,"
+      "hamseqend,hammovel,hamarcr,hamlrat,hamchin,hamseqbegin,hamtouch,hamthumb,hamfingertip,hamseqend");
+  const auto& actions = sign.main().actions;
+  ASSERT_EQ(actions.size(), 1u);  // no separate sequence left over
+  const Motion& m = *actions[0].motion();
+  ASSERT_TRUE(m.target);
+  EXPECT_EQ(m.target->site, Site::chin);
+  ASSERT_TRUE(m.target->hand_part);
+  EXPECT_EQ(m.target->hand_part->site, Site::fingers);
+  EXPECT_EQ(m.target->hand_part->finger_part, FingerPart::tip);
+  EXPECT_EQ(m.target_contact, Proximity::touch);
+}
+
 TEST(HamnosysParser, UnicodeAndNamesGiveTheSameSymbols) {
   const std::string names = "hamsymmpar,hamfist,hamextfingero,hampalmd,hamparbegin,hammoveo,hamplus,hamnomotion,hamparend";
   std::string text;

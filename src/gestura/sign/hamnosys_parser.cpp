@@ -1068,7 +1068,26 @@ class Parser {
     }
     segment.actions.assign(std::make_move_iterator(elements.begin() + static_cast<std::ptrdiff_t>(i)),
                            std::make_move_iterator(elements.end()));
+    attach_hand_parts(segment.actions);
     for (Element& e : segment.actions) locations_to_targets(e);
+  }
+
+  // In the actions too, "hamseqbegin [contact] location hamseqend" right after a location (or a
+  // movement to one) names the part of the hand that gets there, as in the posture; read alone it
+  // would be a place on the other hand ("…, hamchin, (touch, thumb tip)" sent the hand to the
+  // resting hand's thumb at the hip).
+  static void attach_hand_parts(std::vector<Element>& list) {
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      attach_hand_parts(list[k].children);
+      if (k + 1 >= list.size() || !is_hand_part_sequence(list[k + 1])) continue;
+      Location* at = std::get_if<Location>(&list[k].value);
+      Motion* motion = std::get_if<Motion>(&list[k].value);
+      if (!at && motion && motion->target) at = &*motion->target;
+      if (!at || at->hand_part) continue;
+      apply_hand_part(*at, list[k + 1]);
+      if (motion && at->proximity) motion->target_contact = at->proximity;
+      list.erase(list.begin() + static_cast<std::ptrdiff_t>(k + 1));
+    }
   }
 
   // In the action part a bare location means "move the hand there".

@@ -610,9 +610,10 @@ class Planner {
   }
 
   // A location an action moves the hand to. One on the other hand or forearm while that hand
-  // rests at the hip is not a place to go (the hand would dive to the hip): such notation names a part of the
-  // moving hand (a thumb tip that touches) that the sign's own place already fixes, so the hand
-  // stays where it is.
+  // rests at the hip is not a place to go (the hand would dive to the hip). The parser reads a
+  // hand part written after a place as the moving hand's; what is left (a finger named after a
+  // handshape replacement, "hamfist, hammiddlefinger, hambetween, hamringfinger") describes the
+  // moving hand too, so the hand stays where it is.
   vec3 action_location(int h, const sign::Location& loc, const HandState& s, bool copy) {
     const sign::SiteRegion region = sign::site_region(loc.site);
     const bool on_other_forearm =
