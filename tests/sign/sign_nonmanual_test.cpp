@@ -33,10 +33,13 @@ std::string sigml(const std::string& nonmanual) {
          "</sigml>\n";
 }
 
-SignSynthesis perform(const std::string& nonmanual) {
-  const std::vector<sign::SigmlSign> signs = sign::read_sigml(sigml(nonmanual), "test.sigml");
+// The first sign of a SiGML text, performed with its non-manual tiers.
+SignSynthesis perform_sigml(const std::string& xml) {
+  const std::vector<sign::SigmlSign> signs = sign::read_sigml(xml, "test.sigml");
   return synthesize_sign(signs.at(0).manual, signs.at(0).nonmanual, fx().rig);
 }
+
+SignSynthesis perform(const std::string& nonmanual) { return perform_sigml(sigml(nonmanual)); }
 
 int joint_index(const char* name) { return fx().avatar.skeleton.find(name); }
 
@@ -280,12 +283,13 @@ TEST(SignNonManual, IslSignsWithTiersArePerformedWithoutWarnings) {
 }
 
 TEST(SignNonManual, ALongSignSaysItsMouthPictureAtSpeakingPaceFromItsStart) {
-  const std::string path = gestura::test::shared_data() + "/sigml-isl/australia.sigml";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no shared data at " << path;
-  const sign::SigmlSign s = sign::read_sigml(sign::read_text_file(path), path).at(0);
-  ASSERT_EQ(s.nonmanual.size(), 1u);  // the mouth picture "O:stre_IljV"
-  const SignSynthesis r = synthesize_sign(s.manual, s.nonmanual, fx().rig);
-  ASSERT_GT(r.plan.sign_end - r.plan.sign_start, 2.0f);
+  // ISL AUSTRALIA's mouth picture "O:stre_IljV" on a long sign (a circle in front of the chest,
+  // repeated several times), so that the mouthing would be stretched if it followed the sign.
+  const SignSynthesis r = perform_sigml(
+      "<sigml><hns_sign gloss=\"long\"><hamnosys_nonmanual><hnm_mouthpicture picture=\"O:stre_IljV\"/>"
+      "</hamnosys_nonmanual><hamnosys_manual><hamflathand/><hamextfingeru/><hampalml/><hamchest/><hamcirclel/>"
+      "<hamrepeatfromstartseveral/></hamnosys_manual></hns_sign></sigml>");
+  ASSERT_GT(r.plan.sign_end - r.plan.sign_start, 3.0f);
   const int jaw = r.clip.find_channel(std::string(face::kJawOpen));
   ASSERT_GE(jaw, 0);
   const FloatTrack& open = r.clip.channels[static_cast<std::size_t>(jaw)];
@@ -303,8 +307,7 @@ TEST(SignNonManual, GesturalTierSequencesShareTheSign) {
 <sign_nonmanual><head_tier><head_movement movement="NF"/><head_movement movement="SL"/></head_tier></sign_nonmanual>
 <sign_manual><handconfig handshape="flat"/><handconfig extfidir="u" palmor="l"/><location_bodyarm location="chest"/>
 <directedmotion direction="o"/></sign_manual></hamgestural_sign></sigml>)";
-  const sign::SigmlSign s = sign::read_sigml(xml).at(0);
-  const SignSynthesis r = synthesize_sign(s.manual, s.nonmanual, fx().rig);
+  const SignSynthesis r = perform_sigml(xml);
   EXPECT_TRUE(r.warnings.empty());
   const float a = r.plan.sign_start, b = r.plan.sign_end;
   const vec3 first = angles_at(r.clip, "skullbase", a + 0.25f * (b - a));
@@ -321,8 +324,7 @@ TEST(SignNonManual, PenetrationIsMeasuredAfterTheBodyMoved) {
     const std::string xml = "<sigml><hns_sign gloss=\"c\"><hamnosys_nonmanual>" + nonmanual +
                             "</hamnosys_nonmanual><hamnosys_manual><hamfist/><hamextfingeru/><hampalml/><hamchin/>"
                             "<hamtouch/></hamnosys_manual></hns_sign></sigml>";
-    const sign::SigmlSign s = sign::read_sigml(xml).at(0);
-    return synthesize_sign(s.manual, s.nonmanual, fx().rig);
+    return perform_sigml(xml);
   };
   const SignSynthesis plain = chin(""), pushed = chin("<hnm_head tag=\"PF\"/>");
   EXPECT_GT(pushed.stats.max_penetration, plain.stats.max_penetration + 0.002f)
@@ -334,8 +336,7 @@ TEST(SignNonManual, GazeAtTheHandsLooksBetweenThemWhenBothAreUp) {
     const std::string xml = "<sigml><hns_sign gloss=\"t\"><hamnosys_nonmanual><hnm_eyegaze tag=\"" + gaze +
                             "\"/></hamnosys_nonmanual><hamnosys_manual><hamsymmlr/><hamflathand/><hamextfingeru/>"
                             "<hampalml/><hamchest/><hammoveo/></hamnosys_manual></hns_sign></sigml>";
-    const sign::SigmlSign s = sign::read_sigml(xml).at(0);
-    return synthesize_sign(s.manual, s.nonmanual, fx().rig);
+    return perform_sigml(xml);
   };
   const SignSynthesis hands = two_handed("HD"), dominant = two_handed("HI"), other = two_handed("HC");
   const float mid = 0.5f * (hands.plan.sign_start + hands.plan.sign_end);
