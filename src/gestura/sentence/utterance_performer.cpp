@@ -216,10 +216,7 @@ class HandPerformer {
     blend(m, p, u, scratch_posture_);
     for (std::size_t j = 0; j < n_; ++j) scratch_pose_.rotations[static_cast<std::size_t>(joints[j])] = scratch_posture_[j];
     local_to_model(rig.skeleton(), scratch_pose_, scratch_model_);
-    hand_surface_points(rig, hand_, scratch_model_, scratch_points_);
-    float deepest = -1.0f;
-    for (const vec3& x : scratch_points_) deepest = std::max(deepest, -body_signed_distance(rig, scratch_model_, x));
-    return deepest;
+    return hand_penetration(rig, hand_, scratch_model_, scratch_points_);
   }
 
   Hand hand_;

@@ -62,10 +62,7 @@ IkResult solve_within_limits(const Skeleton& s, const IkChain& arm, const mat4& 
 float hand_depth(const SigningRig& rig, const HandRig& h, float margin, const Pose& pose, std::vector<mat4>& model,
                  std::vector<vec3>& points) {
   local_to_model(rig.skeleton(), pose, model);
-  hand_surface_points(rig, h.hand, model, points);
-  float depth = 0.0f;
-  for (const vec3& p : points) depth = std::max(depth, margin - body_signed_distance(rig, model, p));
-  return depth;
+  return std::max(0.0f, margin + hand_penetration(rig, h.hand, model, points));
 }
 
 }  // namespace

@@ -24,6 +24,13 @@ void hand_surface_points(const SigningRig& rig, Hand hand, std::span<const mat4>
   for (int f = 0; f < 5; ++f) out.push_back(vec3(model[static_cast<std::size_t>(h.fingers[static_cast<std::size_t>(f)][1])][3]));
 }
 
+float hand_penetration(const SigningRig& rig, Hand hand, std::span<const mat4> model, std::vector<vec3>& points) {
+  hand_surface_points(rig, hand, model, points);
+  float deepest = -1e9f;
+  for (const vec3& p : points) deepest = std::max(deepest, -body_signed_distance(rig, model, p));
+  return deepest;
+}
+
 Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOptions& options, PerformanceStats* stats) {
   if (!(options.fps >= 1.0f && options.fps <= 240.0f)) throw Error("fps must be between 1 and 240");
   const Skeleton& s = rig.skeleton();
@@ -91,10 +98,8 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
     }
     clamp_to_limits(s, pose);
     local_to_model(s, pose, model);
-    for (const HandRig& h : rig.hands) {
-      hand_surface_points(rig, h.hand, model, points);
-      for (const vec3& p : points) st.max_penetration = std::max(st.max_penetration, -body_signed_distance(rig, model, p));
-    }
+    for (const HandRig& h : rig.hands)
+      st.max_penetration = std::max(st.max_penetration, hand_penetration(rig, h.hand, model, points));
     for (int side = 0; side < 2; ++side) {
       if (!key[side][static_cast<std::size_t>(f)] || !planned[side].active) continue;
       const HandRig& h = rig.hands[static_cast<std::size_t>(side)];

@@ -43,11 +43,8 @@ SignSynthesis synthesize_sign(const sign::HamSign& sign, std::span<const sign::N
   for (int f = 0; f < out.stats.frames; ++f) {
     sample_clip(out.clip, static_cast<float>(f) / perform_options.fps, WrapMode::Clamp, rig.rest, pose);
     local_to_model(s, pose, model);
-    for (const HandRig& h : rig.hands) {
-      hand_surface_points(rig, h.hand, model, points);
-      for (const vec3& p : points)
-        out.stats.max_penetration = std::max(out.stats.max_penetration, -body_signed_distance(rig, model, p));
-    }
+    for (const HandRig& h : rig.hands)
+      out.stats.max_penetration = std::max(out.stats.max_penetration, hand_penetration(rig, h.hand, model, points));
   }
   return out;
 }
