@@ -17,6 +17,7 @@
 #include "gestura/io/gltf_animation.hpp"
 #include "support/cli.hpp"
 #include "support/shared_data.hpp"
+#include "support/build_paths.hpp"
 
 namespace {
 
@@ -33,12 +34,12 @@ using test::run_command;
 
 // The Khronos validator via tools/validate-gltf.mjs; skips when node or the npm package is absent.
 bool validator_available() {
-  return std::filesystem::exists(std::string(GESTURA_SOURCE_DIR) + "/tools/node_modules/gltf-validator") &&
+  return std::filesystem::exists(gestura::test::source_dir() + "/tools/node_modules/gltf-validator") &&
          run_command("node --version").status == 0;
 }
 
 CliRun validate_file(const std::string& path) {
-  return run_command("node '" + std::string(GESTURA_SOURCE_DIR) + "/tools/validate-gltf.mjs' '" + path + "'");
+  return run_command("node '" + gestura::test::source_dir() + "/tools/validate-gltf.mjs' '" + path + "'");
 }
 
 void write_file(const std::string& path, const std::string& bytes) {

@@ -14,6 +14,7 @@
 #include "gestura/body/avatar.hpp"
 #include "gestura/core/error.hpp"
 #include "support/cli.hpp"
+#include "support/build_paths.hpp"
 
 using namespace gestura;
 namespace fs = std::filesystem;
@@ -97,7 +98,7 @@ TEST(GltfExport, KhronosValidatorReportsNoErrors) {
   if (test::run_command("node --version").status != 0) GTEST_SKIP() << "node is not installed";
   const fs::path file = temp_file("avatar_validate.glb");
   write_glb(file.string(), avatar().skeleton, avatar().mesh);
-  const std::string script = std::string(GESTURA_SOURCE_DIR) + "/tools/validate-gltf.mjs";
+  const std::string script = gestura::test::source_dir() + "/tools/validate-gltf.mjs";
   const test::CliRun r = test::run_command("node " + script + " " + file.string());
   fs::remove(file);
   EXPECT_EQ(r.status, 0) << r.output << "\n(run `cd tools && npm install` if gltf-validator is missing)";

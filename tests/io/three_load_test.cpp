@@ -12,6 +12,7 @@
 #include "gestura/core/math.hpp"
 #include "gestura/io/gltf_animation.hpp"
 #include "support/cli.hpp"
+#include "support/build_paths.hpp"
 
 using namespace gestura;
 namespace fs = std::filesystem;
@@ -21,7 +22,7 @@ namespace {
 using test::CliRun;
 using test::run_command;
 
-const std::string kTools = std::string(GESTURA_SOURCE_DIR) + "/tools";
+const std::string kTools = gestura::test::source_dir() + "/tools";
 
 bool three_available() {
   return run_command("node --version").status == 0 && fs::exists(kTools + "/node_modules/three/package.json");

@@ -14,6 +14,7 @@
 #include "gestura/io/gltf_animation.hpp"
 #include "gestura/io/vrm.hpp"
 #include "support/cli.hpp"
+#include "support/build_paths.hpp"
 
 namespace {
 
@@ -177,7 +178,7 @@ TEST(Vrm, MalformedVrmIsAnErrorNamingThePlace) {
 TEST(Vrm, TestFileIsValidGltf) {
   // The VRM written for these tests is itself checked by the Khronos validator (VRMC_vrm is an
   // extension it does not know: reported as info/warning, not as an error).
-  if (!std::filesystem::exists(std::string(GESTURA_SOURCE_DIR) + "/tools/node_modules/gltf-validator"))
+  if (!std::filesystem::exists(gestura::test::source_dir() + "/tools/node_modules/gltf-validator"))
     GTEST_SKIP() << "tools/node_modules/gltf-validator missing (cd tools && npm install)";
   const std::string path =
       (std::filesystem::temp_directory_path() / ("gestura_vrm_" + std::to_string(getpid()) + ".vrm")).string();
@@ -186,7 +187,7 @@ TEST(Vrm, TestFileIsValidGltf) {
     std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   }
   const gestura::test::CliRun r =
-      gestura::test::run_command("node '" + std::string(GESTURA_SOURCE_DIR) + "/tools/validate-gltf.mjs' '" + path + "'");
+      gestura::test::run_command("node '" + gestura::test::source_dir() + "/tools/validate-gltf.mjs' '" + path + "'");
   std::filesystem::remove(path);
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("\"numErrors\": 0"), std::string::npos) << r.output;

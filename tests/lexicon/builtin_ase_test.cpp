@@ -21,13 +21,14 @@
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/text/lexicon_inventory.hpp"
 #include "gestura/text/translator.hpp"
+#include "support/build_paths.hpp"
 
 using namespace gestura;
 using namespace gestura::sign;
 
 namespace {
 
-const std::string kAseFile = std::string(GESTURA_SOURCE_DIR) + "/data/lexicon/ase.jsonl";
+const std::string kAseFile = gestura::test::source_dir() + "/data/lexicon/ase.jsonl";
 
 std::vector<nlohmann::json> raw_lines() {
   std::ifstream in(kAseFile);

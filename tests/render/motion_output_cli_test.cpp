@@ -14,6 +14,7 @@ extern "C" {
 
 #include "support/cli.hpp"
 #include "support/png_file.hpp"
+#include "support/build_paths.hpp"
 
 
 namespace {
@@ -61,7 +62,7 @@ TEST(MotionOutputCli, ViewPerformsASignFromSymbolNames) {
 
   auto screenshot = [](const std::string& what, const std::string& name) {
     const fs::path shot = temp_file(name);
-    const CliRun r = run_command(std::string("timeout 120 xvfb-run -a ") + GESTURA_CLI + " view " + what +
+    const CliRun r = run_command(std::string("timeout 120 xvfb-run -a ") + gestura::test::cli_path() + " view " + what +
                                  " --size 320x240 --background '#808080' --frames 3 --screenshot " + shot.string());
     EXPECT_EQ(r.status, 0) << r.output;
     const int skin = skin_pixels_at_chest(shot.string());
@@ -87,7 +88,7 @@ TEST(MotionOutputCli, ViewSignsEnglishText) {
   const std::string row = timeline.output.substr(timeline.output.rfind('\n', line) + 1);
   const float start = std::stof(row), end = std::stof(row.substr(row.find("–") + std::string("–").size()));
   const fs::path shot = temp_file("text.png");
-  const CliRun r = run_command(std::string("timeout 120 xvfb-run -a ") + GESTURA_CLI + " view 'My name' --at " +
+  const CliRun r = run_command(std::string("timeout 120 xvfb-run -a ") + gestura::test::cli_path() + " view 'My name' --at " +
                                std::to_string(0.5f * (start + end)) +
                                " --size 320x240 --background '#808080' --frames 3 --screenshot " + shot.string());
   EXPECT_EQ(r.status, 0) << r.output;

@@ -9,6 +9,7 @@
 
 #include "support/cli.hpp"
 #include "support/png_file.hpp"
+#include "support/build_paths.hpp"
 
 
 namespace {
@@ -20,7 +21,7 @@ TEST(RenderViewer, ScreenshotUnderXvfbShowsTheFigure) {
   if (run_command("command -v xvfb-run").status != 0) GTEST_SKIP() << "xvfb-run not installed";
   const fs::path shot = fs::temp_directory_path() / ("gestura_view_" + std::to_string(::getpid()) + ".png");
   const gestura::test::CliRun view =
-      run_command(std::string("timeout 60 xvfb-run -a ") + GESTURA_CLI +
+      run_command(std::string("timeout 60 xvfb-run -a ") + gestura::test::cli_path() +
                   " view --rest --size 320x240 --background '#808080' --frames 10 --screenshot " + shot.string());
   ASSERT_EQ(view.status, 0) << view.output;
   const gestura::test::PngPixels image = gestura::test::read_png(shot.string(), 3);

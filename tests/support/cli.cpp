@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include "support/build_paths.hpp"
 
 namespace gestura::test {
 
@@ -18,7 +19,7 @@ CliRun run_command(const std::string& command) {
 }
 
 CliRun run_cli(const std::string& args, const std::string& env) {
-  return run_command(env + " '" + GESTURA_CLI + "' " + args);
+  return run_command(env + " '" + gestura::test::cli_path() + "' " + args);
 }
 
 }  // namespace gestura::test

@@ -4,11 +4,13 @@
 #include <cstdlib>
 #include <string>
 
+#include "support/build_paths.hpp"
+
 namespace gestura::test {
 
 inline std::string shared_data() {
   if (const char* env = std::getenv("GESTURA_SHARED_DATA"); env && *env) return env;
-  return GESTURA_SHARED_DATA;
+  return configured_shared_data();
 }
 
 }  // namespace gestura::test
