@@ -1,6 +1,7 @@
 #include "gestura/world/environment.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "gestura/core/error.hpp"
 
@@ -71,6 +72,21 @@ Environment build_environment(const SceneGeometry& geometry, std::span<const mat
     env.primitives.push_back(w);
   }
   env.bvh = Bvh(env.positions, env.indices);
+  env.max_climb = options.max_climb;
+  // Where each steep face starts to be in the way: the ground just outside it (below its lowest
+  // point, a little off the face along its normal) plus the climbable step height.
+  env.obstacle_floor.assign(env.triangle_count(), std::numeric_limits<float>::infinity());
+  for (std::uint32_t t = 0; t < env.triangle_count(); ++t) {
+    if (env.triangle_walkable[t]) continue;
+    const vec3 a = env.positions[env.indices[3 * t]], b = env.positions[env.indices[3 * t + 1]], c = env.positions[env.indices[3 * t + 2]];
+    const float lowest = std::min({a.y, b.y, c.y});
+    vec3 n = env.triangle_normal(t);
+    n.y = 0.0f;
+    const vec3 out = glm::length(n) > 1e-4f ? glm::normalize(n) * 0.02f : vec3(0.0f);
+    const vec3 probe = (a + b + c) / 3.0f + out;
+    const auto ground = ground_below(env, vec3(probe.x, lowest + 0.01f, probe.z), 1000.0f);
+    env.obstacle_floor[t] = (ground ? ground->height : lowest) + options.max_climb;
+  }
   return env;
 }
 

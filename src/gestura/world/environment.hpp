@@ -16,6 +16,7 @@ namespace gestura {
 
 struct EnvironmentOptions {
   float max_slope_degrees = 40.0f;  // steeper surfaces are not ground
+  float max_climb = 0.3f;           // a step this high is climbed, not walked around (stair risers, kerbs)
 };
 
 struct WorldPrimitive {
@@ -32,9 +33,14 @@ struct Environment {
   std::vector<std::uint32_t> indices;
   std::vector<std::uint16_t> triangle_object;  // top-level object per triangle
   std::vector<std::uint8_t> triangle_walkable; // 1 = ground
+  // Per triangle: the height above which it is in a standing character's way — the ground just
+  // outside the face plus max_climb (a stair riser never is; a wall is from knee height on);
+  // +inf for walkable triangles.
+  std::vector<float> obstacle_floor;
   std::vector<WorldPrimitive> primitives;
   Bvh bvh;
   float walkable_cos = 0.766f;
+  float max_climb = 0.3f;
 
   std::size_t triangle_count() const { return indices.size() / 3; }
   vec3 triangle_normal(std::uint32_t t) const;
