@@ -1,0 +1,126 @@
+#include "gestura/render/scene_cameras.hpp"
+
+#include <algorithm>
+
+#include "gestura/core/error.hpp"
+
+namespace gestura {
+namespace {
+
+Camera look(const vec3& eye, const vec3& target, float fov_degrees, float aspect) {
+  Camera c;
+  c.eye = eye;
+  c.target = target;
+  const vec3 up = std::abs(glm::normalize(target - eye).y) > 0.99f ? vec3(0, 0, -1) : vec3(0, 1, 0);
+  c.view = glm::lookAt(eye, target, up);
+  const float far = std::max(50.0f, glm::length(target - eye) * 4.0f);
+  c.projection = glm::perspective(deg(fov_degrees), aspect, 0.05f, far);
+  return c;
+}
+
+Camera ortho(const vec3& eye, const vec3& target, const vec3& up, float half_height, float aspect, float depth) {
+  Camera c;
+  c.eye = eye;
+  c.target = target;
+  c.orthographic = true;
+  c.view = glm::lookAt(eye, target, up);
+  c.projection = glm::ortho(-half_height * aspect, half_height * aspect, -half_height, half_height, 0.01f, depth);
+  return c;
+}
+
+Aabb usable(const Aabb& bounds, std::span<const CharacterView> characters) {
+  Aabb b = bounds;
+  for (const CharacterView& c : characters) b.grow(c.position), b.grow(c.head + vec3(0, 0.2f, 0));
+  if (b.empty()) b.grow(vec3(-2, 0, -2)), b.grow(vec3(2, 2, 2));
+  // Rooms are mostly floor: a camera framing the whole floor slab (walls included) sees them well.
+  return b;
+}
+
+// A perspective camera from direction `from` (unit, pointing from the target to the eye) that
+// sees the whole box.
+Camera framing(const Aabb& b, const vec3& from, float fov_degrees, float aspect) {
+  const vec3 centre = b.centre();
+  const float radius = glm::length(b.max - b.min) * 0.5f;
+  const float half = deg(fov_degrees) * 0.5f;
+  const float fit = std::min(half, std::atan(std::tan(half) * aspect));
+  const float distance = radius / std::sin(fit) * 0.92f;
+  return look(centre + from * distance, centre, fov_degrees, aspect);
+}
+
+}  // namespace
+
+std::vector<std::string> expand_scene_cameras(const std::vector<std::string>& names, const Scene& scene) {
+  std::vector<std::string> out;
+  for (const std::string& n : names) {
+    if (n == "alias") {
+      out.insert(out.end(), {"perspective", "perspective2", "plan", "section"});
+      continue;
+    }
+    const bool built_in = std::find(std::begin(kBuiltInSceneCameras), std::end(kBuiltInSceneCameras), n) != std::end(kBuiltInSceneCameras);
+    if (!built_in && !scene.find_camera(n) && !scene.find_character(n)) {
+      std::string known;
+      for (const SceneCamera& c : scene.cameras) known += " " + c.name;
+      for (const char* b : kBuiltInSceneCameras) known += std::string(" ") + b;
+      for (const SceneCharacter& c : scene.characters) known += " " + c.name;
+      throw Error("unknown camera '" + n + "' (this scene has:" + known + ")");
+    }
+    out.push_back(n);
+  }
+  if (out.empty()) throw Error("no camera");
+  if (out.size() > 9) throw Error("at most 9 cameras in a split view");
+  return out;
+}
+
+Camera scene_camera(const std::string& name, const Scene& scene, const Aabb& bounds, std::span<const CharacterView> characters,
+                    float aspect) {
+  if (const SceneCamera* c = scene.find_camera(name)) {
+    vec3 target = c->target;
+    if (!c->look_at.empty())
+      for (const CharacterView& v : characters)
+        if (v.name == c->look_at) target = v.head - vec3(0, 0.25f, 0);
+    if (c->orthographic) {
+      const vec3 d = glm::normalize(target - c->position);
+      const vec3 up = std::abs(d.y) > 0.99f ? vec3(0, 0, -1) : vec3(0, 1, 0);
+      return ortho(c->position, target, up, c->view_height * 0.5f, aspect, glm::length(target - c->position) * 3.0f + 50.0f);
+    }
+    return look(c->position, target, c->fov, aspect);
+  }
+  for (const CharacterView& v : characters)
+    if (v.name == name) {
+      const vec3 forward(std::sin(v.facing), 0.0f, std::cos(v.facing));
+      const vec3 right(-forward.z, 0.0f, forward.x);
+      const vec3 eye = v.head - forward * 1.6f + right * 0.45f + vec3(0, 0.25f, 0);
+      return look(eye, v.head + forward * 2.0f - vec3(0, 0.35f, 0), 50.0f, aspect);
+    }
+  const Aabb b = usable(bounds, characters);
+  const vec3 centre = b.centre(), size = b.max - b.min;
+  if (name == "plan") {
+    const float half = std::max(size.z * 0.5f, size.x * 0.5f / aspect) * 1.05f;
+    return ortho(vec3(centre.x, b.max.y + 5.0f, centre.z), centre, vec3(0, 0, -1), half, aspect, size.y + 20.0f);
+  }
+  if (name == "section") {
+    const float half = std::max(size.y * 0.5f, size.x * 0.5f / aspect) * 1.08f;
+    return ortho(vec3(centre.x, centre.y, b.max.z + 5.0f), centre, vec3(0, 1, 0), half, aspect, size.z + 20.0f);
+  }
+  if (name == "perspective") return framing(b, glm::normalize(vec3(0.55f, 0.75f, 0.9f)), 45.0f, aspect);
+  if (name == "perspective2") return framing(b, glm::normalize(vec3(-0.8f, 0.85f, -0.6f)), 45.0f, aspect);
+  // "characters": frame every character's body, from the south-east and a little above.
+  Aabb people;
+  for (const CharacterView& v : characters) people.grow(v.position - vec3(0.4f, 0, 0.4f)), people.grow(v.head + vec3(0.4f, 0.3f, 0.4f));
+  if (people.empty()) people = b;
+  return framing(people, glm::normalize(vec3(0.35f, 0.3f, 1.0f)), 40.0f, aspect);
+}
+
+std::vector<View> scene_views(const std::vector<std::string>& names, const Scene& scene, const Aabb& bounds,
+                              std::span<const CharacterView> characters, int width, int height) {
+  const std::vector<std::string> expanded = expand_scene_cameras(names, scene);
+  const std::vector<Viewport> panes = split_viewports(static_cast<int>(expanded.size()), width, height);
+  std::vector<View> views;
+  for (std::size_t i = 0; i < panes.size(); ++i) {
+    const float aspect = static_cast<float>(panes[i].width) / static_cast<float>(std::max(1, panes[i].height));
+    views.push_back({scene_camera(expanded[i], scene, bounds, characters, aspect), panes[i]});
+  }
+  return views;
+}
+
+}  // namespace gestura
