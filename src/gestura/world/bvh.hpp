@@ -31,7 +31,7 @@ struct BvhNode {
   std::uint32_t count = 0;   // leaf: triangle count; 0 = inner node (children first, first + 1)
 };
 
-struct RayHit {
+struct BvhHit {
   float distance = 0.0f;
   std::uint32_t triangle = 0;
   vec3 point{0.0f};
@@ -54,8 +54,8 @@ class Bvh {
   // The nearest hit with distance in (0, max_distance] along the unit `direction`. Triangles for
   // which `accept(t)` is false are passed through (e.g. the actor's own door, non-obstacles).
   template <class Accept>
-  bool raycast(const vec3& origin, const vec3& direction, float max_distance, RayHit& hit, Accept&& accept) const;
-  bool raycast(const vec3& origin, const vec3& direction, float max_distance, RayHit& hit) const {
+  bool raycast(const vec3& origin, const vec3& direction, float max_distance, BvhHit& hit, Accept&& accept) const;
+  bool raycast(const vec3& origin, const vec3& direction, float max_distance, BvhHit& hit) const {
     return raycast(origin, direction, max_distance, hit, [](std::uint32_t) { return true; });
   }
 
@@ -87,7 +87,7 @@ inline float ray_box(const vec3& origin, const vec3& inv_direction, const Aabb& 
 }
 
 template <class Accept>
-bool Bvh::raycast(const vec3& origin, const vec3& direction, float max_distance, RayHit& hit, Accept&& accept) const {
+bool Bvh::raycast(const vec3& origin, const vec3& direction, float max_distance, BvhHit& hit, Accept&& accept) const {
   if (nodes_.empty()) return false;
   const vec3 inv(1.0f / direction.x, 1.0f / direction.y, 1.0f / direction.z);
   float best = max_distance;

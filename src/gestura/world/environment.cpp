@@ -91,7 +91,7 @@ Environment build_environment(const SceneGeometry& geometry, std::span<const mat
 }
 
 std::optional<GroundHit> ground_below(const Environment& env, const vec3& from, float max_drop) {
-  RayHit hit;
+  BvhHit hit;
   const bool found = env.bvh.raycast(from, vec3(0, -1, 0), max_drop, hit, [&](std::uint32_t t) {
     return env.triangle_normal(t).y > 0.2f;  // an upward-facing surface: floors, treads, ramps, table tops
   });
@@ -103,7 +103,7 @@ bool line_of_sight(const Environment& env, const vec3& a, const vec3& b, int ign
   const vec3 d = b - a;
   const float len = glm::length(d);
   if (len < 1e-6f) return true;
-  RayHit hit;
+  BvhHit hit;
   return !env.bvh.raycast(a, d / len, len * (1.0f - 1e-4f), hit,
                           [&](std::uint32_t t) { return static_cast<int>(env.triangle_object[t]) != ignore; });
 }

@@ -17,7 +17,8 @@ vec3 standing_plant(const WalkRig& rig, int foot, const vec3& root, float yaw) {
 
 // Puts a plant on the ground: its height from the surface below and, where heel and toes would
 // stand on different levels (a tread's edge), slid along the foot onto one level.
-void settle(Footstep& s, const WalkRig& rig, const Environment* env, float floor_hint) {
+void settle(Footstep& s, const WalkRig& rig, const Environment* env, float floor_hint, float other_foot = NAN,
+            float max_rise = 1e30f) {
   if (!env) {
     s.position.y = floor_hint;
     return;
@@ -28,16 +29,25 @@ void settle(Footstep& s, const WalkRig& rig, const Environment* env, float floor
     const auto g = ground_below(*env, vec3(p.x, floor_hint + 0.6f, p.z), 1.6f);
     return g ? std::optional<GroundHit>(*g) : std::nullopt;
   };
-  auto heights = [&](const vec3& origin, float& heel, float& ball, float& toe) {
+  // Heel, ball and toes on one level, and nothing rising just beyond the toes or behind the heel
+  // (a riser the foot would stand against).
+  float heel = 0, ball = 0, toe = 0, ahead = 0, behind = 0;
+  auto heights = [&](const vec3& origin, float& h_heel, float& h_ball, float& h_toe) {
     const auto h = ground(origin + r * leg.heel), b = ground(origin + r * leg.ball), t = ground(origin + r * leg.toe);
-    heel = h ? h->height : floor_hint, ball = b ? b->height : floor_hint, toe = t ? t->height : floor_hint;
+    const auto a = ground(origin + r * (leg.toe + vec3(0, 0, 0.04f))), c = ground(origin + r * (leg.heel - vec3(0, 0, 0.03f)));
+    h_heel = h ? h->height : floor_hint, h_ball = b ? b->height : floor_hint, h_toe = t ? t->height : floor_hint;
+    ahead = a ? a->height : floor_hint, behind = c ? c->height : floor_hint;
   };
-  float heel = 0, ball = 0, toe = 0;
   heights(s.position, heel, ball, toe);
-  auto level = [&]() { return std::max({heel, ball, toe}) - std::min({heel, ball, toe}) < 0.01f; };
+  // …and no higher or lower than a step from where the other foot stands (one tread at a time).
+  auto level = [&]() {
+    const float top = std::max({heel, ball, toe});
+    const bool rise_ok = std::isnan(other_foot) || std::abs(top - other_foot) <= max_rise;
+    return top - std::min({heel, ball, toe}) < 0.01f && ahead < top + 0.01f && behind < top + 0.01f && rise_ok;
+  };
   if (!level()) {
     const vec3 forward = r * vec3(0, 0, 1);
-    for (int k = 1; k <= 16; ++k) {
+    for (int k = 1; k <= 24; ++k) {
       bool found = false;
       for (float sign : {1.0f, -1.0f}) {
         const vec3 moved = s.position + forward * (sign * 0.01f * static_cast<float>(k));
@@ -83,6 +93,7 @@ float step_length_for(const GaitParams& p, float body_height, float speed) {
 
 FootstepPlan plan_footsteps(const RootTrajectory& body, const WalkRig& rig, const GaitParams& p, const Environment* env) {
   FootstepPlan plan;
+  const float env_climb = env ? env->max_climb * 0.75f : 1e30f;  // a step climbs about one riser
   const float end = body.duration();
   const float dt = body.dt;
   auto cadence = [&](float t) {
@@ -110,7 +121,7 @@ FootstepPlan plan_footsteps(const RootTrajectory& body, const WalkRig& rig, cons
     return s;
   };
   auto push = [&](Footstep s, float hint) {
-    settle(s, rig, env, hint);
+    settle(s, rig, env, hint, current[1 - s.foot].position.y, 1.15f * env_climb);
     plan.steps.push_back(s);
     current[s.foot] = s;
   };
@@ -144,7 +155,12 @@ FootstepPlan plan_footsteps(const RootTrajectory& body, const WalkRig& rig, cons
       float h = last, u = 0.0f;
       while (u < 1.0f && h < end + 5.0f) u += cadence(h) * dt, h += dt;
       if (h >= b) break;
-      Footstep s = ideal(foot, std::min(h + 0.5f / cadence(h), b));
+      // Mid-stance: the middle of the foot's stance, which lasts a step and its double support.
+      Footstep s = ideal(foot, std::min(h + 0.5f * (1.0f + p.double_support) / cadence(h), b));
+      // Turning while walking: the foot points ahead into the turn, but not further than the
+      // hips can twist from the way the body faces as it lands.
+      const float facing = body.yaw_at(h) + rig.legs[static_cast<std::size_t>(foot)].side * p.toe_out;
+      s.yaw = facing + std::clamp(angle_difference(s.yaw, facing), -p.max_foot_turn, p.max_foot_turn);
       s.lift = first ? a : last + p.double_support * (h - last);
       s.land = h;
       push(s, body.position_at(std::min(h, b)).y);

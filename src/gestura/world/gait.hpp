@@ -32,12 +32,13 @@ struct GaitParams {
   float reference_speed = 1.3f;
   float min_cadence = 1.5f;            // steps per second whenever the body moves or turns
   float max_cadence = 2.6f;
-  float turn_per_step = deg(40.0f);    // stepping round on the spot
+  float turn_per_step = deg(30.0f);    // stepping round on the spot
+  float max_foot_turn = deg(30.0f);    // a landing foot points at most this far from the body's heading
   float double_support = 0.2f;         // of a step period: both feet down after each heel strike
   // Stance segment boundaries as fractions of the stance (heel strike ends at foot flat, …).
   float foot_flat_at = 0.12f, mid_stance_at = 0.3f, heel_off_at = 0.55f, toe_off_at = 0.82f;
   float heel_strike_angle = deg(14.0f);   // toes up at heel strike
-  float toe_off_angle = deg(32.0f);       // heel up at toe off
+  float toe_off_angle = deg(48.0f);       // heel up at toe off
   float swing_clearance = 0.045f;          // the foot's lowest point above the ground mid-swing
   float toe_out = deg(5.0f);
   // Pelvis and upper body, at the reference speed (scaled with speed).

@@ -33,8 +33,12 @@ std::vector<float> profile_of(const PathTrack& t, const LocomotionParams& p) {
   const auto n = static_cast<std::size_t>(std::ceil(total / kProfileStep)) + 1;
   std::vector<float> v(n, p.speed);
   for (std::size_t i = 0; i < n; ++i) {
-    const float k = t.curvature_at(static_cast<float>(i) * kProfileStep);
+    const float at = static_cast<float>(i) * kProfileStep;
+    const float k = t.curvature_at(at);
     if (k > 1e-4f) v[i] = std::min(v[i], std::sqrt(p.lateral_acceleration / k));
+    // Stairs and ramps: slower, by the rise over the half metre around.
+    const float rise = std::abs(t.ground_at(at + 0.25f) - t.ground_at(at - 0.25f)) / 0.5f;
+    v[i] = std::min(v[i], p.speed / (1.0f + p.climb_slowing * rise));
   }
   v.back() = 0.0f;
   for (std::size_t i = n - 1; i-- > 0;)  // arriving: v² ≤ v_next² + 2·a·ds
@@ -80,6 +84,14 @@ float PathTrack::curvature_at(float s) const {
   return span > 1e-4f ? turn / span : 0.0f;
 }
 
+float PathTrack::ground_at(float s) const {
+  if (ground.empty()) return point_at(s).y;
+  const float x = std::clamp(s, 0.0f, total()) / 0.1f;
+  const auto i = static_cast<std::size_t>(x);
+  if (i + 1 >= ground.size()) return ground.back();
+  return glm::mix(ground[i], ground[i + 1], x - static_cast<float>(i));
+}
+
 float PathTrack::clearance_at(float s) const {
   if (clearances.empty()) return 0.0f;
   const std::size_t i = segment_of(*this, std::clamp(s, 0.0f, total()));
@@ -97,6 +109,16 @@ PathTrack make_track(std::span<const vec3> points, const Environment* env, float
   for (std::size_t i = 1; i < t.points.size(); ++i)
     t.lengths[i] = t.lengths[i - 1] + glm::length(vec2(t.points[i].x - t.points[i - 1].x, t.points[i].z - t.points[i - 1].z));
   t.clearances.assign(t.points.size(), 0.0f);
+  if (env) {
+    // The floor along the track, found below it (a straight path up stairs runs above the treads).
+    for (float s = 0.0f;; s += 0.1f) {
+      const vec3 p = t.point_at(s);
+      const float previous = t.ground.empty() ? p.y : t.ground.back();
+      const auto g = ground_below(*env, vec3(p.x, std::max(p.y, previous) + env->max_climb + 0.1f, p.z), 2.0f * env->max_climb + 0.5f);
+      t.ground.push_back(g ? g->height : p.y);
+      if (s >= t.total()) break;
+    }
+  }
   if (env)
     for (std::size_t i = 0; i < t.points.size(); ++i) {
       // The room beside the path: measured at the segments' midpoints too, so a wall along a long
@@ -190,6 +212,7 @@ void step_locomotor(Locomotor& w, const LocomotionParams& p, float dt, float spe
   const vec3 t = w.track.tangent_at(w.progress);
   const vec3 previous = w.position;
   w.position = w.track.point_at(w.progress) + left_of(t) * w.offset;
+  w.position.y = w.track.ground_at(w.progress);
   vec3 moved = w.position - previous;
   moved.y = 0.0f;
   const float heading_goal = glm::length(moved) > 1e-4f ? yaw_of(moved) : yaw_of(t);

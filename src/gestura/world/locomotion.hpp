@@ -18,7 +18,8 @@ struct LocomotionParams {
   float acceleration = 1.2f;        // m/s² starting
   float deceleration = 1.1f;        // m/s² stopping
   float lateral_acceleration = 1.0f;  // m/s² in bends: speed ≤ √(a·R)
-  float turn_rate = deg(200.0f);    // rad/s of the body while walking
+  float climb_slowing = 2.5f;       // up or down stairs and ramps: speed ≤ cruise / (1 + this · rise per metre)
+  float turn_rate = deg(140.0f);    // rad/s of the body while walking
   float turn_in_place_rate = deg(110.0f);
   float turn_in_place_above = deg(50.0f);  // a first leg further round than this: turn before walking
 };
@@ -28,6 +29,7 @@ struct PathTrack {
   std::vector<vec3> points;
   std::vector<float> lengths;        // cumulative horizontal arc length at each point
   std::vector<float> clearances;     // free room beside each point (metres beyond the radius; ≥ 0)
+  std::vector<float> ground;         // the floor's height every 10 cm along the track (empty: the points' heights)
 
   float total() const { return lengths.empty() ? 0.0f : lengths.back(); }
   vec3 point_at(float s) const;
@@ -35,6 +37,7 @@ struct PathTrack {
   // Speed limit from the bend around s (circumscribed arcs: the turn of the segments near s).
   float curvature_at(float s) const;
   float clearance_at(float s) const;
+  float ground_at(float s) const;    // the floor under the track at s (stairs' treads, not the straight line)
 };
 
 // Contract: at least two points. `env` (optional) fills the clearances beside the path.

@@ -104,9 +104,11 @@ float swing_lift(const LegRig& leg, const FootPose& from, const FootPose& to, co
     const mat4 m = swing_base(leg, from, to, a, b, tj, p);
     vec3 heel, toe;
     foot_points(leg, m, heel, toe);
+    const vec3 ball = vec3(m * vec4(leg.ball, 1.0f)), toe_front = vec3(m * vec4(leg.toe + vec3(0, 0, 0.02f), 1.0f));
     const float ramp = std::min({1.0f, tj / 0.15f, (1.0f - tj) / 0.15f});
     float need = 0.0f;
-    for (const vec3& q : {heel, toe}) need = std::max(need, ground_at(env, q, std::min(a.position.y, b.position.y)) + p.swing_clearance * ramp - q.y);
+    for (const vec3& q : {heel, (heel + ball) * 0.5f, ball, toe, toe_front})
+      need = std::max(need, ground_at(env, q, std::min(a.position.y, b.position.y)) + p.swing_clearance * ramp - q.y);
     // Parabolic envelope: requirements spread smoothly to neighbouring times.
     const float d = (tau - tj) * 2.5f;
     lift = std::max(lift, need - d * d * 0.5f);
@@ -336,24 +338,41 @@ WalkMotion synthesize_walk(const WalkRig& rig, const RootTrajectory& body, const
         set_euler(s, pose, rig.fingers[k][n], finger_flexion[k][n] * p.finger_curl);
     }
     // Legs: two-bone IK to the ankle, the knee toward the foot's direction; then the foot's turn.
+    // A foot whose shin leans further than the ankle can bend rolls onto its ball instead (what
+    // lifts the heel in walking): the pitch about the ball grows by what the ankle lacks. The same
+    // rule holds in the swing, so the foot does not jump when it leaves the ground.
     local_to_model(s, pose, model);
     for (int k = 0; k < 2; ++k) {
       const LegRig& leg = rig.legs[static_cast<std::size_t>(k)];
-      const mat4& frame = x.feet[k].frame;
-      const vec3 ankle = ankle_of(leg, frame);
-      const vec3 forward = glm::normalize(vec3(frame[2]));
-      const vec3 hip = vec3(model[static_cast<std::size_t>(leg.hip)][3]);
-      const vec3 pole = (hip + ankle) * 0.5f + forward * 0.8f;
-      solve_limb(s, pose, leg.hip, leg.knee, leg.ankle, vec3(1, 0, 0), ankle, pole);
-      // The foot's world rotation from the shin's: ankle (x), subtalar (z), midtarsal (y).
-      const mat4 knee_model = parent_model_matrix(s, pose, leg.ankle);
-      const quat knee_rot = glm::quat_cast(mat3(knee_model));
-      const quat need = glm::inverse(knee_rot) * glm::quat_cast(mat3(frame));
-      const vec3 e = quat_to_euler(glm::normalize(need), RotationOrder::XZY);
+      mat4 frame = x.feet[k].frame;
+      float toe = x.feet[k].toe;
+      // Rolling further goes over the heel while the foot comes down onto it (late swing, heel
+      // strike), over the ball otherwise — never about a point that is standing on the ground.
+      const FootState state = foot_state(out.steps, k, x.t, p);
+      const bool on_heel = state.swinging ? state.swing_fraction > 0.5f
+                                          : state.phase == GaitPhase::HeelStrike && std::isfinite(state.stance_start);
+      const float lowest = s.dofs[static_cast<std::size_t>(leg.ankle)].min_angle.x + deg(1.0f);
+      vec3 e(0.0f);
+      for (int pass = 0; pass < 3; ++pass) {
+        const vec3 ankle = ankle_of(leg, frame);
+        const vec3 forward = glm::normalize(vec3(frame[2]));
+        const vec3 hip = vec3(model[static_cast<std::size_t>(leg.hip)][3]);
+        const vec3 pole = (hip + ankle) * 0.5f + forward * 0.8f;
+        solve_limb(s, pose, leg.hip, leg.knee, leg.ankle, vec3(1, 0, 0), ankle, pole);
+        // The foot's world rotation from the shin's: ankle (x), subtalar (z), midtarsal (y).
+        const mat4 knee_model = parent_model_matrix(s, pose, leg.ankle);
+        const quat knee_rot = glm::quat_cast(mat3(knee_model));
+        const quat need = glm::inverse(knee_rot) * glm::quat_cast(mat3(frame));
+        e = quat_to_euler(glm::normalize(need), RotationOrder::XZY);
+        if (e.x >= lowest) break;
+        const float more = lowest - e.x + deg(0.5f);
+        frame = frame * pitch_about(on_heel ? leg.heel : leg.ball, more);
+        if (!on_heel) toe -= more;
+      }
       set_euler(s, pose, leg.ankle, vec3(e.x, 0.0f, 0.0f));
       set_euler(s, pose, leg.subtalar, vec3(0.0f, 0.0f, e.z));
       set_euler(s, pose, leg.midtarsal, vec3(0.0f, e.y, 0.0f));
-      set_euler(s, pose, leg.metatarsal, vec3(x.feet[k].toe, 0.0f, 0.0f));
+      set_euler(s, pose, leg.metatarsal, vec3(toe, 0.0f, 0.0f));
     }
     const float t = static_cast<float>(i) / fps;
     for (int j : animated) out.clip.rotations[static_cast<std::size_t>(j)].add(t, pose.rotations[static_cast<std::size_t>(j)]);
