@@ -90,7 +90,7 @@ TEST(Grasp, PowerGraspRoundALyingRail) {
   expect_touching(c, {1, 2, 3}, "rail");
 }
 
-TEST(Grasp, SphericalGraspOfABallAndPinchOfAMarble) {
+TEST(Grasp, SphericalGraspOfABallAndPrecisionGraspOfAMarble) {
   const Table t;
   const Checked ball = grasp_object(t, "ball", Hand::Right);
   EXPECT_EQ(ball.grasp.type, GraspType::Spherical);

@@ -374,7 +374,7 @@ FingerClosure close_fingers(const SigningRig& rig, const GraspPlan& grasp, Pose&
   const auto vertices = finger_vertices(rig, grasp.hand);
   SkinScratch model(rig);
   std::array<float, 5> curl{};
-  // A pinch closes thumb and index on the object and tucks the others; a flat hand only lays its
+  // A precision grasp closes index and middle on the object and tucks the others; a flat hand only lays its
   // fingers on the surface.
   std::array<bool, 5> closes{true, true, true, true, true};
   float most = 1.0f;

@@ -91,7 +91,7 @@ struct GraspResult {
 GraspResult perform_grasp(const SigningRig& rig, GraspPlan& grasp, Pose& pose);
 
 // Writes the finger joints of `hand` for curls (the grasp's preshape: thumb opposed for power,
-// spherical and pinch grasps).
+// spherical and precision grasps).
 void set_finger_curls(const SigningRig& rig, Hand hand, GraspType type, const std::array<float, 5>& curl, Pose& pose);
 
 // Signed distance of each finger's skin to the grasped object (min over its vertices), for checks.
