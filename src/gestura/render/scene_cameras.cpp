@@ -102,8 +102,14 @@ Camera scene_camera(const std::string& name, const Scene& scene, const Aabb& bou
     const float half = std::max(size.y * 0.5f, size.x * 0.5f / aspect) * 1.08f;
     return ortho(vec3(centre.x, centre.y, b.max.z + 5.0f), centre, vec3(0, 1, 0), half, aspect, size.z + 20.0f);
   }
-  if (name == "perspective") return framing(b, glm::normalize(vec3(0.55f, 0.75f, 0.9f)), 45.0f, aspect);
-  if (name == "perspective2") return framing(b, glm::normalize(vec3(-0.8f, 0.85f, -0.6f)), 45.0f, aspect);
+  // The perspective views stand in high corners of the scene's box looking down across it, so a
+  // walled room is seen from inside (its walls would hide it from outside).
+  if (name == "perspective" || name == "perspective2") {
+    const vec3 corner = name == "perspective" ? vec3(0.05f, 0.9f, 0.95f) : vec3(0.95f, 0.9f, 0.05f);
+    const vec3 eye = b.min + (b.max - b.min) * corner;
+    const vec3 target = vec3(centre.x, b.min.y + std::min(0.8f, size.y * 0.3f), centre.z);
+    return look(eye, target, 62.0f, aspect);
+  }
   // "characters": frame every character's body, from the south-east and a little above.
   Aabb people;
   for (const CharacterView& v : characters) people.grow(v.position - vec3(0.4f, 0, 0.4f)), people.grow(v.head + vec3(0.4f, 0.3f, 0.4f));

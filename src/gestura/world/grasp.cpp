@@ -169,9 +169,12 @@ std::optional<GraspPlan> choose_object_grasp(const Environment& env, int object,
   float best_d = 1e30f;
   for (const WorldPrimitive& w : env.primitives) {
     if (w.object != object) continue;
-    // Prefer what a hand can close round: a small part beats a big one at the same distance.
-    const vec3 dims = axis_scale(w.to_world) * (w.shape.kind == ShapeKind::Box ? w.shape.size : vec3(2.0f * w.shape.radius));
-    const float size = std::min({dims.x, dims.y, dims.z});
+    // Prefer what a hand can close round (a handle, a bottle: its two smaller sides small) over a
+    // big part at the same distance (a door's panel, thin as it is).
+    vec3 dims = axis_scale(w.to_world) * (w.shape.kind == ShapeKind::Box ? w.shape.size : vec3(2.0f * w.shape.radius));
+    if (w.shape.kind == ShapeKind::Cylinder) dims.y = 0.0f;  // its length does not count
+    std::sort(&dims.x, &dims.x + 3);
+    const float size = w.shape.kind == ShapeKind::Cylinder ? dims.z : dims.y;
     const float d = object_distance(w, from) + (size <= 0.09f ? -0.3f : 0.0f);
     if (d < best_d) best_d = d, best = &w;
   }

@@ -29,6 +29,7 @@ struct DoorMotion {
 struct LogEntry {
   float time = 0.0f;
   std::string text;
+  bool warning = false;  // an action that could not be done (no path, …), with its place in the script
 };
 
 struct ScenePerformance {
