@@ -17,11 +17,14 @@
 #include "gestura/render/renderer.hpp"
 #include "gestura/render/viewer_controls.hpp"
 #include "render_subject.hpp"
+#include "scene_view.hpp"
 
 namespace gestura::cli {
 namespace {
 
 constexpr const char* kUsage = R"(usage: gestura view [CLIP.bvh | --rest | --test-motion | SIGN | "TEXT"] [options]
+       gestura view --scene SCENE.json [--script FILE | --do TEXT] [--camera NAME] (performs a scene, as
+       gestura scene does, and plays it; c cycles the cameras)
        SIGN: --hamnosys TEXT | --names SYMBOLS | --sigml FILE [--gloss NAME]
        TEXT: English to translate and sign, as gestura say does (anything not naming a file)
 
@@ -103,6 +106,7 @@ bool names_motion_file(const std::string& arg) {
 }
 
 int run(const std::vector<std::string>& args) {
+  if (std::find(args.begin(), args.end(), "--scene") != args.end()) return run_scene_view(args);
   Motion motion = Motion::Rest;
   AvatarParams avatar;
   SignSource sign;

@@ -11,6 +11,8 @@ vec3 head_of(const ActorView& a) { return eye_point(a); }
 
 }  // namespace
 
+AvoidIntent decide_avoidance(std::span<const ActorView> actors, int self, const Percept& percept, const vec3& direction, float offset);
+
 LookIntent choose_look(std::span<const ActorView> actors, int self, const Percept& percept, std::span<const SoundEvent> events,
                        const LookInputs& in, LookState& state) {
   LookIntent out;
@@ -58,7 +60,31 @@ LookIntent choose_look(std::span<const ActorView> actors, int self, const Percep
   return out;
 }
 
-AvoidIntent avoid_others(std::span<const ActorView> actors, int self, const Percept& percept, const vec3& direction, float offset) {
+AvoidIntent avoid_others(std::span<const ActorView> actors, int self, const Percept& percept, const vec3& direction, float offset,
+                         AvoidState& state) {
+  AvoidIntent out = decide_avoidance(actors, self, percept, direction, offset);
+  const ActorView& me = actors[static_cast<std::size_t>(self)];
+  // Keep out of the way of the walker avoided until it is behind or well aside.
+  if (state.threat >= 0) {
+    const ActorView& o = actors[static_cast<std::size_t>(state.threat)];
+    const vec3 rel = o.position - me.position;
+    const bool passed = glm::dot(rel, direction) < -0.2f || glm::length(vec2(rel.x, rel.z)) > 4.0f;
+    if (passed) state = AvoidState{};
+    else if (out.threat < 0 || out.threat == state.threat) {
+      out.threat = state.threat;
+      if (std::abs(state.offset) > std::abs(out.offset)) out.offset = state.offset;
+      out.speed_scale = std::min(out.speed_scale, std::max(state.speed_scale, 0.5f));
+    }
+  }
+  if (out.threat >= 0 && (state.threat < 0 || out.threat == state.threat)) {
+    state.threat = out.threat;
+    if (std::abs(out.offset) >= std::abs(state.offset)) state.offset = out.offset;
+    state.speed_scale = out.speed_scale;
+  }
+  return out;
+}
+
+AvoidIntent decide_avoidance(std::span<const ActorView> actors, int self, const Percept& percept, const vec3& direction, float offset) {
   AvoidIntent out;
   out.offset = 0.0f;
   const ActorView& me = actors[static_cast<std::size_t>(self)];

@@ -54,9 +54,22 @@ struct AvoidIntent {
   int threat = -1;           // the actor avoided, or -1
 };
 
+// What avoidance keeps between ticks: the walker it is getting out of the way of, and how far aside
+// it has decided to go — held until that walker has passed, so the two do not drift back into each
+// other's way as soon as the prediction clears.
+struct AvoidState {
+  int threat = -1;
+  float offset = 0.0f;
+  float speed_scale = 1.0f;
+};
+
 // `direction` is the unit walking direction; `offset` the current sideways shift. The result's
 // offset is where the walker should be beside its path (0 when nothing is in the way).
-AvoidIntent avoid_others(std::span<const ActorView> actors, int self, const Percept& percept, const vec3& direction, float offset);
+AvoidIntent avoid_others(std::span<const ActorView> actors, int self, const Percept& percept, const vec3& direction, float offset,
+                         AvoidState& state);
+
+// The decision of one tick, without memory (what avoid_others builds on).
+AvoidIntent decide_avoidance(std::span<const ActorView> actors, int self, const Percept& percept, const vec3& direction, float offset);
 
 // Where a follower should go: `distance` short of the followed actor on the line between them, or
 // none when it is already close enough (within distance + slack).

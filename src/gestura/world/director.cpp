@@ -504,7 +504,11 @@ class Director {
     vec3 across = glm::normalize(vec3(m[0]));  // along the panel, from the hinge to its free edge
     across.y = 0.0f;
     across = glm::normalize(across);
-    vec3 stand = handle + normal * side * (toward ? 0.62f : 0.5f) + (toward ? across * 0.25f : vec3(0.0f));
+    // Pushing: in front of the handle. Pulling: beside the door's free edge, just outside the arc
+    // its panel sweeps (a metre from the hinge, 30° out from the wall), the handle in reach.
+    const vec3 hinge = vec3(m[3]);
+    vec3 stand = toward ? hinge + across * (std::cos(deg(30.0f)) * 1.0f) + normal * side * (std::sin(deg(30.0f)) * 1.0f)
+                        : handle + normal * side * 0.45f;
     const auto g = ground_below(sim_->environment(), vec3(stand.x, handle.y, stand.z));
     stand.y = g ? g->height : me.view.position.y;
     r.phase = 0;

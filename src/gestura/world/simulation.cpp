@@ -172,7 +172,7 @@ void Simulation::step() {
     // Move: along the path, out of others' way.
     if (a.walker.mode == Locomotor::Mode::Walk) {
       const vec3 dir = a.walker.track.tangent_at(a.walker.progress);
-      const AvoidIntent avoid = avoid_others(views_, static_cast<int>(i), a.percept, dir, a.walker.offset);
+      const AvoidIntent avoid = avoid_others(views_, static_cast<int>(i), a.percept, dir, a.walker.offset, a.avoid_state);
       step_locomotor(a.walker, a.params, dt, avoid.speed_scale, avoid.offset);
     } else {
       step_locomotor(a.walker, a.params, dt);

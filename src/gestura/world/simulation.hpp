@@ -41,6 +41,7 @@ struct SimActor {
   LocomotionParams params;
   Percept percept;
   LookState look_state;
+  AvoidState avoid_state;
   LookIntent look;
   // Commands in force.
   int follow = -1;
