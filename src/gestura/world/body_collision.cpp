@@ -68,6 +68,16 @@ BodyVolumes make_body_volumes(const Avatar& avatar) {
   // Joint frames at rest may be rotated: undo the rest model rotation.
   std::vector<mat4> model(s.size());
   local_to_model(s, rest_pose(s), model);
+  // The soles: per foot joint, its skin's lowest vertex when it lies near the ground.
+  float floor = 1e30f;
+  for (const vec3& p : m.positions) floor = std::min(floor, p.y);
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    const bool foot = (left_ankle >= 0 && below(s, static_cast<int>(j), left_ankle)) || (right_ankle >= 0 && below(s, static_cast<int>(j), right_ankle));
+    if (!foot || carried[j].empty()) continue;
+    const vec3 lowest = *std::min_element(carried[j].begin(), carried[j].end(), [](const vec3& a, const vec3& b) { return a.y < b.y; });
+    if (lowest.y > floor + 0.01f) continue;
+    out.soles.push_back({static_cast<int>(j), vec3(glm::inverse(model[j]) * vec4(lowest, 1.0f))});
+  }
   for (BodyCapsule& c : out.capsules) {
     const mat3 r = glm::transpose(mat3(model[static_cast<std::size_t>(c.joint)]));
     c.a = r * c.a, c.b = r * c.b;
@@ -139,15 +149,12 @@ float body_overlap(std::span<const WorldCapsule> a, std::span<const WorldCapsule
   return best;
 }
 
-float sole_penetration(const Environment& env, std::span<const WorldCapsule> body) {
+float sole_penetration(const Environment& env, const BodyVolumes& volumes, std::span<const mat4> model) {
   float worst = -1e30f;
-  for (const WorldCapsule& c : body) {
-    if (!c.foot) continue;
-    for (const vec3& p : {c.a, c.b}) {
-      const vec3 lowest = p - vec3(0.0f, c.radius, 0.0f);
-      const auto g = ground_below(env, vec3(p.x, p.y + 0.3f, p.z), 1.0f);
-      if (g) worst = std::max(worst, g->height - lowest.y);
-    }
+  for (const BodyPoint& s : volumes.soles) {
+    const vec3 p = vec3(model[static_cast<std::size_t>(s.joint)] * vec4(s.local, 1.0f));
+    const auto g = ground_below(env, vec3(p.x, p.y + 0.3f, p.z), 1.0f);
+    if (g) worst = std::max(worst, g->height - p.y);
   }
   return worst;
 }

@@ -23,8 +23,15 @@ struct BodyCapsule {
   bool foot = false;  // touches the ground when standing (ankle and below)
 };
 
+// A point of the skin carried by a joint (the soles: where the feet meet the ground).
+struct BodyPoint {
+  int joint = -1;
+  vec3 local{0.0f};  // in the joint's bind frame
+};
+
 struct BodyVolumes {
   std::vector<BodyCapsule> capsules;
+  std::vector<BodyPoint> soles;  // each foot's lowest skin points per foot joint (heel, arch, ball, toes)
 };
 
 // One capsule per joint that carries skin, from the joint to the mean of its children (or along the
@@ -60,8 +67,8 @@ std::vector<Contact> body_contacts(const Environment& env, std::span<const World
 float body_overlap(std::span<const WorldCapsule> a, std::span<const WorldCapsule> b, int* capsule_a = nullptr,
                    int* capsule_b = nullptr);
 
-// Ground contact: the height of the ground under each foot capsule's lowest point minus that
-// point (> 0: the sole is below the ground).
-float sole_penetration(const Environment& env, std::span<const WorldCapsule> body);
+// Ground contact: the deepest the soles go below the ground under them (> 0: into it; < 0: the
+// feet are off the ground by that much), for the joints' model matrices `model`.
+float sole_penetration(const Environment& env, const BodyVolumes& volumes, std::span<const mat4> model);
 
 }  // namespace gestura
