@@ -7,24 +7,26 @@
 namespace gestura {
 namespace {
 
-Camera look(const vec3& eye, const vec3& target, float fov_degrees, float aspect) {
+// `near` > 0.05 cuts away what lies between the eye and the subject (a wall in front of a room seen
+// from outside).
+Camera look(const vec3& eye, const vec3& target, float fov_degrees, float aspect, float near = 0.05f) {
   Camera c;
   c.eye = eye;
   c.target = target;
   const vec3 up = std::abs(glm::normalize(target - eye).y) > 0.99f ? vec3(0, 0, -1) : vec3(0, 1, 0);
   c.view = glm::lookAt(eye, target, up);
   const float far = std::max(50.0f, glm::length(target - eye) * 4.0f);
-  c.projection = glm::perspective(deg(fov_degrees), aspect, 0.05f, far);
+  c.projection = glm::perspective(deg(fov_degrees), aspect, near, far);
   return c;
 }
 
-Camera ortho(const vec3& eye, const vec3& target, const vec3& up, float half_height, float aspect, float depth) {
+Camera ortho(const vec3& eye, const vec3& target, const vec3& up, float half_height, float aspect, float depth, float near = 0.01f) {
   Camera c;
   c.eye = eye;
   c.target = target;
   c.orthographic = true;
   c.view = glm::lookAt(eye, target, up);
-  c.projection = glm::ortho(-half_height * aspect, half_height * aspect, -half_height, half_height, 0.01f, depth);
+  c.projection = glm::ortho(-half_height * aspect, half_height * aspect, -half_height, half_height, near, depth);
   return c;
 }
 
@@ -34,17 +36,6 @@ Aabb usable(const Aabb& bounds, std::span<const CharacterView> characters) {
   if (b.empty()) b.grow(vec3(-2, 0, -2)), b.grow(vec3(2, 2, 2));
   // Rooms are mostly floor: a camera framing the whole floor slab (walls included) sees them well.
   return b;
-}
-
-// A perspective camera from direction `from` (unit, pointing from the target to the eye) that
-// sees the whole box.
-Camera framing(const Aabb& b, const vec3& from, float fov_degrees, float aspect) {
-  const vec3 centre = b.centre();
-  const float radius = glm::length(b.max - b.min) * 0.5f;
-  const float half = deg(fov_degrees) * 0.5f;
-  const float fit = std::min(half, std::atan(std::tan(half) * aspect));
-  const float distance = radius / std::sin(fit) * 0.92f;
-  return look(centre + from * distance, centre, fov_degrees, aspect);
 }
 
 }  // namespace
@@ -99,8 +90,10 @@ Camera scene_camera(const std::string& name, const Scene& scene, const Aabb& bou
     return ortho(vec3(centre.x, b.max.y + 5.0f, centre.z), centre, vec3(0, 0, -1), half, aspect, size.y + 20.0f);
   }
   if (name == "section") {
+    // A cut through the middle of the scene (what lies in front of it is not drawn), seen from +Z.
     const float half = std::max(size.y * 0.5f, size.x * 0.5f / aspect) * 1.08f;
-    return ortho(vec3(centre.x, centre.y, b.max.z + 5.0f), centre, vec3(0, 1, 0), half, aspect, size.z + 20.0f);
+    return ortho(vec3(centre.x, centre.y, b.max.z + 5.0f), centre, vec3(0, 1, 0), half, aspect, size.z + 20.0f,
+                 5.0f + (b.max.z - centre.z));
   }
   // The perspective views stand in high corners of the scene's box looking down across it, so a
   // walled room is seen from inside (its walls would hide it from outside).
@@ -114,7 +107,26 @@ Camera scene_camera(const std::string& name, const Scene& scene, const Aabb& bou
   Aabb people;
   for (const CharacterView& v : characters) people.grow(v.position - vec3(0.4f, 0, 0.4f)), people.grow(v.head + vec3(0.4f, 0.3f, 0.4f));
   if (people.empty()) people = b;
-  return framing(people, glm::normalize(vec3(0.35f, 0.3f, 1.0f)), 40.0f, aspect);
+  // From the south-east and a little above, at the distance that fits them — but inside the scene's
+  // box (a room's walls would hide them from outside), the view widened to still fit them.
+  const vec3 from = glm::normalize(vec3(0.35f, 0.3f, 1.0f));
+  const vec3 centre_people = people.centre();
+  const float radius = glm::length(people.max - people.min) * 0.5f;
+  const float fit = std::min(deg(20.0f), std::atan(std::tan(deg(20.0f)) * aspect));
+  vec3 eye = centre_people + from * (radius / std::sin(fit) * 0.92f);
+  const vec3 inner_min = b.min + vec3(0.35f), inner_max = b.max - vec3(0.35f);
+  if (inner_min.x < inner_max.x && inner_min.z < inner_max.z) {
+    const vec3 d = eye - centre_people;
+    float t = 1.0f;
+    for (int axis : {0, 2}) {
+      if (d[axis] > 1e-4f) t = std::min(t, (inner_max[axis] - centre_people[axis]) / d[axis]);
+      if (d[axis] < -1e-4f) t = std::min(t, (inner_min[axis] - centre_people[axis]) / d[axis]);
+    }
+    eye = centre_people + d * std::max(t, 0.15f);
+  }
+  const float distance = glm::length(eye - centre_people);
+  const float fov = std::clamp(2.0f * to_degrees(std::asin(std::min(1.0f, radius / std::max(distance, 1e-3f)))) / std::min(1.0f, aspect), 40.0f, 80.0f);
+  return look(eye, centre_people, fov, aspect);
 }
 
 std::vector<View> scene_views(const std::vector<std::string>& names, const Scene& scene, const Aabb& bounds,

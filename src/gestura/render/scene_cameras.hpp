@@ -15,10 +15,12 @@ namespace gestura {
 
 // Names a user can give besides the scene's cameras.
 //   plan          orthographic, looking down on the whole environment
-//   section       orthographic, from the south (+Z) side, the whole height
-//   perspective   from above the south-east corner, the whole environment
-//   perspective2  from above the north-west corner
-//   characters    perspective, framing every character (follows them)
+//   section       orthographic, from the south (+Z) side, cut through the middle (its near half
+//                 is not drawn), the whole height
+//   perspective   from high in the south-west corner of the scene's box, looking across it
+//   perspective2  from high in the north-east corner
+//   characters    perspective, framing every character (follows them); what stands between the
+//                 camera and them (a wall) is cut away
 //   alias         the four ALIAS views as a 2×2 split: perspective, perspective2, plan, section
 //   CHARACTER     a character's name: over that character's shoulder toward where it looks
 inline constexpr const char* kBuiltInSceneCameras[] = {"plan", "section", "perspective", "perspective2", "characters", "alias"};
