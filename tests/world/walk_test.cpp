@@ -36,7 +36,8 @@ Posed pose_at(const Clip& clip, float t) {
 
 // Largest slide of the pivots over every stance: the foot rolls over its heel through heel strike,
 // then over its ball (foot flat, mid-stance, heel off, toe off) until it lifts — each pivot must stay
-// where it touched down. The heel is carried by the subtalar joint, the ball by the midtarsal.
+// where it touched down while it is down (within 1 cm of its height then: a heel lifting off is not
+// sliding). The heel is carried by the subtalar joint, the ball by the midtarsal.
 float worst_slide(const WalkRig& rig, const WalkMotion& walk, const GaitParams& p, int* stances = nullptr) {
   float worst = 0.0f;
   int counted = 0;
@@ -60,10 +61,11 @@ float worst_slide(const WalkRig& rig, const WalkMotion& walk, const GaitParams& 
         const vec3 heel = vec3(posed.model[static_cast<std::size_t>(leg.subtalar)] * vec4(heel_local, 1.0f));
         const vec3 ball = vec3(posed.model[static_cast<std::size_t>(leg.midtarsal)] * vec4(ball_local, 1.0f));
         if (i == 0) heel0 = heel;
-        if (st.phase == GaitPhase::HeelStrike) worst = std::max(worst, glm::length(heel - heel0));
-        else {
+        if (st.phase == GaitPhase::HeelStrike) {
+          if (heel.y - heel0.y < 0.01f) worst = std::max(worst, glm::length(heel - heel0));
+        } else {
           if (!ball_set) ball0 = ball, ball_set = true;
-          worst = std::max(worst, glm::length(ball - ball0));
+          if (ball.y - ball0.y < 0.01f) worst = std::max(worst, glm::length(ball - ball0));
         }
       }
       ++counted;
@@ -241,6 +243,34 @@ TEST(Walk, ClimbsStairsTreadByTreadWithoutSliding) {
   // goes no more than 1 cm into any step.
   const SkinDepth depth = deepest_skin_point(walk, env, g, -1, 2.0f / 60.0f);
   std::printf("stairs: %zu steps, deepest skin point %.1f mm into %s\n", walk.steps.steps.size(), depth.depth * 1000.0f, depth.where.c_str());
+  EXPECT_LT(depth.depth, 0.01f) << depth.where;
+}
+
+TEST(Walk, WalksUpARampWithFeetAlongTheSlope) {
+  const Scene scene = parse_scene(R"({"objects": [
+      {"name": "floor", "shape": "box", "size": [6, 0.1, 12], "position": [0, -0.05, 4]},
+      {"name": "ramp", "shape": "box", "size": [1.6, 0.1, 3.2], "position": [0, 0.36, 3.0], "rotation": [-15, 0, 0]},
+      {"name": "landing", "shape": "box", "size": [1.6, 0.78, 2.0], "position": [0, 0.39, 5.54]}
+    ]})", "ramp.json");
+  const SceneGeometry g = build_scene_geometry(scene);
+  const Environment env = build_environment(g);
+  PathPlanner planner(env);
+  const PlannedPath path = planner.plan({vec3(0, 0, -0.5f), vec3(0, 0.78f, 5.8f), 0.3f});
+  ASSERT_EQ(path.status, PathStatus::Found) << path.reason;
+  const RootTrajectory body = follow_path(path.points, 0.0f, std::nullopt, {}, 1.0f / 60.0f, 0.5f, &env);
+  const WalkRig rig = make_walk_rig(avatar());
+  const GaitParams p;
+  const WalkMotion walk = synthesize_walk(rig, body, &env, p);
+  int on_ramp = 0;
+  for (const Footstep& s : walk.steps.steps)
+    if (s.position.z > 1.8f && s.position.z < 4.0f) {
+      ++on_ramp;
+      EXPECT_NEAR(std::acos(s.normal.y), deg(15.0f), deg(1.0f)) << "a plant on the ramp is not along it";
+    }
+  EXPECT_GE(on_ramp, 3);
+  EXPECT_LT(worst_slide(rig, walk, p), 0.01f);
+  const SkinDepth depth = deepest_skin_point(walk, env, g, -1, 2.0f / 60.0f);
+  std::printf("ramp: %d plants on the ramp, deepest skin point %.1f mm into %s\n", on_ramp, depth.depth * 1000.0f, depth.where.c_str());
   EXPECT_LT(depth.depth, 0.01f) << depth.where;
 }
 

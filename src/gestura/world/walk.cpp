@@ -31,16 +31,25 @@ mat4 pitch_about(const vec3& pivot, float pitch) {
 
 struct FootPose {
   mat4 frame{1.0f};
-  float toe = 0.0f;  // toe joint bend (negative: toes up relative to the foot)
+  float toe = 0.0f;        // toe joint bend (negative: toes up relative to the foot)
+  float heel_room = 0.0f;  // how far the toes are up (rolling down onto the heel may take that much)
 };
+
+float landing_angle(const Footstep& plant, const GaitParams& p) {
+  const vec3 forward(std::sin(plant.yaw), 0.0f, std::cos(plant.yaw));
+  const float uphill = std::max(0.0f, -std::asin(std::clamp(glm::dot(glm::normalize(plant.normal), forward), -1.0f, 1.0f)));
+  return std::max(0.0f, p.heel_strike_angle - uphill);
+}
 
 // Stance on a plant: the heel rocker after heel strike, flat, the ball rocker from heel off.
 FootPose stance_pose(const LegRig& leg, const Footstep& plant, float f, const GaitParams& p, bool came_from_swing) {
   FootPose out;
   const mat4 base = plant_matrix(plant);
   if (came_from_swing && f < p.foot_flat_at) {
-    const float alpha = p.heel_strike_angle * (1.0f - smooth(f / p.foot_flat_at));
+    // Up a slope the foot lands flatter: its toes are already raised by the slope.
+    const float alpha = landing_angle(plant, p) * (1.0f - smooth(f / p.foot_flat_at));
     out.frame = base * pitch_about(leg.heel, -alpha);
+    out.heel_room = alpha;
   } else if (f > p.heel_off_at) {
     const float x = (f - p.heel_off_at) / (1.0f - p.heel_off_at);
     const float beta = p.toe_off_angle * x * x * (1.6f - 0.6f * x);  // slow heel rise, faster at push-off
@@ -52,11 +61,13 @@ FootPose stance_pose(const LegRig& leg, const Footstep& plant, float f, const Ga
   return out;
 }
 
-// Pitch of the swinging foot: from the toe-off angle through level to the heel-strike angle.
-float swing_pitch(float tau, const GaitParams& p) {
+// Pitch of the swinging foot: from the toe-off angle through level to the heel-strike angle
+// (`landing`, less up a slope).
+float swing_pitch(float tau, const GaitParams& p, float landing) {
   if (tau < 0.45f) return p.toe_off_angle * (1.0f - smooth(tau / 0.45f));
-  return -p.heel_strike_angle * smooth((tau - 0.45f) / 0.55f);
+  return -landing * smooth((tau - 0.45f) / 0.55f);
 }
+
 
 vec3 ankle_of(const LegRig& leg, const mat4& frame) { return vec3(frame * vec4(leg.ankle_point, 1.0f)); }
 
@@ -75,7 +86,7 @@ mat4 swing_base(const LegRig& leg, const FootPose& from, const FootPose& to, con
   const float yaw = a.yaw + e * angle_difference(b.yaw, a.yaw);
   const vec3 normal = glm::normalize(glm::mix(a.normal, b.normal, e));
   const quat r = glm::rotation(vec3(0, 1, 0), normal) * glm::angleAxis(yaw, vec3(0, 1, 0)) *
-                 glm::angleAxis(swing_pitch(tau, p), vec3(1, 0, 0));
+                 glm::angleAxis(swing_pitch(tau, p, landing_angle(b, p)), vec3(1, 0, 0));
   mat4 m = glm::mat4_cast(r);
   m[3] = vec4(ankle - r * leg.ankle_point, 1.0f);
   return m;
@@ -126,6 +137,7 @@ FootPose foot_pose(const WalkRig& rig, const FootstepPlan& plan, const GaitParam
   out.frame = swing_base(leg, from, to, *st.from, *st.to, st.swing_fraction, p);
   out.frame[3] += vec4(0.0f, swing_lift(leg, from, to, *st.from, *st.to, st.swing_fraction, p, env), 0.0f, 0.0f);
   out.toe = from.toe * (1.0f - smooth(st.swing_fraction / 0.4f));
+  out.heel_room = std::max(0.0f, -swing_pitch(st.swing_fraction, p, landing_angle(*st.to, p)));
   return out;
 }
 
@@ -347,13 +359,14 @@ WalkMotion synthesize_walk(const WalkRig& rig, const RootTrajectory& body, const
       mat4 frame = x.feet[k].frame;
       float toe = x.feet[k].toe;
       // Rolling further goes over the heel while the foot comes down onto it (late swing, heel
-      // strike), over the ball otherwise — never about a point that is standing on the ground.
+      // strike) until it is flat, over the ball beyond that — the toes never go under the ground.
       const FootState state = foot_state(out.steps, k, x.t, p);
       const bool on_heel = state.swinging ? state.swing_fraction > 0.5f
                                           : state.phase == GaitPhase::HeelStrike && std::isfinite(state.stance_start);
+      float heel_room = on_heel ? x.feet[k].heel_room : 0.0f;  // down onto the heel no further than flat
       const float lowest = s.dofs[static_cast<std::size_t>(leg.ankle)].min_angle.x + deg(1.0f);
       vec3 e(0.0f);
-      for (int pass = 0; pass < 3; ++pass) {
+      for (int pass = 0; pass < 10; ++pass) {
         const vec3 ankle = ankle_of(leg, frame);
         const vec3 forward = glm::normalize(vec3(frame[2]));
         const vec3 hip = vec3(model[static_cast<std::size_t>(leg.hip)][3]);
@@ -366,8 +379,10 @@ WalkMotion synthesize_walk(const WalkRig& rig, const RootTrajectory& body, const
         e = quat_to_euler(glm::normalize(need), RotationOrder::XZY);
         if (e.x >= lowest) break;
         const float more = lowest - e.x + deg(0.5f);
-        frame = frame * pitch_about(on_heel ? leg.heel : leg.ball, more);
-        if (!on_heel) toe -= more;
+        const float about_heel = std::min(more, heel_room);
+        heel_room -= about_heel;
+        if (about_heel > 0.0f) frame = frame * pitch_about(leg.heel, about_heel);
+        if (more > about_heel) frame = frame * pitch_about(leg.ball, more - about_heel), toe -= more - about_heel;
       }
       set_euler(s, pose, leg.ankle, vec3(e.x, 0.0f, 0.0f));
       set_euler(s, pose, leg.subtalar, vec3(0.0f, 0.0f, e.z));
