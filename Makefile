@@ -7,7 +7,7 @@ PRESET := $(if $(filter true,$(CI)),ci,release)
 JOBS   ?= $(shell nproc)
 BIN    := build/bin
 
-.PHONY: run test build deps bench clean
+.PHONY: run test build deps bench legibility clean
 
 deps:
 	@scripts/setup-deps.sh
@@ -24,6 +24,13 @@ test: build
 
 bench: build
 	@$(BIN)/gestura-bench
+
+# MediaPipe Holistic on rendered signs (minutes: ~5-10 s per frame); not part of make test.
+# LEGIBILITY_ARGS passes options, e.g. LEGIBILITY_ARGS="--size 640x360 --step 3 house".
+legibility: build
+	@[ tools/legibility/node_modules -nt tools/legibility/package.json ] || \
+	  { cd tools/legibility && npm install --no-audit --no-fund --loglevel=error </dev/null && touch node_modules; }
+	@node tools/legibility/legibility.mjs --gestura $(BIN)/gestura --out out/legibility $(LEGIBILITY_ARGS)
 
 clean:
 	rm -rf build build-debug

@@ -116,6 +116,14 @@ int run_convert(const std::vector<std::string>& args) {
   if (paths.size() != 2) throw Error("usage: gestura convert IN OUT [--scale S] [--z-up] [--openpose]");
   if ((extension_of(paths[1]) == ".json") != openpose)
     throw Error(openpose ? "--openpose writes .json files" : paths[1] + ": JSON output is OpenPose keypoints; say --openpose");
+  // A .pose holds positions, not joint rotations: it is re-encoded (0.1 → 0.2), not made into a motion.
+  if (extension_of(paths[0]) == ".pose") {
+    if (extension_of(paths[1]) != ".pose") throw Error(paths[0] + ": a .pose file holds point positions, not joint rotations; it converts to .pose only");
+    const gestura::PoseData pose = gestura::load_pose(paths[0]);
+    gestura::save_pose(paths[1], pose);
+    std::cout << "wrote " << paths[1] << ": " << pose.point_count() << " points, " << pose.frames << " frames\n";
+    return 0;
+  }
   const Reader& read = pick(readers(), paths[0], "read");
   const Writer& write = pick(writers(), paths[1], "write");
   const BvhFile motion = read(paths[0], options);
@@ -129,6 +137,7 @@ gestura::cli::Registration reg{{"convert", "convert motion files (BVH, glTF, BAP
                                 "usage: gestura convert IN OUT [--scale S] [--z-up] [--openpose]\n\n"
                                 "Reads IN and writes OUT, formats chosen by extension (.bvh, .glb, .gltf, .bap; written\n"
                                 "also .pose: joint positions for the pose-format toolkit, and with --openpose\n"
+                                "A .pose input is re-encoded as pose-format 0.2 (.pose to .pose only).\n"
                                 ".json: OpenPose BODY_25 + hand keypoints from a front camera, written as\n"
                                 "OUT_<frame>_keypoints.json per frame).\n"
                                 ".bap       MPEG-4 BAP text, angles on the default avatar skeleton (joints\n"

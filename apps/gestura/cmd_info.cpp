@@ -9,6 +9,7 @@
 #include "command.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
+#include "gestura/io/pose_format.hpp"
 
 namespace {
 
@@ -78,9 +79,38 @@ int describe_bvh(const std::string& path, int tree_depth) {
   return 0;
 }
 
+// pose-format files: the header, and per component how many frames have any confident point.
+int describe_pose(const std::string& path, int) {
+  const gestura::PoseData pose = gestura::load_pose(path);
+  std::printf("file:       %s\nformat:     pose-format %.1f\n", path.c_str(), static_cast<double>(pose.version));
+  std::printf("image:      %d x %d (depth %d)\n", pose.width, pose.height, pose.depth);
+  std::printf("frames:     %u at %g fps (%g s), %d people\n", pose.frames, static_cast<double>(pose.fps),
+              pose.fps > 0 ? static_cast<double>(pose.frames > 0 ? pose.frames - 1 : 0) / static_cast<double>(pose.fps) : 0.0,
+              pose.people);
+  std::printf("components: %zu, %zu points, %d dimensions\n", pose.components.size(), pose.point_count(), pose.dims());
+  std::size_t offset = 0;
+  const std::size_t points = pose.point_count();
+  for (const gestura::PoseComponent& c : pose.components) {
+    std::size_t seen = 0, placed = 0;
+    for (std::size_t f = 0; f < std::size_t(pose.frames) * pose.people; ++f) {
+      std::size_t here = 0;
+      for (std::size_t i = 0; i < c.points.size(); ++i) here += pose.confidence[f * points + offset + i] > 0.0f;
+      seen += here > 0;
+      placed += here;
+    }
+    const std::size_t cells = std::size_t(pose.frames) * pose.people;
+    std::printf("  %-22s %-5s %4zu points %4zu limbs  in %zu of %zu frames, %.0f%% of its points placed\n", c.name.c_str(),
+                c.format.c_str(), c.points.size(), c.limbs.size(), seen, cells,
+                cells && !c.points.empty() ? 100.0 * double(placed) / double(cells * c.points.size()) : 0.0);
+    offset += c.points.size();
+  }
+  return 0;
+}
+
 // Extension (lower case, with the dot) → describer. New formats add a row here.
 const std::map<std::string, std::function<int(const std::string&, int)>>& describers() {
-  static const std::map<std::string, std::function<int(const std::string&, int)>> table{{".bvh", describe_bvh}};
+  static const std::map<std::string, std::function<int(const std::string&, int)>> table{{".bvh", describe_bvh},
+                                                                                         {".pose", describe_pose}};
   return table;
 }
 
@@ -126,11 +156,12 @@ int run_info(const std::vector<std::string>& args) {
   return it->second(path, depth);
 }
 
-gestura::cli::Registration reg{{"info", "describe a file (BVH: joints, channels, frames, fps, tree)",
+gestura::cli::Registration reg{{"info", "describe a file (BVH: joints, channels, frames, fps, tree; .pose: components)",
                                 "usage: gestura info FILE [--depth N]\n\n"
                                 "Prints what FILE holds. For .bvh: root, joints and end sites, channel\n"
                                 "layouts, frames, frame time, fps, duration and the joint tree down to\n"
-                                "depth N (default 3; 0 prints every joint).",
+                                "depth N (default 3; 0 prints every joint). For .pose (pose-format 0.1/0.2): image\n"
+                                "size, fps, frames and each component with the share of its points placed.",
                                 run_info}};
 
 }  // namespace

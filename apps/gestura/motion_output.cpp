@@ -6,6 +6,8 @@
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/io/gltf_animation.hpp"
+#include "gestura/io/holistic_landmarks.hpp"
+#include "gestura/io/pose_format.hpp"
 #include "gestura/io/joint_positions_json.hpp"
 #include "gestura/render/render_job.hpp"
 #include "gestura/render/subject.hpp"
@@ -13,12 +15,13 @@
 namespace gestura::cli {
 namespace {
 
-enum class Kind { JointPositions, Bvh, Gltf, Pictures, Unknown };
+enum class Kind { JointPositions, Bvh, Gltf, Pose, Pictures, Unknown };
 
 Kind kind_of(const std::string& path) {
   if (path.ends_with(".json")) return Kind::JointPositions;
   if (path.ends_with(".bvh")) return Kind::Bvh;
   if (path.ends_with(".glb") || path.ends_with(".gltf")) return Kind::Gltf;
+  if (path.ends_with(".pose")) return Kind::Pose;
   for (const char* ext : {".png", ".gif", ".mp4", ".webm"})
     if (path.ends_with(ext)) return Kind::Pictures;
   return Kind::Unknown;
@@ -54,11 +57,12 @@ bool output_shows_body(const MotionOutput& out) {
 }
 
 void check_motion_output(const MotionOutput& out) {
-  if (out.path.empty()) throw Error("-o OUT is required (.json, .bvh, .glb, .gltf, .png, .gif, .mp4, .webm)");
+  if (out.path.empty()) throw Error("-o OUT is required (.json, .bvh, .glb, .gltf, .pose, .png, .gif, .mp4, .webm)");
   const Kind kind = kind_of(out.path);
   if (kind == Kind::Unknown)
-    throw Error(out.path + ": cannot write this kind of file (OUT must end in .json, .bvh, .glb, .gltf, .png, .gif, .mp4 or .webm)");
+    throw Error(out.path + ": cannot write this kind of file (OUT must end in .json, .bvh, .glb, .gltf, .pose, .png, .gif, .mp4 or .webm)");
   if (kind == Kind::Pictures) validate(render_job(out, 0.0f));
+  else if (kind == Kind::Pose) parse_image_size(out.size), parse_camera_list(out.camera);
   else if (out.sheet) throw Error("--sheet needs a .png output, not " + out.path);
 }
 
@@ -70,6 +74,16 @@ int write_motion(const MotionOutput& out, const Skeleton& skeleton, const Clip& 
     case Kind::JointPositions: write_joint_positions_json(out.path, skeleton, clip, 1.0f / frame_time); break;
     case Kind::Bvh: save_bvh(out.path, make_bvh(skeleton, clip, frame_time)); break;
     case Kind::Gltf: save_gltf(out.path, skeleton, clip, body); break;
+    case Kind::Pose: {
+      // MediaPipe Holistic landmarks as the pictures of the same flags would show them.
+      const RenderJob job = render_job(out, still_time);
+      PinholeCamera camera;
+      camera.width = job.size.width, camera.height = job.size.height;
+      if (body) camera = job_pinhole_camera(RenderSubject{skeleton, *body, clip}, job);
+      const float fps = out.motion_frame_time > 0.0f ? 1.0f / out.motion_frame_time : static_cast<float>(out.fps);
+      save_pose(out.path, holistic_pose(holistic_track(skeleton, body, clip, fps), camera, fps));
+      break;
+    }
     case Kind::Pictures: {
       if (!body) throw Error(out.path + ": pictures need the avatar's body (this motion is on another skeleton)");
       const RenderSubject subject{skeleton, *body, clip};

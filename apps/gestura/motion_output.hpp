@@ -23,7 +23,8 @@ struct MotionOutput {
 
 constexpr const char* kMotionOutputUsage =
     "OUT by extension: .json joint positions ({\"fps\", \"joints\", \"frames\"}; metres, +Y up, facing +Z,\n"
-    "H-Anim names), .bvh motion, .glb/.gltf animation with the avatar's body, or pictures of the avatar:\n"
+    "H-Anim names), .bvh motion, .glb/.gltf animation with the avatar's body, .pose MediaPipe Holistic\n"
+    "landmarks (pose-format; pixels as the pictures of the same --size/--camera show them), or pictures of the avatar:\n"
     ".png (one moment; --sheet: 16 frames in a 4x4 grid), .gif, .mp4, .webm\n"
     "(--size WxH [1280x720], --fps N [30], --camera LIST [front]).";
 

@@ -92,6 +92,22 @@ std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int wid
   return views;
 }
 
+PinholeCamera job_pinhole_camera(const RenderSubject& subject, const RenderJob& job) {
+  RenderJob single = job;
+  if (!single.orbit) single.cameras.resize(1);
+  const FramingBox box = framing_box(subject.mesh, subject.skeleton);
+  const Camera camera = job_views(single, box, job.size.width, job.size.height).at(0).camera;
+  if (camera.orthographic)
+    throw Error("the " + std::string(preset_name(single.cameras.at(0))) + " camera is orthographic; joints are projected through a perspective camera (front, side, three-quarter)");
+  PinholeCamera pinhole;
+  pinhole.position = camera.eye;
+  pinhole.target = camera.target;
+  pinhole.vertical_fov = 2.0f * std::atan(1.0f / camera.projection[1][1]);
+  pinhole.width = job.size.width;
+  pinhole.height = job.size.height;
+  return pinhole;
+}
+
 RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) {
   validate(job);
   Animator animator(subject);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gestura/io/keypoints.hpp"
 #include "gestura/render/camera.hpp"
 #include "gestura/render/look.hpp"
 #include "gestura/render/renderer.hpp"
@@ -65,5 +66,10 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job);
 
 // The views for an image of `width`×`height`: one per camera (split grid) or the orbit.
 std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int width, int height);
+
+// What the first camera of `job` sees, as a pinhole camera over the whole job.size image, for
+// projecting joints exactly as the pictures show them (the .pose writer). Throws gestura::Error
+// for an orthographic camera (top, side-section).
+PinholeCamera job_pinhole_camera(const RenderSubject& subject, const RenderJob& job);
 
 }  // namespace gestura
