@@ -46,6 +46,7 @@ struct Scene {
                                    float(kWidth) / kHeight), {0, 0, kWidth, kHeight}});
     for (Renderer* r : {&renderer, &two_samples, &single_sample}) {
       r->upload(figure.mesh);
+      r->set_occluders(find_occluders(figure.skeleton, figure.mesh));
       r->resize(kWidth, kHeight);
       for (SkinningDevice device : {SkinningDevice::Gpu, SkinningDevice::Cpu}) {  // compile shaders, fill caches
         r->render(views, animator.skinning(), animator.morph_weights(), device);
@@ -116,6 +117,7 @@ void BM_R1_DrawQuarterPixels(benchmark::State& state) {
   static Renderer small{Look{}, 4};
   static const bool ready = [&] {
     small.upload(s.figure.mesh);
+    small.set_occluders(find_occluders(s.figure.skeleton, s.figure.mesh));
     small.resize(kWidth / 2, kHeight / 2);
     return true;
   }();

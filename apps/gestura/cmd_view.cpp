@@ -147,6 +147,7 @@ int run(const std::vector<std::string>& args) {
   WindowGlContext window(size.width, size.height, "gestura view");
   Renderer renderer(look);
   renderer.upload(subject.mesh);
+  renderer.set_occluders(find_occluders(subject.skeleton, subject.mesh));
   Viewer viewer{ViewerControls(framing_box(subject.mesh, subject.skeleton), start,
                                 static_cast<float>(size.width) / static_cast<float>(size.height))};
   if (start_at) viewer.controls.time = std::min(*start_at, animator.duration()), viewer.controls.playing = false;

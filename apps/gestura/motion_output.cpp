@@ -77,11 +77,12 @@ int write_motion(const MotionOutput& out, const Skeleton& skeleton, const Clip& 
     case Kind::Pose: {
       // MediaPipe Holistic landmarks as the pictures of the same flags would show them.
       const RenderJob job = render_job(out, still_time);
-      PinholeCamera camera;
-      camera.width = job.size.width, camera.height = job.size.height;
-      if (body) camera = job_pinhole_camera(RenderSubject{skeleton, *body, clip}, job);
       const float fps = out.motion_frame_time > 0.0f ? 1.0f / out.motion_frame_time : static_cast<float>(out.fps);
-      save_pose(out.path, holistic_pose(holistic_track(skeleton, body, clip, fps), camera, fps));
+      const HolisticTrack track = holistic_track(skeleton, body, clip, fps);
+      std::vector<PinholeCamera> cameras(1);
+      cameras[0].width = job.size.width, cameras[0].height = job.size.height;
+      if (body) cameras = job_pinhole_cameras(RenderSubject{skeleton, *body, clip}, job, fps, track.frames);
+      save_pose(out.path, holistic_pose(track, cameras, fps));
       break;
     }
     case Kind::Pictures: {

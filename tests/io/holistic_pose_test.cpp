@@ -99,7 +99,7 @@ TEST(HolisticPose, LayoutIsPoseFormatsHolisticAndPixelsAreTheCamerasProjection) 
   camera.position = vec3(0.1f, 1.4f, 2.5f);
   camera.target = vec3(0.0f, 1.3f, 0.0f);
   camera.width = 640, camera.height = 360;
-  const PoseData pose = holistic_pose(track, camera, 5.0f);
+  const PoseData pose = holistic_pose(track, std::span(&camera, 1), 5.0f);
   ASSERT_EQ(pose.components.size(), 5u);
   const char* names[] = {"POSE_LANDMARKS", "FACE_LANDMARKS", "LEFT_HAND_LANDMARKS", "RIGHT_HAND_LANDMARKS", "POSE_WORLD_LANDMARKS"};
   const std::size_t counts[] = {33, 468, 21, 21, 33};
@@ -143,7 +143,7 @@ TEST(HolisticPose, LayoutIsPoseFormatsHolisticAndPixelsAreTheCamerasProjection) 
 
 TEST(PoseReader, ReadsBackWhatTheWriterWrote) {
   const HolisticTrack track = holistic_track(avatar().skeleton, &avatar().mesh, morph_clip("oh", 1.0f), 4.0f);
-  const PoseData written = holistic_pose(track, PinholeCamera{}, 4.0f);
+  const PoseData written = holistic_pose(track, std::vector<PinholeCamera>(1), 4.0f);
   const PoseData read = decode_pose(encode_pose(written), "mem.pose");
   EXPECT_FLOAT_EQ(read.version, 0.2f);
   EXPECT_EQ(read.width, written.width);
@@ -184,7 +184,7 @@ TEST(PoseReader, ReadsVersion01) {
 
 TEST(PoseReader, BadFilesAreNamedErrors) {
   const std::string good = encode_pose(holistic_pose(holistic_track(avatar().skeleton, nullptr, morph_clip("aa", 1.0f), 2.0f),
-                                                     PinholeCamera{}, 2.0f));
+                                                     std::vector<PinholeCamera>(1), 2.0f));
   const auto error_of = [](const std::string& bytes) {
     try {
       decode_pose(bytes, "bad.pose");

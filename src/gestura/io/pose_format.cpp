@@ -225,12 +225,16 @@ int pose_component_offset(const PoseData& pose, const std::string& name) {
   return -1;
 }
 
-PoseData holistic_pose(const HolisticTrack& track, const PinholeCamera& camera, float fps) {
+PoseData holistic_pose(const HolisticTrack& track, std::span<const PinholeCamera> cameras, float fps) {
   if (!std::isfinite(fps) || !(fps > 0.0f)) throw Error(".pose: fps must be positive");
+  if (cameras.size() != 1 && cameras.size() != static_cast<std::size_t>(track.frames))
+    throw Error(".pose: " + std::to_string(cameras.size()) + " cameras for " + std::to_string(track.frames) +
+                " frames (give one, or one per frame)");
+  const PinholeCamera& first = cameras[0];
   PoseData pose;
   pose.fps = fps;
-  pose.width = static_cast<std::uint16_t>(std::clamp(camera.width, 0, 65535));
-  pose.height = static_cast<std::uint16_t>(std::clamp(camera.height, 0, 65535));
+  pose.width = static_cast<std::uint16_t>(std::clamp(first.width, 0, 65535));
+  pose.height = static_cast<std::uint16_t>(std::clamp(first.height, 0, 65535));
   const auto component = [](const char* name, std::span<const char* const> points, std::span<const std::array<std::uint16_t, 2>> limbs,
                             std::array<std::uint16_t, 3> rgb) {
     PoseComponent c;
@@ -256,23 +260,24 @@ PoseData holistic_pose(const HolisticTrack& track, const PinholeCamera& camera, 
                      component("POSE_WORLD_LANDMARKS", kHolisticBodyNames, holistic_body_limbs(), {255, 0, 0})};
   pose.frames = static_cast<std::uint32_t>(track.frames);
 
-  const vec3 forward = glm::normalize(camera.target - camera.position);
-  const vec3 right = glm::normalize(glm::cross(forward, vec3(0.0f, 1.0f, 0.0f)));
-  const vec3 down = -glm::cross(right, forward);
-  const float focal = 0.5f * float(camera.height) / std::tan(0.5f * camera.vertical_fov);
-  const float width = float(std::max(1, camera.width));
-  // Image landmarks: pixels, and depth about `reference` in image-width units at its distance.
-  const auto image = [&](std::span<const vec3> points, std::span<const float> confidence, const vec3& reference) {
-    const float ref_depth = glm::dot(reference - camera.position, forward);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const vec3 px = camera.project(points[i]);
-      const bool seen = confidence[i] > 0.0f && px.z > 0.0f && ref_depth > 0.0f;
-      const float z = seen ? (px.z - ref_depth) * focal / (ref_depth * width) : 0.0f;
-      pose.data.insert(pose.data.end(), {seen ? px.x : 0.0f, seen ? px.y : 0.0f, z});
-      pose.confidence.push_back(seen ? 1.0f : 0.0f);
-    }
-  };
   for (int f = 0; f < track.frames; ++f) {
+    const PinholeCamera& camera = cameras[cameras.size() == 1 ? 0 : static_cast<std::size_t>(f)];
+    const vec3 forward = glm::normalize(camera.target - camera.position);
+    const vec3 right = glm::normalize(glm::cross(forward, vec3(0.0f, 1.0f, 0.0f)));
+    const vec3 down = -glm::cross(right, forward);
+    const float focal = 0.5f * float(camera.height) / std::tan(0.5f * camera.vertical_fov);
+    const float width = float(std::max(1, camera.width));
+    // Image landmarks: pixels, and depth about `reference` in image-width units at its distance.
+    const auto image = [&](std::span<const vec3> points, std::span<const float> confidence, const vec3& reference) {
+      const float ref_depth = glm::dot(reference - camera.position, forward);
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const vec3 px = camera.project(points[i]);
+        const bool seen = confidence[i] > 0.0f && px.z > 0.0f && ref_depth > 0.0f;
+        const float z = seen ? (px.z - ref_depth) * focal / (ref_depth * width) : 0.0f;
+        pose.data.insert(pose.data.end(), {seen ? px.x : 0.0f, seen ? px.y : 0.0f, z});
+        pose.confidence.push_back(seen ? 1.0f : 0.0f);
+      }
+    };
     const auto slice = [f](const std::vector<vec3>& v, int count) {
       return std::span<const vec3>(v).subspan(static_cast<std::size_t>(f) * static_cast<std::size_t>(count), static_cast<std::size_t>(count));
     };

@@ -76,7 +76,8 @@ PoseData pose_from_clip(const Skeleton& skeleton, const Clip& clip, float fps, P
 // about the hips' midpoint for the body, the wrist for a hand, the face points' centre for the
 // face. The world landmarks are metres about the hips' midpoint along the camera's right, down and
 // forward axes, with x multiplied by the width and y by the height as pose-format stores them.
-// Confidence is 1 for a placed point in front of the camera, 0 otherwise.
-PoseData holistic_pose(const HolisticTrack& track, const PinholeCamera& camera, float fps);
+// Confidence is 1 for a placed point in front of the camera, 0 otherwise. `cameras` holds one
+// camera for all frames or one per frame (a camera that moves); throws gestura::Error otherwise.
+PoseData holistic_pose(const HolisticTrack& track, std::span<const PinholeCamera> cameras, float fps);
 
 }  // namespace gestura

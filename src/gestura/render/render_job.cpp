@@ -1,6 +1,7 @@
 #include "gestura/render/render_job.hpp"
 
 #include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <regex>
 
@@ -75,7 +76,7 @@ int frame_count(float seconds, int fps) {
   return std::max(1, static_cast<int>(std::floor(seconds * static_cast<float>(fps) + 1e-3f)) + 1);
 }
 
-std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int width, int height) {
+std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int width, int height, const FramingBox* follow) {
   std::vector<View> views;
   if (job.orbit) {
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -87,31 +88,59 @@ std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int wid
   const std::vector<Viewport> panes = split_viewports(static_cast<int>(job.cameras.size()), width, height);
   for (std::size_t i = 0; i < panes.size(); ++i) {
     const float aspect = static_cast<float>(panes[i].width) / static_cast<float>(std::max(1, panes[i].height));
-    views.push_back({preset_camera(job.cameras[i], box, aspect), panes[i]});
+    const FramingBox& framed = follow && job.cameras[i] == CameraPreset::Follow ? *follow : box;
+    views.push_back({preset_camera(job.cameras[i], framed, aspect), panes[i]});
   }
   return views;
 }
 
-PinholeCamera job_pinhole_camera(const RenderSubject& subject, const RenderJob& job) {
+namespace {
+
+// The framing of a subject for a job: the clip-wide box, and per frame at `fps` the follow box
+// when a follow camera is asked for.
+struct JobFraming {
+  FramingBox box;
+  std::vector<FramingBox> follow;
+  float fps = 30.0f;
+  JobFraming(const RenderSubject& subject, const RenderJob& job, float frame_rate, int frames)
+      : box(framing_box(subject.mesh, subject.skeleton, subject.clip ? &*subject.clip : nullptr)), fps(frame_rate) {
+    const bool follows = !job.orbit && std::find(job.cameras.begin(), job.cameras.end(), CameraPreset::Follow) != job.cameras.end();
+    if (follows && subject.clip) follow = follow_framing(box, subject.skeleton, *subject.clip, fps, frames);
+  }
+  const FramingBox* at(float t) const {
+    if (follow.empty()) return nullptr;
+    const long i = std::lround(t * fps);
+    return &follow[static_cast<std::size_t>(std::clamp<long>(i, 0, static_cast<long>(follow.size()) - 1))];
+  }
+};
+
+}  // namespace
+
+std::vector<PinholeCamera> job_pinhole_cameras(const RenderSubject& subject, const RenderJob& job, float fps, int frames) {
   RenderJob single = job;
   if (!single.orbit) single.cameras.resize(1);
-  const FramingBox box = framing_box(subject.mesh, subject.skeleton);
-  const Camera camera = job_views(single, box, job.size.width, job.size.height).at(0).camera;
-  if (camera.orthographic)
-    throw Error("the " + std::string(preset_name(single.cameras.at(0))) + " camera is orthographic; joints are projected through a perspective camera (front, side, three-quarter)");
-  PinholeCamera pinhole;
-  pinhole.position = camera.eye;
-  pinhole.target = camera.target;
-  pinhole.vertical_fov = 2.0f * std::atan(1.0f / camera.projection[1][1]);
-  pinhole.width = job.size.width;
-  pinhole.height = job.size.height;
-  return pinhole;
+  const JobFraming framing(subject, single, fps, frames);
+  std::vector<PinholeCamera> cameras;
+  for (int f = 0; f < (framing.follow.empty() ? 1 : frames); ++f) {
+    const Camera camera =
+        job_views(single, framing.box, job.size.width, job.size.height, framing.at(static_cast<float>(f) / fps)).at(0).camera;
+    if (camera.orthographic)
+      throw Error("the " + std::string(preset_name(single.cameras.at(0))) +
+                  " camera is orthographic; joints are projected through a perspective camera (front, side, three-quarter, follow)");
+    PinholeCamera pinhole;
+    pinhole.position = camera.eye;
+    pinhole.target = camera.target;
+    pinhole.vertical_fov = 2.0f * std::atan(1.0f / camera.projection[1][1]);
+    pinhole.width = job.size.width;
+    pinhole.height = job.size.height;
+    cameras.push_back(pinhole);
+  }
+  return cameras;
 }
 
 RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) {
   validate(job);
   Animator animator(subject);
-  const FramingBox box = framing_box(subject.mesh, subject.skeleton);
   const bool png = ends_with_png(job.output);
   // Open the output first: an unwritable path fails before any rendering.
   std::optional<StagedFile> still;
@@ -122,21 +151,24 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) 
   HeadlessGlContext context;
   Renderer renderer(job.look, job.msaa_samples);
   renderer.upload(subject.mesh);
+  renderer.set_occluders(find_occluders(subject.skeleton, subject.mesh));
   RenderReport report;
   report.renderer = context.description();
   Image frame;
   const float duration = subject.clip ? animator.duration() : job.rest_seconds;
+  const JobFraming framing(subject, job, static_cast<float>(job.fps), frame_count(duration, job.fps));
+  const FramingBox& box = framing.box;
 
   if (png && job.sheet) {
     const int w = std::max(kMinImageSide, job.size.width / kSheetColumns);
     const int h = std::max(kMinImageSide, job.size.height / kSheetColumns);
     renderer.resize(w, h);
-    const std::vector<View> views = job_views(job, box, w, h);
     std::vector<Image> tiles;
     Progress progress("rendering sheet", kSheetFrames);
     for (int i = 0; i < kSheetFrames; ++i) {
-      animator.pose_at(duration * static_cast<float>(i) / static_cast<float>(kSheetFrames - 1));
-      renderer.render(views, animator.skinning(), animator.morph_weights(), job.skinning);
+      const float t = duration * static_cast<float>(i) / static_cast<float>(kSheetFrames - 1);
+      animator.pose_at(t);
+      renderer.render(job_views(job, box, w, h, framing.at(t)), animator.skinning(), animator.morph_weights(), job.skinning);
       renderer.read_pixels(frame);
       tiles.push_back(frame);
       progress.update(i + 1);
@@ -147,10 +179,10 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) 
   }
 
   renderer.resize(job.size.width, job.size.height);
-  const std::vector<View> views = job_views(job, box, job.size.width, job.size.height);
   if (png) {
     animator.pose_at(job.still_time);
-    renderer.render(views, animator.skinning(), animator.morph_weights(), job.skinning);
+    renderer.render(job_views(job, box, job.size.width, job.size.height, framing.at(job.still_time)), animator.skinning(),
+                    animator.morph_weights(), job.skinning);
     renderer.read_pixels(frame);
     write_png(*still, frame);
     report.frames = 1;
@@ -159,9 +191,13 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) 
   const int frames = frame_count(duration, job.fps);
   Progress progress("rendering " + job.output, frames);
   EncoderThread encoder(*video);  // frame i is encoded while frame i+1 is drawn
+  const std::vector<View> fixed_views = job_views(job, box, job.size.width, job.size.height);
   for (int i = 0; i < frames; ++i) {
-    animator.pose_at(static_cast<float>(i) / static_cast<float>(job.fps));
-    renderer.render(views, animator.skinning(), animator.morph_weights(), job.skinning);
+    const float t = static_cast<float>(i) / static_cast<float>(job.fps);
+    animator.pose_at(t);
+    const FramingBox* follow = framing.at(t);
+    renderer.render(follow ? job_views(job, box, job.size.width, job.size.height, follow) : fixed_views, animator.skinning(),
+                    animator.morph_weights(), job.skinning);
     renderer.read_pixels(frame);
     encoder.submit(frame);
     progress.update(i + 1);

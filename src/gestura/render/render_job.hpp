@@ -64,12 +64,15 @@ struct RenderReport {
 // Renders headless and writes job.output (staged: nothing is left behind on failure).
 RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job);
 
-// The views for an image of `width`×`height`: one per camera (split grid) or the orbit.
-std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int width, int height);
+// The views for an image of `width`×`height`: one per camera (split grid) or the orbit. A follow
+// camera frames `follow` when given (the moment's follow_framing box), else `box`.
+std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int width, int height,
+                            const FramingBox* follow = nullptr);
 
-// What the first camera of `job` sees, as a pinhole camera over the whole job.size image, for
-// projecting joints exactly as the pictures show them (the .pose writer). Throws gestura::Error
-// for an orthographic camera (top, side-section).
-PinholeCamera job_pinhole_camera(const RenderSubject& subject, const RenderJob& job);
+// What the first camera of `job` sees at frames 0..frames-1 (i / fps), as pinhole cameras over the
+// whole job.size image, for projecting joints exactly as the pictures show them (the .pose
+// writer): one camera for a fixed framing, one per frame for the follow camera. Throws
+// gestura::Error for an orthographic camera (top, side-section).
+std::vector<PinholeCamera> job_pinhole_cameras(const RenderSubject& subject, const RenderJob& job, float fps, int frames);
 
 }  // namespace gestura
