@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -18,6 +19,7 @@
 #include "gestura/body/skinning.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/gltf_animation.hpp"
+#include "gestura/io/gltf_export.hpp"
 #include "gestura/lexicon/default_lexicon.hpp"
 #include "gestura/sentence/signer.hpp"
 #include "gestura/sign/signing_rig.hpp"
@@ -68,6 +70,21 @@ const std::pair<const char*, const char*> kArkit[] = {
     {"mouthSmile_L", "mouthSmileLeft"}, {"mouthSmile_R", "mouthSmileRight"}, {"mouthFrown_L", "mouthFrownLeft"},
     {"mouthFrown_R", "mouthFrownRight"}, {"mouthPucker", "mouthPucker"},   {"mouthOpen", "jawOpen"},
     {"tongueOut", "tongueOut"}};
+
+// A .glb's JSON and binary chunks.
+GltfDocument split_glb(const std::vector<std::uint8_t>& glb) {
+  const auto u32 = [&](std::size_t at) {
+    std::uint32_t v;
+    std::memcpy(&v, glb.data() + at, 4);
+    return v;
+  };
+  const std::uint32_t json_length = u32(12);
+  GltfDocument d;
+  d.json.assign(reinterpret_cast<const char*>(glb.data()) + 20, json_length);
+  const std::size_t bin = 20 + json_length;
+  d.buffer.assign(glb.begin() + static_cast<std::ptrdiff_t>(bin + 8), glb.begin() + static_cast<std::ptrdiff_t>(bin + 8 + u32(bin)));
+  return d;
+}
 
 enum class Variant { Vrm1, Vrm0, PlainGlb, NoFingers, NoFace };
 
@@ -148,9 +165,8 @@ Made make_file(Variant variant) {
       for (vec3& d : m.normal_deltas) turn(d);
     }
   }
-  Clip still;
-  still.resize_joints(a.skeleton.size());
-  const GltfDocument g = make_gltf(a.skeleton, still, &a.mesh);
+  // gestura's own avatar export (materials, sparse morph targets), its JSON then given the extension.
+  GltfDocument g = split_glb(encode_glb(a.skeleton, a.mesh));
   json doc = json::parse(g.json);
   const std::size_t mesh_node = a.skeleton.size();
   if (variant == Variant::Vrm1 || variant == Variant::NoFingers || variant == Variant::NoFace) {
@@ -199,7 +215,8 @@ Made make_file(Variant variant) {
         if (h == ours) doc["nodes"][static_cast<std::size_t>(j)]["name"] = theirs;
     }
   }
-  made.bytes = pack_glb({doc.dump(), g.buffer});
+  g.json = doc.dump();
+  made.bytes = pack_glb(g);
   return made;
 }
 
@@ -249,6 +266,10 @@ TEST(AvatarImport, Vrm1InTPoseComesBackOnTheSigningSkeleton) {
   expect_like_the_default(v.avatar);
   // Joints the file lacked were added between its own: lumbar, thoracic, neck.
   for (const char* j : {"vl3", "vt6", "vc4", "l_index_tip", "skull_tip"}) EXPECT_GE(v.avatar.skeleton.find(j), 0) << j;
+  // Materials from the file's material names: the shirt stays cloth, the hair hair.
+  const auto& mats = v.avatar.mesh.materials;
+  EXPECT_GT(std::count(mats.begin(), mats.end(), static_cast<std::uint8_t>(MaterialId::Cloth)), 1000);
+  EXPECT_GT(std::count(mats.begin(), mats.end(), static_cast<std::uint8_t>(MaterialId::Hair)), 100);
   // The face: every channel made (ARKit shapes, visemes mixed, vowels from the expressions).
   for (const char* channel : {"aa", "oh", "E", "PP", "eyeBlink_L", "browInnerUp_R", "mouthOpen", "mouthSmile_L", "tongueOut"})
     EXPECT_GE(v.avatar.mesh.find_morph(channel), 0) << channel;

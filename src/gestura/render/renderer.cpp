@@ -155,7 +155,7 @@ void main() {
   const vec3 fill = vec3(0.7814, 0.1116, 0.6140), rim = vec3(0.2516, 0.4528, -0.8554);
   const vec3 key_color = vec3(1.25, 1.18, 1.08), fill_color = vec3(0.32, 0.36, 0.44), rim_color = vec3(0.70, 0.70, 0.75);
   float open = 1.0 - covered;
-  float key_light = mix(1.0, lit, 0.8) * (1.0 - 0.5 * covered);
+  float key_light = mix(1.0, lit, 0.65) * (1.0 - 0.5 * covered);
   vec3 c = open * albedo * mix(vec3(0.10, 0.09, 0.09), vec3(0.20, 0.22, 0.26), n.y * 0.5 + 0.5);
   c += key_light * diffuse(n, kKey, key_color, albedo, s) + open * diffuse(n, fill, fill_color, albedo, s) +
        diffuse(n, rim, rim_color, albedo, s);
