@@ -24,7 +24,7 @@ const char* kUsage =
     "degrees of freedom, vertex and triangle counts and morph names.\n"
     "\n"
     "PARAMS:\n"
-    "  --avatar SPEC         default (built from the parameters below) or makehuman:DIR\n"
+    "  --avatar SPEC         default (built from the parameters below), makehuman:DIR or FILE.vrm|.glb|.gltf\n"
     "                        (MakeHuman base mesh + default rig; the parameters are then ignored)\n"
     "  --height M            crown to floor in metres (1.0 .. 2.5, default 1.70)\n"
     "  --build X             girth multiplier (0.6 .. 1.6, default 1)\n"
@@ -48,7 +48,7 @@ struct Request {
   gestura::AvatarParams params;
   gestura::AvatarOptions options;
   std::string output;
-  std::string spec = "default";  // --avatar: default or makehuman:DIR
+  std::string spec = "default";  // --avatar: default, makehuman:DIR or an avatar file
 };
 
 Request parse(const std::vector<std::string>& args, std::size_t first) {

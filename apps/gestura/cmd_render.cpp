@@ -20,7 +20,7 @@ its joints keep the avatar's proportions. A .png is one frame (at --time), or wi
 The file appears only when complete.
 
   -o, --output PATH       output file (.png, .gif, .mp4, .webm)
-  --camera LIST           front, side, three-quarter, top, side-section; a comma list
+  --camera LIST           front, side, three-quarter, top, side-section, follow; a comma list
                           (front,side,top) renders a split view   [front]
   --orbit YAW,PITCH,DIST[,X,Y,Z]  free camera: degrees about +Y from the front, degrees up,
                           metres away from the target X,Y,Z (default: the body's centre)
@@ -36,7 +36,8 @@ The file appears only when complete.
   --cpu-skinning          skin on the CPU and upload (comparison path)
   --rest                  the rest pose, no clip (the default)
   --test-motion           the built-in test motion (the right hand waves, 2 s)
-  --avatar SPEC                    default (generated) or makehuman:DIR (MakeHuman assets)
+  --avatar SPEC                    default (generated), makehuman:DIR (MakeHuman assets) or
+                                   FILE.vrm|FILE.glb|FILE.gltf (your rigged avatar: VRM 1.0/0.x, glTF)
   --height M, --build X, --sex S   the avatar, as in gestura avatar export)";
 
 // Fills job.orbit (and whether it aims at the body) from "YAW,PITCH,DIST[,X,Y,Z]".

@@ -33,8 +33,8 @@ some cues did not fit, 1 on malformed subtitles or bad options.
   --slack S           seconds past a cue's end still counted in time  [0.25]
   --size WxH          image size (even sides for video)              [1280x720]
   --fps N             frames per second, 1..120                      [30]
-  --camera LIST       front, side, three-quarter, top, side-section   [front]
-  --avatar SPEC       default (the generated avatar) or makehuman:DIR [default])";
+  --camera LIST       front, side, three-quarter, top, side-section, follow   [front]
+  --avatar SPEC       default (the generated avatar), makehuman:DIR or FILE.vrm|.glb|.gltf [default])";
 
 bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;

@@ -30,13 +30,14 @@ on the avatar's skeleton), or performing a sign written in HamNoSys (Unicode or 
 symbol names, as in gestura sign) or the first (or --gloss NAME) sign of a SiGML file. Opens a window (needs a display; under no display use
 xvfb-run -a gestura view ...).
 
-  --camera PRESET        start camera: front, side, three-quarter, top, side-section  [front]
+  --camera PRESET        start camera: front, side, three-quarter, top, side-section, follow  [front]
   --size WxH             window size                                        [1280x720]
   --background #rrggbb   background colour
   --screenshot PATH.png  save the window after --frames frames and quit (for scripts, Xvfb)
   --frames N             frames before the screenshot                       [30]
   --at SECONDS           start paused at this time of the motion (for screenshots)
-  --avatar SPEC                    default (generated) or makehuman:DIR (MakeHuman assets)
+  --avatar SPEC                    default (generated), makehuman:DIR (MakeHuman assets) or
+                                   FILE.vrm|FILE.glb|FILE.gltf (your rigged avatar: VRM 1.0/0.x, glTF)
   --height M, --build X, --sex S   the avatar, as in gestura avatar export
 
 keys:  space play/pause   , . step one frame back/forward   1 2 3 speed 0.25x 0.5x 1x
@@ -148,7 +149,7 @@ int run(const std::vector<std::string>& args) {
   Renderer renderer(look);
   renderer.upload(subject.mesh);
   renderer.set_occluders(find_occluders(subject.skeleton, subject.mesh));
-  Viewer viewer{ViewerControls(framing_box(subject.mesh, subject.skeleton), start,
+  Viewer viewer{ViewerControls(framing_box(subject.mesh, subject.skeleton, subject.clip ? &*subject.clip : nullptr), start,
                                 static_cast<float>(size.width) / static_cast<float>(size.height))};
   if (start_at) viewer.controls.time = std::min(*start_at, animator.duration()), viewer.controls.playing = false;
   glfwSetWindowUserPointer(window.window(), &viewer);

@@ -18,8 +18,8 @@ namespace {
 constexpr GLint kMorphDeltaUnit = 1, kMorphWeightUnit = 2;
 constexpr GLuint kJointBlockBinding = 0;
 
-// Compiled with "#define MAX_JOINTS n" (n from the GL's uniform block size) and "#define MATERIALS m"
-// (kMaterialCount) prepended.
+// Compiled with "#define MAX_JOINTS n" (n from the GL's uniform block size), "#define MATERIALS m"
+// (kMaterialCount) and "#define MAX_OCCLUDERS k" (kMaxOccluders) prepended.
 constexpr const char* kVertexShader = R"(
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -42,7 +42,42 @@ out vec3 v_world;
 out vec3 v_normal;
 out vec3 v_albedo;   // interpolated, so material borders blend instead of stair-stepping
 out vec4 v_surface;
-flat out uint v_part;
+out vec2 v_occlusion;
+
+uniform int u_occluder_count;
+uniform vec4 u_occluder_a[MAX_OCCLUDERS];  // axis start, radius
+uniform vec4 u_occluder_b[MAX_OCCLUDERS];  // axis end, body part
+const vec3 kKey = vec3(-0.4511, 0.5514, 0.7018);
+
+// Key-light visibility (1 lit, 0 in shadow) and ambient occlusion (0 open .. 1 covered) from the
+// capsules of the other body parts. Shadow: where the ray towards the key passes the capsule's axis
+// closer than its radius, with a penumbra that widens with the distance travelled. Occlusion: the
+// cosine-weighted solid angle of the sphere at the axis point nearest the surface. Per vertex: the
+// mesh is fine enough for shading this soft, and per pixel it cost more than the rest of the shader.
+void occlusion(vec3 p, vec3 n, uint part, out float lit, out float covered) {
+  lit = 1.0;
+  covered = 0.0;
+  for (int i = 0; i < u_occluder_count; ++i) {
+    if (uint(u_occluder_b[i].w) == part) continue;
+    vec3 a = u_occluder_a[i].xyz, b = u_occluder_b[i].xyz;
+    float r = u_occluder_a[i].w;
+    vec3 ab = b - a, pa = a - p;
+    float h = clamp(dot(-pa, ab) / max(dot(ab, ab), 1e-8), 0.0, 1.0);
+    vec3 to = pa + h * ab;
+    float d2 = dot(to, to);
+    if (d2 < r * r) continue;  // inside the capsule: it stands for this surface badly here
+    float d = sqrt(d2);
+    covered += min(0.6, max(dot(n, to / d), 0.0) * r * r / d2);
+    vec3 qa = pa - dot(pa, kKey) * kKey, qd = ab - dot(ab, kKey) * kKey;
+    float s = clamp(-dot(qa, qd) / max(dot(qd, qd), 1e-8), 0.0, 1.0);
+    float t = dot(pa + s * ab, kKey);
+    if (t > 0.0) {
+      float w = 0.005 + 0.07 * t;
+      lit = min(lit, smoothstep(r - w, r + w, length(qa + s * qd)));
+    }
+  }
+  covered = min(covered, 0.75);
+}
 
 mat4 joint_matrix(uint j) { return u_joints[j]; }
 
@@ -68,7 +103,9 @@ void main() {
   uint material = min(a_material, uint(MATERIALS - 1));
   v_albedo = u_albedo[material];
   v_surface = u_surface[material];
-  v_part = a_part;
+  float lit = 1.0, covered = 0.0;
+  if (u_occluder_count > 0) occlusion(p, normalize(n), a_part, lit, covered);
+  v_occlusion = vec2(lit, covered);
   gl_Position = u_view_projection * vec4(p, 1.0);
 }
 )";
@@ -77,30 +114,26 @@ void main() {
 // subsurface look), three soft lights fixed to the avatar (warm key front-right, cool fill
 // front-left, rim from behind), a hemisphere ambient and a Fresnel edge that lifts silhouettes —
 // strongest on dark materials, so a sleeve reads against a shirt of the same cloth.
-// Depth: capsules standing for the arms, hands and head (render/occluders.hpp) cast soft shadows
-// from the key light and occlude ambient light on every other part, so a hand in front of the chest
+// Depth: capsules standing for the arms and hands (render/occluders.hpp; evaluated per vertex) cast
+// soft shadows from the key light and occlude ambient light on every other part, so a hand in front of the chest
 // darkens the chest beside it and the nearer hand darkens the farther one; and surfaces nearer the
 // camera than the framed body plane are a little brighter, farther ones a little darker.
-// Compiled with "#define MAX_OCCLUDERS n" (kMaxOccluders) prepended.
 constexpr const char* kFragmentShader = R"(
 in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_albedo;
 in vec4 v_surface;
-flat in uint v_part;
+in vec2 v_occlusion;   // key-light visibility, ambient occlusion (vertex shader)
 
 uniform vec3 u_eye;
 uniform vec3 u_view_direction;
 uniform bool u_orthographic;
 uniform float u_focus_distance;       // along the view direction: the framed body plane
-uniform int u_occluder_count;
-uniform vec4 u_occluder_a[MAX_OCCLUDERS];  // axis start, radius
-uniform vec4 u_occluder_b[MAX_OCCLUDERS];  // axis end, body part
 
 out vec4 o_color;
 
 const vec3 kScatterTint = vec3(0.85, 0.22, 0.12);
-const vec3 kKey = vec3(-0.4511, 0.5514, 0.7018);
+const vec3 kKey = vec3(-0.4511, 0.5514, 0.7018);  // the key light's direction (the vertex shader's too)
 
 vec3 diffuse(vec3 n, vec3 l, vec3 color, vec3 albedo, vec4 s) {
   float ndl = dot(n, l);
@@ -114,43 +147,13 @@ float specular(vec3 n, vec3 v, vec3 l, vec4 s) {
   return dot(n, l) > 0.0 ? s.z * pow(max(dot(n, normalize(l + v)), 0.0), s.w) : 0.0;
 }
 
-// Key-light visibility (1 lit, 0 in shadow) and ambient occlusion (0 open .. 1 covered) from the
-// capsules of the other body parts. Shadow: where the ray towards the key passes the capsule's axis
-// closer than its radius, with a penumbra that widens with the distance travelled. Occlusion: the
-// cosine-weighted solid angle of the sphere at the axis point nearest the surface.
-void occlusion(vec3 p, vec3 n, out float lit, out float covered) {
-  lit = 1.0;
-  covered = 0.0;
-  for (int i = 0; i < u_occluder_count; ++i) {
-    if (uint(u_occluder_b[i].w) == v_part) continue;
-    vec3 a = u_occluder_a[i].xyz, b = u_occluder_b[i].xyz;
-    float r = u_occluder_a[i].w;
-    vec3 ab = b - a, pa = a - p;
-    float h = clamp(dot(-pa, ab) / max(dot(ab, ab), 1e-8), 0.0, 1.0);
-    vec3 to = pa + h * ab;
-    float d2 = dot(to, to);
-    if (d2 < r * r) continue;  // inside the capsule: it stands for this surface badly here
-    float d = sqrt(d2);
-    covered += min(0.6, max(dot(n, to / d), 0.0) * r * r / d2);
-    vec3 qa = pa - dot(pa, kKey) * kKey, qd = ab - dot(ab, kKey) * kKey;
-    float s = clamp(-dot(qa, qd) / max(dot(qd, qd), 1e-8), 0.0, 1.0);
-    float t = dot(pa + s * ab, kKey);
-    if (t > 0.0) {
-      float w = 0.005 + 0.07 * t;
-      lit = min(lit, smoothstep(r - w, r + w, length(qa + s * qd)));
-    }
-  }
-  covered = min(covered, 0.75);
-}
-
 void main() {
   vec3 n = normalize(v_normal);
   vec3 v = u_orthographic ? -u_view_direction : normalize(u_eye - v_world);
   if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n;
   vec3 albedo = v_albedo;
   vec4 s = v_surface;
-  float lit, covered;
-  occlusion(v_world, n, lit, covered);
+  float lit = v_occlusion.x, covered = v_occlusion.y;
 
   const vec3 fill = vec3(0.7814, 0.1116, 0.6140), rim = vec3(0.2516, 0.4528, -0.8554);
   const vec3 key_color = vec3(1.25, 1.18, 1.08), fill_color = vec3(0.32, 0.36, 0.44), rim_color = vec3(0.70, 0.70, 0.75);
@@ -218,8 +221,9 @@ Renderer::Renderer(const Look& look, int msaa_samples) : gl_(std::make_unique<Gl
   glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &block_bytes);
   max_gpu_joints_ = std::min<std::size_t>(1024, static_cast<std::size_t>(block_bytes) / sizeof(mat4));
   const GLuint vs = compile(GL_VERTEX_SHADER, "#version 330 core\n#define MAX_JOINTS " + std::to_string(max_gpu_joints_) +
-                                                  "\n#define MATERIALS " + std::to_string(kMaterialCount) + kVertexShader);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, "#version 330 core\n#define MAX_OCCLUDERS " + std::to_string(kMaxOccluders) + kFragmentShader);
+                                                  "\n#define MATERIALS " + std::to_string(kMaterialCount) +
+                                                  "\n#define MAX_OCCLUDERS " + std::to_string(kMaxOccluders) + kVertexShader);
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, std::string("#version 330 core\n") + kFragmentShader);
   Gl& g = *gl_;
   g.program = glCreateProgram();
   glAttachShader(g.program, vs);
