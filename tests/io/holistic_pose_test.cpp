@@ -7,9 +7,12 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "gestura/core/error.hpp"
 #include "gestura/io/holistic_landmarks.hpp"
 #include "gestura/io/pose_format.hpp"
+#include "support/build_paths.hpp"
 #include "support/cli.hpp"
 #include "support/signing_avatar.hpp"
 
@@ -246,6 +249,41 @@ TEST(HolisticPoseCli, SayWritesAPoseThatInfoDescribesAndConvertReencodes) {
   EXPECT_EQ(ortho.status, 1);
   EXPECT_NE(ortho.output.find("orthographic"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "top.pose"));
+  std::filesystem::remove_all(dir);
+}
+
+// sign.mt's own reader (the npm package pose-format) reads what gestura writes: the Holistic
+// components and names, and the same numbers as gestura's reader.
+TEST(HolisticPoseCli, PoseFormatsJavaScriptReaderReadsIt) {
+  const std::string reader = test::source_dir() + "/tools/read-pose.mjs";
+  if (!std::filesystem::exists(test::source_dir() + "/tools/node_modules/pose-format"))
+    GTEST_SKIP() << "tools/node_modules/pose-format missing (cd tools && npm install)";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("gestura_posejs_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string out = (dir / "sad.pose").string();
+  ASSERT_EQ(test::run_cli("say sad -o '" + out + "' --size 640x360").status, 0);
+  const test::CliRun read = test::run_command("node '" + reader + "' '" + out + "' 12 2>&1");
+  ASSERT_EQ(read.status, 0) << read.output;
+  const nlohmann::json j = nlohmann::json::parse(read.output);
+  const PoseData ours = load_pose(out);
+  EXPECT_EQ(j["width"], 640);
+  EXPECT_EQ(j["height"], 360);
+  EXPECT_EQ(j["fps"], 30);
+  EXPECT_EQ(j["frames"], ours.frames);
+  ASSERT_EQ(j["components"].size(), 5u);
+  EXPECT_EQ(j["components"][0]["name"], "POSE_LANDMARKS");
+  EXPECT_EQ(j["components"][0]["points"][16], "RIGHT_WRIST");
+  EXPECT_EQ(j["components"][1]["points"].size(), 468u);
+  EXPECT_EQ(j["components"][3]["points"][4], "THUMB_TIP");
+  const std::size_t frame = 12, points = ours.point_count();
+  for (const auto& [component, index] : {std::pair{"POSE_LANDMARKS", 16}, {"FACE_LANDMARKS", 14}, {"LEFT_HAND_LANDMARKS", 8}}) {
+    const std::size_t k = frame * points + static_cast<std::size_t>(pose_component_offset(ours, component) + index);
+    const nlohmann::json& p = j["points"][component][index];
+    EXPECT_FLOAT_EQ(p[0].get<float>(), ours.data[k * 3]) << component;
+    EXPECT_FLOAT_EQ(p[1].get<float>(), ours.data[k * 3 + 1]) << component;
+    EXPECT_FLOAT_EQ(p[3].get<float>(), ours.confidence[k]) << component;
+    EXPECT_EQ(p[3].get<float>(), 1.0f) << component;
+  }
   std::filesystem::remove_all(dir);
 }
 
