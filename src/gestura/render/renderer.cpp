@@ -116,8 +116,9 @@ void main() {
 // strongest on dark materials, so a sleeve reads against a shirt of the same cloth.
 // Depth: capsules standing for the arms and hands (render/occluders.hpp; evaluated per vertex) cast
 // soft shadows from the key light and occlude ambient light on every other part, so a hand in front of the chest
-// darkens the chest beside it and the nearer hand darkens the farther one; and surfaces nearer the
-// camera than the framed body plane are a little brighter, farther ones a little darker.
+// darkens the chest beside it and the nearer hand darkens the farther one; and surfaces farther from
+// the camera than the framed body plane are a little darker (nearer ones are not brightened: hands
+// brightened that way lost the shading a hand detector reads them by).
 constexpr const char* kFragmentShader = R"(
 in vec3 v_world;
 in vec3 v_normal;
@@ -168,7 +169,7 @@ void main() {
   float edge = mix(0.55, 0.25, smoothstep(0.02, 0.25, luminance));
   c += facing * facing * facing * edge * mix(albedo, vec3(0.75, 0.80, 0.88), 0.45);
   float depth = dot(v_world - u_eye, u_view_direction);
-  c *= clamp(1.0 + 0.3 * (u_focus_distance - depth), 0.85, 1.12);
+  c *= clamp(1.0 + 0.3 * (u_focus_distance - depth), 0.85, 1.0);
   c = c / (1.0 + 0.12 * c);   // soft shoulder instead of hard clipping
   o_color = vec4(pow(clamp(c, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0);
 }
