@@ -62,10 +62,9 @@ void blend_three(std::size_t n) {
 void blend_masked_additive(std::size_t n) {
   const Subject& s = subject();
   static Pose out;
-  const BlendLayer layers[] = {{&s.blend_a, 1.0f, {}, 0}, {&s.blend_b, 1.0f, s.upper_body, 1}};
+  const BlendLayer layers[] = {{&s.blend_a, 1.0f, {}, 0}, {&s.blend_b, 1.0f, s.upper_body, 1}, {&s.additive, 0.7f, {}, 0, true}};
   for (std::size_t i = 0; i < n; ++i) {
     blend_layers(layers, s.rest, out);
-    apply_additive(s.additive, 0.7f, {}, out);
     keep(out.rotations.data());
   }
 }

@@ -14,21 +14,7 @@ namespace gestura {
 
 using namespace skinning_detail;
 
-bool cpu_has_avx2_fma() {
-#ifdef GESTURA_SKINNING_HAS_AVX2
-  static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return has;
-#else
-  return false;
-#endif
-}
-
-SkinningPath resolve_skinning_path(SkinningPath requested) {
-  if (requested == SkinningPath::Auto) return cpu_has_avx2_fma() ? SkinningPath::Avx2 : SkinningPath::Portable;
-  if (requested == SkinningPath::Avx2 && !cpu_has_avx2_fma())
-    throw Error("skinning: the AVX2+FMA path was requested but this CPU does not support it");
-  return requested;
-}
+SkinningPath resolve_skinning_path(SkinningPath requested) { return resolve_simd_path(requested, "skinning"); }
 
 void skinning_matrices(std::span<const mat4> model, std::span<const mat4> inverse_bind, std::span<mat4> out) {
   if (model.size() != inverse_bind.size() || model.size() != out.size())

@@ -20,13 +20,12 @@
 
 #include "gestura/body/mesh.hpp"
 #include "gestura/core/math.hpp"
+#include "gestura/core/simd_path.hpp"
 
 namespace gestura {
 
-enum class SkinningPath : std::uint8_t { Auto, Portable, Avx2 };
+using SkinningPath = SimdPath;  // core/simd_path.hpp; cpu_has_avx2_fma() is declared there too
 
-// True when this CPU runs AVX2 and FMA instructions.
-bool cpu_has_avx2_fma();
 // Auto → the best available path. Avx2 on a CPU without it throws gestura::Error.
 SkinningPath resolve_skinning_path(SkinningPath requested);
 
