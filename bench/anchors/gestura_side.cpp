@@ -7,6 +7,7 @@
 #include "gestura/anim/sampler.hpp"
 #include "gestura/body/skinning.hpp"
 #include "gestura/compress/compress.hpp"
+#include "gestura/compress/playback_context.hpp"
 #include "gestura/ik/aim.hpp"
 #include "gestura/ik/two_bone.hpp"
 #include "harness.hpp"
@@ -154,6 +155,7 @@ const CompressedClip& compressed(float bound) {
 
 Side decompress_forward(float bound) {
   struct State {
+    PlaybackContext context;
     Pose pose = subject().rest;
     float t = 0.0f;
   };
@@ -161,7 +163,7 @@ Side decompress_forward(float bound) {
   return {"gestura", [bound, state](std::size_t n) {
             const CompressedClip& c = compressed(bound);
             for (std::size_t i = 0; i < n; ++i) {
-              c.sample(state->t, state->pose);
+              state->context.sample(c, state->t, state->pose);
               keep(state->pose.rotations.data());
               state->t += kForwardStep;
               if (state->t > c.duration()) state->t = 0.0f;
@@ -171,6 +173,7 @@ Side decompress_forward(float bound) {
 
 Side decompress_random(float bound) {
   struct State {
+    PlaybackContext context;
     Pose pose = subject().rest;
     std::size_t k = 0;
   };
@@ -179,7 +182,7 @@ Side decompress_random(float bound) {
             const CompressedClip& c = compressed(bound);
             const std::vector<float>& times = random_times();
             for (std::size_t i = 0; i < n; ++i) {
-              c.sample(times[state->k++ & 4095], state->pose);
+              state->context.sample(c, times[state->k++ & 4095], state->pose);
               keep(state->pose.rotations.data());
             }
           }};

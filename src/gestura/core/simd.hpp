@@ -40,17 +40,28 @@ inline F1 operator/(F1 a, F1 b) { return {a.v / b.v}; }
 inline F1 max(F1 a, F1 b) { return {a.v > b.v ? a.v : b.v}; }  // b when a is NaN, as maxps
 inline F1 select(bool mask, F1 a, F1 b) { return mask ? a : b; }  // a where mask holds, else b
 inline bool any(bool mask) { return mask; }
+inline unsigned bits(bool mask) { return mask ? 1u : 0u; }
+inline F1 sqrt(F1 a) { return {__builtin_sqrtf(a.v)}; }
+inline bool equal(F1 a, F1 b) { return a.v == b.v; }
+inline bool either(bool a, bool b) { return a || b; }
+inline bool load_mask(const int* p, F1) { return *p != 0; }  // nonzero = set
+inline F1 load_int(const int* p, F1) { return {static_cast<float>(*p)}; }
 inline F1 load(const float* p, F1) { return {*p}; }
 inline void store(float* p, F1 a) { *p = a.v; }
 inline F1 set1(float x, F1) { return {x}; }
 // Lanes where `mask` holds get `a` negated.
 inline F1 negate_where(F1 a, bool mask) { return {mask ? -a.v : a.v}; }
 inline bool less(F1 a, F1 b) { return a.v < b.v; }
+inline bool less_equal(F1 a, F1 b) { return a.v <= b.v; }
 inline bool not_equal(F1 a, F1 b) { return a.v != b.v; }
 inline bool both(bool a, bool b) { return a && b; }
 inline F1 rsqrt(F1 a) { return {1.0f / __builtin_sqrtf(a.v)}; }
 inline void load_quats(const float* p, F1& x, F1& y, F1& z, F1& w) { x = {p[0]}, y = {p[1]}, z = {p[2]}, w = {p[3]}; }
 inline void store_quats(float* p, F1 x, F1 y, F1 z, F1 w) { p[0] = x.v, p[1] = y.v, p[2] = z.v, p[3] = w.v; }
+// Lane l's quaternion to dst[l], for lanes below n.
+inline void scatter_quats(F1 x, F1 y, F1 z, F1 w, float* const* dst, std::size_t n) {
+  if (n) dst[0][0] = x.v, dst[0][1] = y.v, dst[0][2] = z.v, dst[0][3] = w.v;
+}
 // Per-item values in the lane order load_quats() gives (F8 permutes; here the identity).
 inline F1 load_in_quat_order(const float* p, F1) { return {*p}; }
 // The per-item value `w` spread over a block of packed vec3: register i holds floats 3·i … of the block.
@@ -72,11 +83,18 @@ inline F4 operator/(F4 a, F4 b) { return {_mm_div_ps(a.v, b.v)}; }
 inline F4 max(F4 a, F4 b) { return {_mm_max_ps(a.v, b.v)}; }
 inline F4 select(F4 mask, F4 a, F4 b) { return {_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v))}; }
 inline bool any(F4 mask) { return _mm_movemask_ps(mask.v) != 0; }
+inline unsigned bits(F4 mask) { return static_cast<unsigned>(_mm_movemask_ps(mask.v)); }  // bit i = lane i
+inline F4 sqrt(F4 a) { return {_mm_sqrt_ps(a.v)}; }
+inline F4 equal(F4 a, F4 b) { return {_mm_cmpeq_ps(a.v, b.v)}; }
+inline F4 either(F4 a, F4 b) { return {_mm_or_ps(a.v, b.v)}; }
+inline F4 load_mask(const int* p, F4) { return {_mm_castsi128_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)))}; }  // all bits per lane
+inline F4 load_int(const int* p, F4) { return {_mm_cvtepi32_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)))}; }
 inline F4 load(const float* p, F4) { return {_mm_loadu_ps(p)}; }
 inline void store(float* p, F4 a) { _mm_storeu_ps(p, a.v); }
 inline F4 set1(float x, F4) { return {_mm_set1_ps(x)}; }
 inline F4 negate_where(F4 a, F4 mask) { return {_mm_xor_ps(a.v, _mm_and_ps(mask.v, _mm_set1_ps(-0.0f)))}; }
 inline F4 less(F4 a, F4 b) { return {_mm_cmplt_ps(a.v, b.v)}; }
+inline F4 less_equal(F4 a, F4 b) { return {_mm_cmple_ps(a.v, b.v)}; }
 inline F4 not_equal(F4 a, F4 b) { return {_mm_cmpneq_ps(a.v, b.v)}; }
 inline F4 both(F4 a, F4 b) { return {_mm_and_ps(a.v, b.v)}; }
 // 1/√x to about 2e-7 relative: the 12-bit estimate refined by one Newton step (cheaper than sqrt + div).
@@ -95,6 +113,12 @@ inline void store_quats(float* p, F4 x, F4 y, F4 z, F4 w) {
   _mm_storeu_ps(p, x.v), _mm_storeu_ps(p + 4, y.v), _mm_storeu_ps(p + 8, z.v), _mm_storeu_ps(p + 12, w.v);
 }
 inline F4 load_in_quat_order(const float* p, F4) { return {_mm_loadu_ps(p)}; }
+inline void scatter_quats(F4 x, F4 y, F4 z, F4 w, float* const* dst, std::size_t n) {
+  _MM_TRANSPOSE4_PS(x.v, y.v, z.v, w.v);
+  const __m128 q[4] = {x.v, y.v, z.v, w.v};
+  for (std::size_t l = 0; l < 4; ++l)
+    if (l < n) _mm_storeu_ps(dst[l], q[l]);
+}
 inline void expand3(F4 w, F4& e0, F4& e1, F4& e2) {
   e0 = {_mm_shuffle_ps(w.v, w.v, _MM_SHUFFLE(1, 0, 0, 0))};  // w0 w0 w0 w1
   e1 = {_mm_shuffle_ps(w.v, w.v, _MM_SHUFFLE(2, 2, 1, 1))};  // w1 w1 w2 w2
@@ -118,11 +142,18 @@ inline F8 operator/(F8 a, F8 b) { return {_mm256_div_ps(a.v, b.v)}; }
 inline F8 max(F8 a, F8 b) { return {_mm256_max_ps(a.v, b.v)}; }
 inline F8 select(F8 mask, F8 a, F8 b) { return {_mm256_blendv_ps(b.v, a.v, mask.v)}; }
 inline bool any(F8 mask) { return _mm256_movemask_ps(mask.v) != 0; }
+inline unsigned bits(F8 mask) { return static_cast<unsigned>(_mm256_movemask_ps(mask.v)); }
+inline F8 sqrt(F8 a) { return {_mm256_sqrt_ps(a.v)}; }
+inline F8 equal(F8 a, F8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_EQ_OQ)}; }
+inline F8 either(F8 a, F8 b) { return {_mm256_or_ps(a.v, b.v)}; }
+inline F8 load_mask(const int* p, F8) { return {_mm256_castsi256_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)))}; }
+inline F8 load_int(const int* p, F8) { return {_mm256_cvtepi32_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)))}; }
 inline F8 load(const float* p, F8) { return {_mm256_loadu_ps(p)}; }
 inline void store(float* p, F8 a) { _mm256_storeu_ps(p, a.v); }
 inline F8 set1(float x, F8) { return {_mm256_set1_ps(x)}; }
 inline F8 negate_where(F8 a, F8 mask) { return {_mm256_xor_ps(a.v, _mm256_and_ps(mask.v, _mm256_set1_ps(-0.0f)))}; }
 inline F8 less(F8 a, F8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ)}; }
+inline F8 less_equal(F8 a, F8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_LE_OQ)}; }
 inline F8 not_equal(F8 a, F8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_NEQ_UQ)}; }
 inline F8 both(F8 a, F8 b) { return {_mm256_and_ps(a.v, b.v)}; }
 inline F8 rsqrt(F8 a) {
@@ -154,6 +185,17 @@ inline void store_quats(float* p, F8 x, F8 y, F8 z, F8 w) {
 }
 inline F8 load_in_quat_order(const float* p, F8) {
   return {_mm256_permutevar8x32_ps(_mm256_loadu_ps(p), _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7))};
+}
+// Lane l (natural order) of x, y, z, w as one quaternion to dst[l], for lanes below n.
+inline void scatter_quats(F8 x, F8 y, F8 z, F8 w, float* const* dst, std::size_t n) {
+  const __m256 t0 = _mm256_unpacklo_ps(x.v, y.v), t1 = _mm256_unpackhi_ps(x.v, y.v);
+  const __m256 t2 = _mm256_unpacklo_ps(z.v, w.v), t3 = _mm256_unpackhi_ps(z.v, w.v);
+  const __m256 r[4] = {_mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2)),
+                       _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2))};
+  for (std::size_t l = 0; l < 4; ++l) {  // r[l] holds lane l (low half) and lane l + 4 (high half)
+    if (l < n) _mm_storeu_ps(dst[l], _mm256_castps256_ps128(r[l]));
+    if (l + 4 < n) _mm_storeu_ps(dst[l + 4], _mm256_extractf128_ps(r[l], 1));
+  }
 }
 inline void expand3(F8 w, F8& e0, F8& e1, F8& e2) {
   e0 = {_mm256_permutevar8x32_ps(w.v, _mm256_setr_epi32(0, 0, 0, 1, 1, 1, 2, 2))};
