@@ -84,13 +84,8 @@ void PlaybackContext::sample(const CompressedClip& clip, float time, Pose& out, 
                 std::to_string(n));
   if (clip_ != &clip || clip_bytes_ != clip.bytes().data() || base_.size() != n) bind(clip);
 
-  // The frame position exactly as CompressedClip::sample computes it.
   const std::uint32_t frames = clip.frame_count();
-  const float last = static_cast<float>(frames - 1);
-  float x = time * clip.sample_rate();
-  x = x > 0.0f ? (x < last ? x : last) : 0.0f;  // also maps NaN to 0
-  std::uint32_t frame = static_cast<std::uint32_t>(x);
-  if (frames >= 2 && frame > frames - 2) frame = frames - 2;
+  const auto [x, frame] = frame_position(time, clip.sample_rate(), frames);
 
   std::copy(base_.rotations.begin(), base_.rotations.end(), out.rotations.begin());
   std::copy(base_.translations.begin(), base_.translations.end(), out.translations.begin());
