@@ -43,26 +43,37 @@ BlendSource source_of(const Pose& pose, const float* weights, float weight) {
   return {&pose.rotations[0].x, &pose.translations[0].x, &pose.scales[0].x, weights, weight};
 }
 
-void check_pose(const Pose* pose, std::size_t n, const char* what, std::size_t index) {
-  if (!pose) throw Error(std::string(what) + ": layer " + std::to_string(index) + " has no pose");
-  if (pose->size() != n || pose->translations.size() != n || pose->scales.size() != n)
-    throw Error(std::string(what) + ": layer " + std::to_string(index) + " has " + std::to_string(pose->size()) +
-                " joints, expected " + std::to_string(n));
-}
-
-void check_mask(std::span<const float> mask, std::size_t n, const char* what, std::size_t index) {
+[[noreturn, gnu::cold]] void fail_layer(const Pose* pose, std::span<const float> mask, std::size_t n, const char* what,
+                                        std::size_t index) {
+  const std::string layer = std::string(what) + ": layer " + std::to_string(index);
+  if (!pose) throw Error(layer + " has no pose");
   if (!mask.empty() && mask.size() < n)
-    throw Error(std::string(what) + ": layer " + std::to_string(index) + " has " + std::to_string(mask.size()) +
-                " joint weights for " + std::to_string(n) + " joints");
+    throw Error(layer + " has " + std::to_string(mask.size()) + " joint weights for " + std::to_string(n) + " joints");
+  throw Error(layer + " has " + std::to_string(pose->size()) + " joints, expected " + std::to_string(n));
 }
 
-void run(const BlendJob& job, SimdPath path, const char* what) {
+// Every array of the pose holds n joints, the mask none or at least n.
+inline void check_layer(const Pose* pose, std::span<const float> mask, std::size_t n, const char* what, std::size_t index) {
+  if (!pose || pose->rotations.size() != n || pose->translations.size() != n || pose->scales.size() != n ||
+      (!mask.empty() && mask.size() < n)) [[unlikely]]
+    fail_layer(pose, mask, n, what, index);
+}
+
+inline void size_output(Pose& out, std::size_t n) {
+  if (out.rotations.size() != n || out.translations.size() != n || out.scales.size() != n) out.resize(n);
+}
+
+// `path` is resolved (Portable or Avx2).
+void run(const BlendJob& job, SimdPath path) {
 #ifdef GESTURA_HAS_AVX2_PATH
-  if (resolve_simd_path(path, what) == SimdPath::Avx2) return blend_detail::run_avx2(job);
-#else
-  resolve_simd_path(path, what);
+  if (path == SimdPath::Avx2) return blend_detail::run_avx2(job);
 #endif
   blend_detail::run_portable(job);
+}
+
+inline SimdPath resolve(SimdPath path, const char* what) {
+  if (path == SimdPath::Auto) return cpu_has_avx2_fma() ? SimdPath::Avx2 : SimdPath::Portable;
+  return resolve_simd_path(path, what);
 }
 
 // The blended (non-additive) layers as sources whose weights sum to 1 on every joint.
@@ -121,13 +132,34 @@ void plan_sources(std::span<const BlendLayer> layers, const Pose& rest, SimdPath
 
 void blend_layers(std::span<const BlendLayer> layers, const Pose& rest, Pose& out, SimdPath path) {
   const std::size_t n = rest.size();
-  if (rest.translations.size() != n || rest.scales.size() != n) throw Error("blend_layers: rest pose arrays disagree in size");
+  check_layer(&rest, {}, n, "blend_layers (rest pose)", 0);
+  // The common case — no masks, one priority, a few layers — is planned on the stack, weights
+  // normalised once here; everything else goes through plan_sources.
+  constexpr std::size_t kFew = 8;
+  bool simple = layers.size() <= kFew;
+  float sum = 0.0f;
+  const int priority = layers.empty() ? 0 : layers[0].priority;
   for (std::size_t i = 0; i < layers.size(); ++i) {
-    check_pose(layers[i].pose, n, "blend_layers", i);
-    check_mask(layers[i].joint_weights, n, "blend_layers", i);
+    const BlendLayer& l = layers[i];
+    check_layer(l.pose, l.joint_weights, n, "blend_layers", i);
+    simple &= l.joint_weights.empty() && (l.additive || l.priority == priority);
+    if (!l.additive) sum += std::max(0.0f, l.weight);
   }
-  out.resize(n);
+  path = resolve(path, "blend_layers");
+  size_output(out, n);
   if (n == 0) return;
+  if (simple) {
+    BlendSource sources[kFew + 1], additive[kFew];
+    std::size_t source_count = 0, additive_count = 0;
+    for (const BlendLayer& l : layers) {
+      if (l.additive) additive[additive_count++] = source_of(*l.pose, nullptr, l.weight);
+      else if (l.weight > 0.0f && sum > 1e-6f) sources[source_count++] = source_of(*l.pose, nullptr, l.weight / sum);
+    }
+    if (source_count == 0) sources[source_count++] = source_of(rest, nullptr, 1.0f);
+    run({n, sources, source_count, additive, additive_count, &out.rotations[0].x, &out.translations[0].x, &out.scales[0].x},
+        path);
+    return;
+  }
   BlendScratch& s = scratch();
   s.sources.clear();
   s.additive.clear();
@@ -139,7 +171,6 @@ void blend_layers(std::span<const BlendLayer> layers, const Pose& rest, Pose& ou
     else if (!l.joint_weights.empty()) ++masked_additive;
   }
   s.weights.resize((blended + 1 + masked_additive) * n);
-  path = resolve_simd_path(path, "blend_layers");
   plan_sources(layers, rest, path, s);
   float* row = s.weights.data() + (blended + 1) * n;
   for (const BlendLayer& l : layers) {
@@ -152,9 +183,9 @@ void blend_layers(std::span<const BlendLayer> layers, const Pose& rest, Pose& ou
     s.additive.push_back(source_of(*l.pose, row, 0.0f));
     row += n;
   }
-  const BlendJob job{n, s.sources.data(), s.sources.size(), s.additive.data(), s.additive.size(),
-                     &out.rotations[0].x, &out.translations[0].x, &out.scales[0].x};
-  run(job, path, "blend_layers");
+  run({n, s.sources.data(), s.sources.size(), s.additive.data(), s.additive.size(), &out.rotations[0].x,
+       &out.translations[0].x, &out.scales[0].x},
+      path);
 }
 
 void make_additive(const Pose& reference, const Pose& pose, Pose& delta) {
@@ -171,8 +202,7 @@ void make_additive(const Pose& reference, const Pose& pose, Pose& delta) {
 void apply_additive(const Pose& delta, float weight, std::span<const float> joint_weights, Pose& inout,
                     SimdPath path) {
   const std::size_t n = inout.size();
-  check_pose(&delta, n, "apply_additive", 0);
-  check_mask(joint_weights, n, "apply_additive", 0);
+  check_layer(&delta, joint_weights, n, "apply_additive", 0);
   if (n == 0) return;
   const BlendLayer layers[] = {{&inout, 1.0f}, {&delta, weight, joint_weights, 0, true}};
   blend_layers(layers, inout, inout, path);
@@ -180,12 +210,13 @@ void apply_additive(const Pose& delta, float weight, std::span<const float> join
 
 void crossfade(const Pose& a, const Pose& b, float t, Pose& out, SimdPath path) {
   const std::size_t n = a.size();
-  check_pose(&b, n, "crossfade", 1);
-  out.resize(n);
+  check_layer(&a, {}, n, "crossfade", 0);
+  check_layer(&b, {}, n, "crossfade", 1);
+  path = resolve(path, "crossfade");
+  size_output(out, n);
   if (n == 0) return;
   const BlendSource sources[] = {source_of(a, nullptr, 1.0f - t), source_of(b, nullptr, t)};
-  const BlendJob job{n, sources, 2, nullptr, 0, &out.rotations[0].x, &out.translations[0].x, &out.scales[0].x};
-  run(job, path, "crossfade");
+  run({n, sources, 2, nullptr, 0, &out.rotations[0].x, &out.translations[0].x, &out.scales[0].x}, path);
 }
 
 float crossfade_weight(float t, float length) {

@@ -240,13 +240,20 @@ inline bool plan_block(const PlanJob& job, std::size_t j) {
       ++k;
     } while (k < job.layer_count && !job.layers[k].starts_level);
     const V room = one - claimed;
-    const V fit = select(less(room, sum), select(less(zero, sum), room / sum, zero), one);
-    claimed = fmadd(sum, fit, claimed);
-    for (std::size_t r = first; r < k; ++r) store(job.layers[r].row + j, load(job.layers[r].row + j, V{}) * fit);
+    const auto over = less(room, sum);
+    if (any(over)) {  // the level does not fit everywhere: scale it into the room left
+      const V fit = select(over, select(less(zero, sum), room / sum, zero), one);
+      claimed = fmadd(sum, fit, claimed);
+      for (std::size_t r = first; r < k; ++r) store(job.layers[r].row + j, load(job.layers[r].row + j, V{}) * fit);
+    } else {
+      claimed = claimed + sum;
+    }
   }
   const auto touched = less(set1(1e-6f, V{}), claimed);
-  const V inv = select(touched, one / claimed, zero);
-  for (std::size_t r = 0; r < job.layer_count; ++r) store(job.layers[r].row + j, load(job.layers[r].row + j, V{}) * inv);
+  if (any(not_equal(claimed, one))) {  // divide by what was claimed (nothing to do where that is 1)
+    const V inv = select(touched, one / claimed, zero);
+    for (std::size_t r = 0; r < job.layer_count; ++r) store(job.layers[r].row + j, load(job.layers[r].row + j, V{}) * inv);
+  }
   const V rest = select(touched, zero, one);
   store(job.rest_row + j, rest);
   return any(less(zero, rest));
