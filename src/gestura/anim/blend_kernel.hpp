@@ -67,33 +67,37 @@ namespace {
 
 using namespace gestura::simd;
 
-template <class V>
+// Scalar: every source of the job has one weight for all joints (known at compile time, so the
+// common case carries no per-source test).
+template <class V, bool Scalar = false>
 inline V weight_at(const BlendSource& s, std::size_t j) {
+  if constexpr (Scalar) return set1(s.weight, V{});
   return s.weights ? load(s.weights + j, V{}) : set1(s.weight, V{});
 }
 // The same weights in the lane order of load_quats.
-template <class V>
+template <class V, bool Scalar = false>
 inline V quat_weight_at(const BlendSource& s, std::size_t j) {
+  if constexpr (Scalar) return set1(s.weight, V{});
   return s.weights ? load_in_quat_order(s.weights + j, V{}) : set1(s.weight, V{});
 }
 
 // The weights of a block of joints spread over the block's packed vec3 (3 registers).
-template <class V>
+template <class V, bool Scalar = false>
 inline void spread(const BlendSource& s, V w, V& e0, V& e1, V& e2) {
-  if (s.weights) expand3(w, e0, e1, e2);
+  if (!Scalar && s.weights) expand3(w, e0, e1, e2);
   else e0 = e1 = e2 = w;
 }
 
 // Joints [j, j + kLanes): sources from joint j on, output at `rotations`/`translations`/`scales`.
 // Rotations first, then translations and scales: fewer values live at once, no register spills.
-template <class V>
+template <class V, bool Scalar = false>
 inline void blend_block(const BlendJob& job, std::size_t j, float* rotations, float* translations, float* scales) {
   constexpr std::size_t L = V::kLanes;
   const V zero = set1(0.0f, V{}), one = set1(1.0f, V{});
   V ax, ay, az, aw;
   {
     const BlendSource& src = job.sources[0];
-    const V w = quat_weight_at<V>(src, j);
+    const V w = quat_weight_at<V, Scalar>(src, j);
     load_quats(src.rotations + 4 * j, ax, ay, az, aw);
     ax = w * ax, ay = w * ay, az = w * az, aw = w * aw;
   }
@@ -102,12 +106,12 @@ inline void blend_block(const BlendJob& job, std::size_t j, float* rotations, fl
     V qx, qy, qz, qw;
     load_quats(src.rotations + 4 * j, qx, qy, qz, qw);
     const V dot = fmadd(ax, qx, ay * qy) + fmadd(az, qz, aw * qw);
-    const V w = negate_where(quat_weight_at<V>(src, j), less(dot, zero));  // stay on the hemisphere of the sum
+    const V w = negate_where(quat_weight_at<V, Scalar>(src, j), less(dot, zero));  // stay on the hemisphere of the sum
     ax = fmadd(w, qx, ax), ay = fmadd(w, qy, ay), az = fmadd(w, qz, az), aw = fmadd(w, qw, aw);
   }
   for (std::size_t k = 0; k < job.additive_count; ++k) {
     const BlendSource& src = job.additive[k];
-    const V w = quat_weight_at<V>(src, j);
+    const V w = quat_weight_at<V, Scalar>(src, j);
     V dx, dy, dz, dw;
     load_quats(src.rotations + 4 * j, dx, dy, dz, dw);
     // nlerp(identity, d, w) before normalising: d taken onto identity's hemisphere unless w is 1
@@ -129,21 +133,21 @@ inline void blend_block(const BlendJob& job, std::size_t j, float* rotations, fl
   V t0, t1, t2, s0, s1, s2, e0, e1, e2;
   {
     const BlendSource& src = job.sources[0];
-    spread(src, weight_at<V>(src, j), e0, e1, e2);
+    spread<V, Scalar>(src, weight_at<V, Scalar>(src, j), e0, e1, e2);
     t0 = e0 * load(src.translations + at, V{}), s0 = e0 * load(src.scales + at, V{});
     t1 = e1 * load(src.translations + at + L, V{}), s1 = e1 * load(src.scales + at + L, V{});
     t2 = e2 * load(src.translations + at + 2 * L, V{}), s2 = e2 * load(src.scales + at + 2 * L, V{});
   }
   for (std::size_t k = 1; k < job.source_count; ++k) {
     const BlendSource& src = job.sources[k];
-    spread(src, weight_at<V>(src, j), e0, e1, e2);
+    spread<V, Scalar>(src, weight_at<V, Scalar>(src, j), e0, e1, e2);
     t0 = fmadd(e0, load(src.translations + at, V{}), t0), s0 = fmadd(e0, load(src.scales + at, V{}), s0);
     t1 = fmadd(e1, load(src.translations + at + L, V{}), t1), s1 = fmadd(e1, load(src.scales + at + L, V{}), s1);
     t2 = fmadd(e2, load(src.translations + at + 2 * L, V{}), t2), s2 = fmadd(e2, load(src.scales + at + 2 * L, V{}), s2);
   }
   for (std::size_t k = 0; k < job.additive_count; ++k) {
     const BlendSource& src = job.additive[k];
-    spread(src, weight_at<V>(src, j), e0, e1, e2);
+    spread<V, Scalar>(src, weight_at<V, Scalar>(src, j), e0, e1, e2);
     t0 = fmadd(e0, load(src.translations + at, V{}), t0);
     t1 = fmadd(e1, load(src.translations + at + L, V{}), t1);
     t2 = fmadd(e2, load(src.translations + at + 2 * L, V{}), t2);
@@ -206,19 +210,29 @@ inline bool output_is_separate(const BlendJob& job) {
   return true;
 }
 
-template <class V>
-inline void run(const BlendJob& job) {
+template <class V, bool Scalar>
+inline void run_blocks(const BlendJob& job) {
   constexpr std::size_t L = V::kLanes;
   std::size_t j = 0;
-  for (; j + L <= job.count; j += L) blend_block<V>(job, j, job.rotations + 4 * j, job.translations + 3 * j, job.scales + 3 * j);
+  for (; j + L <= job.count; j += L)
+    blend_block<V, Scalar>(job, j, job.rotations + 4 * j, job.translations + 3 * j, job.scales + 3 * j);
   if (j == job.count) return;
   if (job.count >= L && output_is_separate(job)) {
     // The last block again, ending at the last joint: joints it repeats get the same values.
     j = job.count - L;
-    blend_block<V>(job, j, job.rotations + 4 * j, job.translations + 3 * j, job.scales + 3 * j);
+    blend_block<V, Scalar>(job, j, job.rotations + 4 * j, job.translations + 3 * j, job.scales + 3 * j);
   } else {
     blend_remainder<V>(job, j);
   }
+}
+
+template <class V>
+inline void run(const BlendJob& job) {
+  bool scalar = true;
+  for (std::size_t k = 0; k < job.source_count; ++k) scalar &= job.sources[k].weights == nullptr;
+  for (std::size_t k = 0; k < job.additive_count; ++k) scalar &= job.additive[k].weights == nullptr;
+  if (scalar) run_blocks<V, true>(job);
+  else run_blocks<V, false>(job);
 }
 
 // Joints [j, j + kLanes) of a plan; returns whether one of them takes the rest pose. Writes only
