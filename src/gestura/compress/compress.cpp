@@ -466,9 +466,6 @@ class Encoder {
 
   float max_error() const { return *std::max_element(joint_error_.begin(), joint_error_.end()); }
   const std::vector<EncodedTrack>& tracks() const { return tracks_; }
-  std::vector<EncodedTrack>& tracks() { return tracks_; }
-  const std::vector<std::size_t>& subtree(std::size_t j) const { return subtree_[j]; }
-  std::size_t joints() const { return n_; }
 
   // Restores a whole state (tracks) saved earlier by copying tracks(): re-decodes and re-measures all.
   void reset_to(const std::vector<EncodedTrack>& tracks) {
