@@ -140,7 +140,7 @@ TEST(MotionOutputCli, UnknownOutputExtensionIsAClearErrorAndWritesNothing) {
   EXPECT_NE(reach.output.find(".mp4"), std::string::npos) << "lists what it can write: " << reach.output;
   EXPECT_FALSE(fs::exists(out));
   const CliRun sign = run_cli(std::string("sign --names ") + kFlatHandAtChest + " -o " + out.string());
-  EXPECT_EQ(sign.status, 1);
+  EXPECT_EQ(sign.status, 2) << "a usage error";
   EXPECT_NE(sign.output.find("cannot write"), std::string::npos) << sign.output;
   EXPECT_FALSE(fs::exists(out));
 }

@@ -6,7 +6,7 @@
 #include "gestura/text/english_words.hpp"
 #include "gestura/text/lemmatizer.hpp"
 #include "gestura/text/tokenizer.hpp"
-#include "gestura/text/utf8.hpp"
+#include "gestura/core/utf8.hpp"
 
 namespace gestura {
 

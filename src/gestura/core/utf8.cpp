@@ -1,4 +1,4 @@
-#include "gestura/text/utf8.hpp"
+#include "gestura/core/utf8.hpp"
 
 #include "gestura/core/error.hpp"
 
