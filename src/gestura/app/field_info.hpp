@@ -18,6 +18,7 @@ struct FieldInfo {
   bool negated = false;         // a bool that defaults to true; the command line has --no-NAME
   bool required = false;        // must be given (a non-empty string, an optional with a value)
   std::string_view group = {};  // a heading the command line's help lists it under ("Avatar", "Output")
+  std::string_view unset = {};  // what an absent optional value means, for help ("30", "the input's rate")
 };
 
 }  // namespace gestura::app

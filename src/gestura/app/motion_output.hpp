@@ -27,7 +27,7 @@ struct PictureOptions {
   template <class Self, class Visit>
   static void fields(Self& self, Visit&& visit) {
     visit(self.size, FieldInfo{.name = "size", .help = "image size, 16..4096 per side, at most 4096x2304 pixels", .value = "WxH", .group = "Output"});
-    visit(self.fps, FieldInfo{.name = "fps", .help = "frames per second (default 30)", .value = "N", .min = 1, .max = kMaxFps, .group = "Output"});
+    visit(self.fps, FieldInfo{.name = "fps", .help = "frames per second", .value = "N", .min = 1, .max = kMaxFps, .group = "Output", .unset = "30"});
     visit(self.camera, FieldInfo{.name = "camera", .help = "front, side, three-quarter, top, side-section; a comma list (front,side) renders a split view", .value = "LIST", .group = "Output"});
   }
 };

@@ -10,9 +10,11 @@
 namespace gestura::app {
 namespace {
 
+// Whole numbers in full ("1000000"), others as %g ("0.25", "1e-06").
 std::string shown(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
+  if (std::isfinite(v) && v == std::floor(v) && std::abs(v) < 1e15) std::snprintf(buf, sizeof buf, "%.0f", v);
+  else std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
 }
 

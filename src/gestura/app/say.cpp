@@ -28,8 +28,7 @@ void validate(const SayRequest& request) {
 
 SayResult run(const SayRequest& request, const RunContext& context) {
   validate(request);
-  Workspace local;
-  Workspace& workspace = context.workspace ? *context.workspace : local;
+  RunWorkspace workspace(context);
   const MotionOutput out = sentence_output(request);
   SayOptions options;
   options.speed = request.speed;
@@ -38,14 +37,14 @@ SayResult run(const SayRequest& request, const RunContext& context) {
   options.nonmanuals = request.nonmanuals;
   options.fps = static_cast<float>(out.picture.rate());
 
-  const Signer& signer = workspace.signer(request.avatar);
+  const Signer& signer = workspace->signer(request.avatar);
   context.check_stop();
   SayResult result;
   result.performance = as_field_error(ErrorCategory::input, "text", [&] { return signer.say(request.text, options); });
   for (const std::string& n : result.performance.notes) result.notices.push_back(note(n));
   context.check_stop();
   if (!out.output.empty()) {
-    const Avatar& avatar = workspace.avatar(request.avatar);
+    const Avatar& avatar = workspace->avatar(request.avatar);
     result.written = write_motion(out, avatar.skeleton, result.performance.clip, &avatar.mesh,
                                   0.5f * result.performance.duration, context);
   }

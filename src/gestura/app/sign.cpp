@@ -15,10 +15,9 @@ SignResult run(const SignRequest& request, const RunContext& context) {
   validate(request);
   // The notation first: a bad sign fails before the avatar is built.
   const LoadedSign sign = load_sign(request.source);
-  Workspace local;
-  Workspace& workspace = context.workspace ? *context.workspace : local;
-  const Avatar& avatar = workspace.avatar(request.avatar);
-  const SigningRig& rig = workspace.rig(request.avatar);
+  RunWorkspace workspace(context);
+  const Avatar& avatar = workspace->avatar(request.avatar);
+  const SigningRig& rig = workspace->rig(request.avatar);
   context.check_stop();
 
   PlanOptions plan;

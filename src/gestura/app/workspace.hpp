@@ -9,6 +9,7 @@
 #include <string>
 
 #include "gestura/app/avatar_choice.hpp"
+#include "gestura/app/context.hpp"
 #include "gestura/body/avatar.hpp"
 #include "gestura/lexicon/default_lexicon.hpp"
 #include "gestura/sentence/signer.hpp"
@@ -44,5 +45,18 @@ class Workspace {
   LayeredLexicon& lexicon_locked();
 };
 
+
+// The workspace a run uses: the context's, or one of its own for this run only.
+class RunWorkspace {
+ public:
+  explicit RunWorkspace(const RunContext& context)
+      : own_(context.workspace ? nullptr : std::make_unique<Workspace>()), used_(context.workspace ? context.workspace : own_.get()) {}
+  Workspace* operator->() const { return used_; }
+  Workspace& operator*() const { return *used_; }
+
+ private:
+  std::unique_ptr<Workspace> own_;
+  Workspace* used_;
+};
 
 }  // namespace gestura::app

@@ -1,5 +1,11 @@
 #include "gestura/core/utf8.hpp"
 
+#include <unicode/bytestream.h>
+#include <unicode/locid.h>
+#include <unicode/normalizer2.h>
+#include <unicode/uchar.h>
+#include <unicode/unistr.h>
+
 #include "gestura/core/error.hpp"
 
 namespace gestura::utf8 {
@@ -10,14 +16,32 @@ namespace {
   throw Error("invalid UTF-8 at byte " + std::to_string(pos) + " (the text must be UTF-8)");
 }
 
+const icu::Normalizer2& normalizer(bool compose) {
+  UErrorCode status = U_ZERO_ERROR;
+  const icu::Normalizer2* n = compose ? icu::Normalizer2::getNFCInstance(status) : icu::Normalizer2::getNFDInstance(status);
+  if (U_FAILURE(status) || n == nullptr) throw Error(std::string("ICU normaliser unavailable: ") + u_errorName(status));
+  return *n;
+}
+
+icu::UnicodeString unicode(std::string_view text) {
+  validate(text);  // ICU would replace bad bytes silently
+  return icu::UnicodeString::fromUTF8(icu::StringPiece(text.data(), static_cast<std::int32_t>(text.size())));
+}
+
+std::string to_utf8(const icu::UnicodeString& text) {
+  std::string out;
+  text.toUTF8String(out);
+  return out;
+}
+
 }  // namespace
 
-char32_t next(std::string_view text, std::size_t& pos) {
-  const std::size_t start = pos;
+bool decode(std::string_view text, std::size_t& pos, char32_t& out) {
   const auto lead = static_cast<unsigned char>(text[pos]);
   if (lead < 0x80) {
+    out = lead;
     ++pos;
-    return lead;
+    return true;
   }
   int extra = 0;
   char32_t cp = 0;
@@ -31,17 +55,24 @@ char32_t next(std::string_view text, std::size_t& pos) {
     extra = 3;
     cp = lead & 0x07;
   } else {
-    invalid(start);
+    return false;
   }
-  if (pos + static_cast<std::size_t>(extra) >= text.size()) invalid(start);  // truncated at the end
+  if (pos + static_cast<std::size_t>(extra) >= text.size()) return false;  // truncated at the end
   for (int i = 1; i <= extra; ++i) {
     const auto byte = static_cast<unsigned char>(text[pos + static_cast<std::size_t>(i)]);
-    if ((byte & 0xC0) != 0x80) invalid(start);
+    if ((byte & 0xC0) != 0x80) return false;
     cp = (cp << 6) | (byte & 0x3F);
   }
   static constexpr char32_t kMinimum[] = {0, 0x80, 0x800, 0x10000};
-  if (cp < kMinimum[extra] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) invalid(start);
+  if (cp < kMinimum[extra] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return false;
   pos += static_cast<std::size_t>(extra) + 1;
+  out = cp;
+  return true;
+}
+
+char32_t next(std::string_view text, std::size_t& pos) {
+  char32_t cp = 0;
+  if (!decode(text, pos, cp)) invalid(pos);
   return cp;
 }
 
@@ -67,76 +98,52 @@ void append(std::string& out, char32_t cp) {
   }
 }
 
-// Case pairs of the alphabets names commonly come in: Latin-1, Latin Extended-A (alternating
-// upper/lower pairs), Greek and Cyrillic. Other scripts have no case or are left as they are.
-namespace {
-bool latin_ext_pair(char32_t cp) { return (cp >= 0x100 && cp <= 0x137) || (cp >= 0x14A && cp <= 0x177); }
-// Ĺ..ň and Ź..ž pair the other way round: odd code points are the capitals.
-bool latin_ext_odd_pair(char32_t cp) { return (cp >= 0x139 && cp <= 0x148) || (cp >= 0x179 && cp <= 0x17E); }
-}  // namespace
+char32_t to_lower(char32_t cp) { return static_cast<char32_t>(u_tolower(static_cast<UChar32>(cp))); }
+char32_t to_upper(char32_t cp) { return static_cast<char32_t>(u_toupper(static_cast<UChar32>(cp))); }
 
-char32_t to_lower(char32_t cp) {
-  if (cp >= 'A' && cp <= 'Z') return cp + 32;
-  if (cp >= 0xC0 && cp <= 0xDE && cp != 0xD7) return cp + 32;
-  if (latin_ext_pair(cp) && cp % 2 == 0) return cp + 1;
-  if (latin_ext_odd_pair(cp) && cp % 2 == 1) return cp + 1;
-  if (cp >= 0x391 && cp <= 0x3A9 && cp != 0x3A2) return cp + 32;
-  if (cp >= 0x410 && cp <= 0x42F) return cp + 32;
-  if (cp >= 0x400 && cp <= 0x40F) return cp + 80;
-  return cp;
+char32_t base_letter(char32_t cp) {
+  if (cp < 0xC0) return cp;  // ASCII and Latin-1 symbols: nothing to take off
+  icu::UnicodeString decomposed;
+  if (!normalizer(false).getDecomposition(static_cast<UChar32>(cp), decomposed)) return cp;
+  // getDecomposition gives the full canonical decomposition (for NFD).
+  const UChar32 base = decomposed.char32At(0);
+  for (std::int32_t i = U16_LENGTH(base); i < decomposed.length();) {
+    const UChar32 c = decomposed.char32At(i);
+    if (!is_mark(static_cast<char32_t>(c))) return cp;
+    i += U16_LENGTH(c);
+  }
+  return static_cast<char32_t>(base);
 }
 
-char32_t to_upper(char32_t cp) {
-  if (cp >= 'a' && cp <= 'z') return cp - 32;
-  if (cp >= 0xE0 && cp <= 0xFE && cp != 0xF7) return cp - 32;
-  if (latin_ext_pair(cp) && cp % 2 == 1) return cp - 1;
-  if (latin_ext_odd_pair(cp) && cp % 2 == 0) return cp - 1;
-  if (cp >= 0x3B1 && cp <= 0x3C9 && cp != 0x3C2) return cp - 32;
-  if (cp >= 0x430 && cp <= 0x44F) return cp - 32;
-  if (cp >= 0x450 && cp <= 0x45F) return cp - 80;
-  return cp;
-}
+bool is_mark(char32_t cp) { return (U_GET_GC_MASK(static_cast<UChar32>(cp)) & U_GC_M_MASK) != 0; }
 
-char32_t strip_accent(char32_t cp) {
-  // Latin-1 letters À..ÿ by their base letter; 0 marks the non-letters × and ÷ and letters
-  // without a single base (Æ, Ð, Ø, Þ, ß).
-  static constexpr char kBase[] = "AAAAAA\0CEEEEIIII\0NOOOOO\0\0UUUUY\0\0aaaaaa\0ceeeeiiii\0nooooo\0\0uuuuy\0y";
-  if (cp < 0xC0 || cp > 0xFF) return cp;
-  const char base = kBase[cp - 0xC0];
-  return base ? static_cast<char32_t>(base) : cp;
+bool is_letter(char32_t cp) {
+  if (cp < 0x80) return (cp >= 'a' && cp <= 'z') || (cp >= 'A' && cp <= 'Z');
+  return u_hasBinaryProperty(static_cast<UChar32>(cp), UCHAR_ALPHABETIC) || is_mark(cp);
 }
 
 bool is_digit(char32_t cp) { return cp >= '0' && cp <= '9'; }
 
 bool is_space(char32_t cp) {
-  return cp <= 0x20 || cp == 0x7F || (cp >= 0x80 && cp <= 0xA0) || (cp >= 0x2000 && cp <= 0x200B) ||
-         cp == 0x2028 || cp == 0x2029 || cp == 0x202F || cp == 0x205F || cp == 0x3000 || cp == 0xFEFF;
+  if (cp <= 0x20 || (cp >= 0x7F && cp <= 0x9F)) return true;
+  return u_isUWhiteSpace(static_cast<UChar32>(cp)) || cp == 0x200B || cp == 0xFEFF;
 }
 
-bool is_letter(char32_t cp) {
-  if (cp < 0x80) return (cp >= 'a' && cp <= 'z') || (cp >= 'A' && cp <= 'Z');
-  if (is_space(cp)) return false;
-  if (cp < 0xC0) return cp == 0xAA || cp == 0xB5 || cp == 0xBA;  // Latin-1 symbols and punctuation
-  if (cp == 0xD7 || cp == 0xF7) return false;
-  if (cp >= 0x2000 && cp <= 0x2BFF) return false;  // general punctuation, symbols, arrows, currency
-  if (cp >= 0x3000 && cp <= 0x303F) return false;  // CJK punctuation
-  if (cp >= 0xFE30 && cp <= 0xFE6F) return false;
-  if (cp >= 0xFF00 && cp <= 0xFF0F) return false;
-  if (cp >= 0x1F000) return false;  // emoji and pictographs
-  return true;
-}
+std::string lower(std::string_view text) { return to_utf8(unicode(text).toLower(icu::Locale::getRoot())); }
+std::string upper(std::string_view text) { return to_utf8(unicode(text).toUpper(icu::Locale::getRoot())); }
 
-std::string lower(std::string_view text) {
+std::string nfc(std::string_view text) {
+  validate(text);
+  const icu::Normalizer2& n = normalizer(true);
+  UErrorCode status = U_ZERO_ERROR;
+  // Most text is already NFC (every ASCII text is): then it is returned as it is.
+  const icu::StringPiece piece(text.data(), static_cast<std::int32_t>(text.size()));
+  if (n.isNormalizedUTF8(piece, status) && U_SUCCESS(status)) return std::string(text);
   std::string out;
-  out.reserve(text.size());
-  for (std::size_t pos = 0; pos < text.size();) append(out, to_lower(next(text, pos)));
-  return out;
-}
-
-std::string upper(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t pos = 0; pos < text.size();) append(out, to_upper(next(text, pos)));
+  icu::StringByteSink<std::string> sink(&out);
+  status = U_ZERO_ERROR;
+  n.normalizeUTF8(0, piece, sink, nullptr, status);
+  if (U_FAILURE(status)) throw Error(std::string("cannot normalise the text: ") + u_errorName(status));
   return out;
 }
 

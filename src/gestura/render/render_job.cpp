@@ -51,47 +51,6 @@ void check_image_size(ImageSize size) {
     throw Error("size " + text + ": at most " + std::to_string(kMaxImagePixels) + " pixels in all (e.g. 4096x2304)");
 }
 
-ImageSize parse_image_size(const std::string& text) {
-  const std::size_t x = text.find_first_of("xX");
-  if (x == std::string::npos || x == 0 || x + 1 == text.size() || x > 6 || text.size() - x - 1 > 6 ||
-      text.find_first_not_of("0123456789", 0) != x || text.find_first_not_of("0123456789", x + 1) != std::string::npos)
-    throw Error("bad --size '" + text + "' (expected WIDTHxHEIGHT, e.g. 1280x720)");
-  const ImageSize size{std::stoi(text.substr(0, x)), std::stoi(text.substr(x + 1))};
-  check_image_size(size);
-  return size;
-}
-
-int parse_fps(const std::string& text) {
-  int fps = 0;
-  std::size_t used = 0;
-  try {
-    fps = std::stoi(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || fps < 1 || fps > kMaxFps)
-    throw Error("bad --fps '" + text + "' (a whole number 1.." + std::to_string(kMaxFps) + ")");
-  return fps;
-}
-
-float parse_seconds(const std::string& text, const std::string& flag) {
-  float value = 0.0f;
-  std::size_t used = 0;
-  try {
-    value = std::stof(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(value) || value < 0.0f || value > 3600.0f)
-    throw Error("bad " + flag + " '" + text + "' (seconds, 0..3600)");
-  return value;
-}
-
-int parse_msaa(const std::string& text) {
-  if (text == "1" || text == "2" || text == "4") return text[0] - '0';
-  throw Error("bad --msaa '" + text + "' (1, 2 or 4 samples per pixel)");
-}
-
 void validate(const RenderJob& job) {
   if (job.output.empty()) throw Error("no output file (-o OUT.png|.gif|.mp4|.webm)");
   const bool png = ends_with_png(job.output);

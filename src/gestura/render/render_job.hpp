@@ -24,11 +24,6 @@ struct ImageSize {
 };
 // Both sides in [16, 4096] and at most kMaxImagePixels in all; throws gestura::Error naming the limit otherwise.
 void check_image_size(ImageSize size);
-// Text forms of the job's options, for commands not yet on the command layer (app/ reads them there).
-ImageSize parse_image_size(const std::string& text);
-int parse_fps(const std::string& text);
-float parse_seconds(const std::string& text, const std::string& flag);
-int parse_msaa(const std::string& text);
 
 struct RenderJob {
   std::string output;                          // .png, .gif, .mp4 or .webm
