@@ -2,13 +2,10 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include <charconv>
 #include <cstdio>
-#include <sstream>
+#include <optional>
 
 #include "command.hpp"
-#include "gestura/app/scene_command.hpp"
-#include "gestura/core/error.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/scene_render_job.hpp"
@@ -47,49 +44,24 @@ void on_key(GLFWwindow* window, int key, int, int action, int) {
 
 }  // namespace
 
-int run_scene_view(const std::vector<std::string>& args) {
-  SceneRequest request;
-  request.cameras = {};
-  ImageSize size{1280, 720};
-  std::string screenshot;
-  int frames = 30;
-  std::optional<float> start_at;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--scene") request.scene = flag_value(args, i);
-    else if (a == "--script") request.script_file = flag_value(args, i);
-    else if (a == "--do") request.script_text = flag_value(args, i);
-    else if (a == "--camera") {
-      std::stringstream in(flag_value(args, i));
-      for (std::string item; std::getline(in, item, ',');)
-        if (!item.empty()) request.cameras.push_back(item);
-    } else if (a == "--size") size = parse_image_size(flag_value(args, i));
-    else if (a == "--screenshot") screenshot = flag_value(args, i);
-    else if (a == "--frames") {
-      const std::string n = flag_value(args, i);
-      const auto [end, ec] = std::from_chars(n.data(), n.data() + n.size(), frames);
-      if (ec != std::errc() || end != n.data() + n.size() || frames < 1 || frames > 100000)
-        throw Error("bad --frames '" + n + "' (a whole number 1..100000)");
-    } else if (a == "--at") start_at = parse_seconds(flag_value(args, i), a);
-    else throw Error("unknown flag " + a + " for a scene (see gestura view --help)");
-  }
-  // Every camera the scene has, then the built-in views; the first given (or the first there is) shows first.
-  LoadedScene loaded = load_scene_request(request);
-  std::vector<std::string> cameras = request.cameras;
-  for (const SceneCamera& c : loaded.scene.cameras) cameras.push_back(c.name);
-  for (const char* b : {"perspective", "plan", "section", "characters"}) cameras.push_back(b);
-  const ScenePerformance performance = perform_loaded_scene(loaded, 30, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+int show_scene(const app::SceneViewRequest& request, const app::RunContext& context) {
+  const app::PlayableScene playable = app::run(request, context);
+  const app::LoadedScene& loaded = playable.loaded;
+  const ScenePerformance& performance = playable.performance;
   for (const LogEntry& e : performance.log)
     if (e.warning) std::fprintf(stderr, "warning: %s\n", e.text.c_str());
   std::optional<StagedFile> shot;
-  if (!screenshot.empty()) shot.emplace(screenshot);
+  if (!request.screenshot.empty()) shot.emplace(request.screenshot);
+  const ImageSize size = request.size;
+  const std::optional<float> start_at = request.at;
+  const int frames = request.frames;
 
-  WindowGlContext window(size.width, size.height, "gestura view — " + request.scene);
+  WindowGlContext window(size.width, size.height, "gestura view — " + request.source.scene);
   SceneRenderer renderer;
   SceneAnimator animator(loaded.scene, loaded.geometry, performance);
   animator.upload(renderer);
   SceneViewer viewer;
-  viewer.cameras = cameras;
+  viewer.cameras = playable.cameras;
   if (start_at) viewer.controls.time = std::min(*start_at, performance.duration), viewer.controls.playing = false;
   glfwSetWindowUserPointer(window.window(), &viewer);
   glfwSetKeyCallback(window.window(), on_key);
@@ -116,7 +88,7 @@ int run_scene_view(const std::vector<std::string>& args) {
     }
     window.swap_buffers();
     char title[200];
-    std::snprintf(title, sizeof title, "gestura view — %s — %.2f / %.2f s  camera %s (c: next)%s", request.scene.c_str(),
+    std::snprintf(title, sizeof title, "gestura view — %s — %.2f / %.2f s  camera %s (c: next)%s", request.source.scene.c_str(),
                   viewer.controls.time, performance.duration, viewer.cameras[viewer.camera].c_str(), viewer.controls.playing ? "" : "  paused");
     glfwSetWindowTitle(window.window(), title);
   }

@@ -1,11 +1,10 @@
 #pragma once
-// `gestura view --scene SCENE.json [--script FILE | --do TEXT] [--camera NAME] [--size WxH]
-// [--screenshot PATH --frames N] [--at S]`: performs the scene and plays it in a window.
-#include <string>
-#include <vector>
+// `gestura view --scene SCENE.json`: the scene performed (app/scene.hpp) and played in a window.
+#include "gestura/app/context.hpp"
+#include "gestura/app/scene.hpp"
 
 namespace gestura::cli {
 
-int run_scene_view(const std::vector<std::string>& args);
+int show_scene(const app::SceneViewRequest& request, const app::RunContext& context);
 
 }  // namespace gestura::cli
