@@ -20,6 +20,23 @@ Camera look(const vec3& eye, const vec3& target, float fov_degrees, float aspect
   return c;
 }
 
+// The vertical field of view (degrees, with a margin) a camera at `eye` looking at `target` needs to
+// show every point; huge when a point lies behind the eye or nearer than 0.3 m in depth.
+float framing_fov(const vec3& eye, const vec3& target, std::span<const vec3> points, float aspect) {
+  const vec3 f = glm::normalize(target - eye);
+  const vec3 up = std::abs(f.y) > 0.99f ? vec3(0, 0, -1) : vec3(0, 1, 0);
+  const vec3 r = glm::normalize(glm::cross(f, up));
+  const vec3 u = glm::cross(r, f);
+  float tan_half = 0.0f;
+  for (const vec3& p : points) {
+    const vec3 d = p - eye;
+    const float z = glm::dot(d, f);
+    if (z < 0.3f) return 1e6f;
+    tan_half = std::max({tan_half, std::abs(glm::dot(d, u)) / z, std::abs(glm::dot(d, r)) / (z * aspect)});
+  }
+  return 2.0f * to_degrees(std::atan(tan_half * 1.06f));
+}
+
 Camera ortho(const vec3& eye, const vec3& target, const vec3& up, float half_height, float aspect, float depth, float near = 0.01f) {
   Camera c;
   c.eye = eye;
@@ -103,30 +120,52 @@ Camera scene_camera(const std::string& name, const Scene& scene, const Aabb& bou
     const vec3 target = vec3(centre.x, b.min.y + std::min(0.8f, size.y * 0.3f), centre.z);
     return look(eye, target, 62.0f, aspect);
   }
-  // "characters": frame every character's body, from the south-east and a little above.
+  // "characters": frame every character's body, from the south-east and a little above — or, when a
+  // room's walls keep the camera too close for that (a character by the wall it would stand behind),
+  // from the nearest direction round them that fits everyone.
+  std::vector<vec3> points;
   Aabb people;
-  for (const CharacterView& v : characters) people.grow(v.position - vec3(0.4f, 0, 0.4f)), people.grow(v.head + vec3(0.4f, 0.3f, 0.4f));
-  if (people.empty()) people = b;
-  // From the south-east and a little above, at the distance that fits them — but inside the scene's
-  // box (a room's walls would hide them from outside), the view widened to still fit them.
-  const vec3 from = glm::normalize(vec3(0.35f, 0.3f, 1.0f));
+  for (const CharacterView& v : characters)
+    for (int k = 0; k < 8; ++k) {
+      const vec3 p((k & 1) ? v.position.x + 0.35f : v.position.x - 0.35f, (k & 2) ? v.head.y + 0.2f : v.position.y,
+                   (k & 4) ? v.position.z + 0.35f : v.position.z - 0.35f);
+      points.push_back(p);
+      people.grow(p);
+    }
+  if (people.empty()) {
+    people = b;
+    for (int k = 0; k < 8; ++k)
+      points.push_back(vec3((k & 1) ? b.max.x : b.min.x, (k & 2) ? b.max.y : b.min.y, (k & 4) ? b.max.z : b.min.z));
+  }
   const vec3 centre_people = people.centre();
   const float radius = glm::length(people.max - people.min) * 0.5f;
   const float fit = std::min(deg(20.0f), std::atan(std::tan(deg(20.0f)) * aspect));
-  vec3 eye = centre_people + from * (radius / std::sin(fit) * 0.92f);
   const vec3 inner_min = b.min + vec3(0.35f), inner_max = b.max - vec3(0.35f);
-  if (inner_min.x < inner_max.x && inner_min.z < inner_max.z) {
-    const vec3 d = eye - centre_people;
-    float t = 1.0f;
-    for (int axis : {0, 2}) {
-      if (d[axis] > 1e-4f) t = std::min(t, (inner_max[axis] - centre_people[axis]) / d[axis]);
-      if (d[axis] < -1e-4f) t = std::min(t, (inner_min[axis] - centre_people[axis]) / d[axis]);
+  const bool walled = inner_min.x < inner_max.x && inner_min.z < inner_max.z;
+  const vec3 south_east = glm::normalize(vec3(0.35f, 0.3f, 1.0f));
+  float best_fov = 1e9f;
+  Camera best;
+  for (int i = 0; i < 12; ++i) {
+    const float yaw = deg(30.0f) * static_cast<float>((i + 1) / 2) * (i % 2 ? 1.0f : -1.0f);  // 0, 30, -30, 60, -60, …
+    const vec3 from(south_east.x * std::cos(yaw) + south_east.z * std::sin(yaw), south_east.y,
+                    -south_east.x * std::sin(yaw) + south_east.z * std::cos(yaw));
+    // At the distance that fits them — but inside the scene's box (a room's walls would hide them
+    // from outside).
+    vec3 eye = centre_people + from * (radius / std::sin(fit) * 0.92f);
+    if (walled) {
+      const vec3 d = eye - centre_people;
+      float t = 1.0f;
+      for (int axis : {0, 2}) {
+        if (d[axis] > 1e-4f) t = std::min(t, (inner_max[axis] - centre_people[axis]) / d[axis]);
+        if (d[axis] < -1e-4f) t = std::min(t, (inner_min[axis] - centre_people[axis]) / d[axis]);
+      }
+      eye = centre_people + d * std::max(t, 0.15f);
     }
-    eye = centre_people + d * std::max(t, 0.15f);
+    const float fov = framing_fov(eye, centre_people, points, aspect);
+    if (fov < best_fov) best_fov = fov, best = look(eye, centre_people, std::clamp(fov, 30.0f, 100.0f), aspect);
+    if (fov <= 75.0f) break;  // the first direction (nearest the south-east) that fits everyone
   }
-  const float distance = glm::length(eye - centre_people);
-  const float fov = std::clamp(2.0f * to_degrees(std::asin(std::min(1.0f, radius / std::max(distance, 1e-3f)))) / std::min(1.0f, aspect), 40.0f, 80.0f);
-  return look(eye, centre_people, fov, aspect);
+  return best;
 }
 
 std::vector<View> scene_views(const std::vector<std::string>& names, const Scene& scene, const Aabb& bounds,

@@ -19,8 +19,9 @@ namespace gestura {
 //                 is not drawn), the whole height
 //   perspective   from high in the south-west corner of the scene's box, looking across it
 //   perspective2  from high in the north-east corner
-//   characters    perspective, framing every character (follows them); what stands between the
-//                 camera and them (a wall) is cut away
+//   characters    perspective, framing every character whole (follows them) from inside the
+//                 scene's box: from the south-east, or the nearest direction round them that fits
+//                 everyone when walls keep the camera too close
 //   alias         the four ALIAS views as a 2×2 split: perspective, perspective2, plan, section
 //   CHARACTER     a character's name: over that character's shoulder toward where it looks
 inline constexpr const char* kBuiltInSceneCameras[] = {"plan", "section", "perspective", "perspective2", "characters", "alias"};
