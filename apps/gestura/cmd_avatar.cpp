@@ -7,6 +7,7 @@
 #include "gestura/body/avatar_source.hpp"
 #include "gestura/body/face_morphs.hpp"
 #include "gestura/core/error.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/body/body_sites.hpp"
 #include "gestura/io/gltf_export.hpp"
 
@@ -122,10 +123,7 @@ int run(const std::vector<std::string>& args) {
     if (r.output.empty()) {
       std::fputs(json.c_str(), stdout);
     } else {
-      std::FILE* f = std::fopen(r.output.c_str(), "wb");
-      if (!f) throw Error(r.output + ": cannot write here");
-      const bool ok = std::fwrite(json.data(), 1, json.size(), f) == json.size();
-      if (std::fclose(f) != 0 || !ok) throw Error(r.output + ": write failed");
+      gestura::write_file_atomically(r.output, json);
       std::printf("wrote %s\n", r.output.c_str());
     }
     return 0;

@@ -73,7 +73,7 @@ int run(const std::vector<std::string>& args) {
     const std::string path = db.empty() ? gestura::default_user_lexicon_path() : db;
     if (!db.empty() && !std::filesystem::exists(path)) throw Error(gestura::SourceLocation{path}, "no such lexicon");
     if (std::filesystem::exists(path)) {
-      user.emplace(gestura::Lexicon::open(path));
+      user.emplace(gestura::Lexicon::open_read_only(path));
       layers.push_layer(*user);
     }
   }

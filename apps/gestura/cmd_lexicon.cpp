@@ -97,7 +97,7 @@ struct ReadView {
     const std::string path = user_db_path(o);
     if (!o.db.empty() && !std::filesystem::exists(path)) throw Error(gestura::SourceLocation{path}, "no such lexicon");
     if (std::filesystem::exists(path)) {
-      user.emplace(gestura::Lexicon::open(path));
+      user.emplace(gestura::Lexicon::open_read_only(path));
       view.push_layer(*user);
     }
   }
@@ -192,12 +192,10 @@ int run(const std::vector<std::string>& args) {
     const std::string& file = one_positional(o, "FILE");
     const std::string path = user_db_path(o);
     if (!std::filesystem::exists(path)) throw Error(gestura::SourceLocation{path}, "no such lexicon");
-    auto lex = gestura::Lexicon::open(path);
+    auto lex = gestura::Lexicon::open_read_only(path);
     const auto entries = lex.list(o.lang);
-    std::ofstream out(file, std::ios::binary);
-    if (!out) throw Error(gestura::SourceLocation{file}, "cannot write file");
     const bool sigml = std::filesystem::path(file).extension() == ".sigml";
-    const auto n = sigml ? gestura::export_sigml(entries, out) : (gestura::export_jsonl(entries, out), entries.size());
+    const auto n = gestura::export_file(entries, file);
     std::cout << "exported " << n << " signs to " << file;
     if (sigml && n < entries.size()) std::cout << " (" << entries.size() - n << " without SiGML notation skipped)";
     std::cout << "\n";

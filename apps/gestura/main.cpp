@@ -6,6 +6,7 @@
 
 #include "command.hpp"
 #include "gestura/core/error.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura::cli {
 
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
     print_help();
     return argc < 2 ? 2 : 0;
   }
+  gestura::remove_staged_files_on_signals();  // Ctrl-C or SIGTERM leaves no temporary output behind
   const std::string name = argv[1];
   std::vector<std::string> args(argv + 2, argv + argc);
   for (const Command& c : registry()) {

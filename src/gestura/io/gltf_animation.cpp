@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/io/gltf_reader.hpp"
 
 namespace gestura {
@@ -295,11 +296,7 @@ void save_gltf(const std::string& path, const Skeleton& skeleton, const Clip& cl
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext != ".glb" && ext != ".gltf") throw Error(path + ": glTF files end in .glb or .gltf");
   const GltfDocument doc = make_gltf(skeleton, clip, mesh, options);
-  const std::string bytes = ext == ".glb" ? pack_glb(doc) : pack_gltf_embedded(doc);
-  std::ofstream file(path, std::ios::binary);
-  if (!file) throw Error(path + ": cannot open for writing");
-  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!file) throw Error(path + ": write failed");
+  write_file_atomically(path, ext == ".glb" ? pack_glb(doc) : pack_gltf_embedded(doc));
 }
 
 GltfAnimation read_gltf_animation(const std::string& bytes, const std::string& source) {

@@ -2,11 +2,11 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 
@@ -48,17 +48,14 @@ std::vector<std::string> save_openpose_json(const std::string& path, const Skele
                                             float fps, const PinholeCamera& camera) {
   const std::vector<std::string> frames = openpose_json_frames(skeleton, clip, fps, camera);
   const std::filesystem::path base(path);
-  std::vector<std::string> written;
+  // All frames or none: a failure half-way must not leave a shorter sequence that looks complete.
+  StagedFileGroup group(base.parent_path().string(), base.stem().string());
   for (std::size_t f = 0; f < frames.size(); ++f) {
     char number[48];
     std::snprintf(number, sizeof number, "_%012zu_keypoints.json", f);
-    const std::string out = (base.parent_path() / (base.stem().string() + number)).string();
-    std::ofstream file(out, std::ios::binary);
-    file << frames[f];
-    if (!file) throw Error(out + ": cannot write");
-    written.push_back(out);
+    group.write(base.stem().string() + number, frames[f]);
   }
-  return written;
+  return group.commit();
 }
 
 }  // namespace gestura

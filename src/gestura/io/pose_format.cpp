@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 namespace {
@@ -96,11 +97,7 @@ std::string encode_pose(const PoseData& pose) {
 }
 
 void save_pose(const std::string& path, const PoseData& pose) {
-  const std::string bytes = encode_pose(pose);
-  std::ofstream file(path, std::ios::binary);
-  if (!file) throw Error(path + ": cannot open for writing");
-  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!file) throw Error(path + ": write failed");
+  write_file_atomically(path, encode_pose(pose));
 }
 
 PoseData pose_from_clip(const Skeleton& skeleton, const Clip& clip, float fps, PoseLayout layout,

@@ -50,11 +50,41 @@ void validate(const SignEntry& e) {
 
 Lexicon::Lexicon(sqlite::Database db) : db_(std::move(db)) {
   db_.exec("PRAGMA foreign_keys = ON");
-  lexicon_schema::migrate(db_);
+  if (!db_.read_only()) {
+    lexicon_schema::migrate(db_);
+    return;
+  }
+  const int version = lexicon_schema::version_of(db_);
+  if (version == lexicon_schema::current_version()) return;
+  if (version > lexicon_schema::current_version())
+    throw Error(SourceLocation{db_.path()}, "lexicon schema version " + std::to_string(version) +
+                                                " is newer than this program supports (" +
+                                                std::to_string(lexicon_schema::current_version()) + ")");
+  throw Error(SourceLocation{db_.path()},
+              version == 0 ? "not a gestura lexicon (no schema version)"
+                           : "lexicon schema version " + std::to_string(version) +
+                                 " is older than this program's; it cannot be upgraded while read-only (open it "
+                                 "for writing once, e.g. with lexicon add or import)");
+}
+
+void Lexicon::require_writable() const {
+  if (db_.read_only())
+    throw Error(SourceLocation{db_.path()}, "the lexicon was opened read-only; adding, importing and removing need "
+                                            "it opened for writing");
+}
+
+Lexicon Lexicon::open_read_only(const std::string& path, int busy_timeout_ms) {
+  return Lexicon(sqlite::Database(path, sqlite::Access::read, busy_timeout_ms));
 }
 
 Lexicon Lexicon::open(const std::string& path, int busy_timeout_ms) {
   sqlite::Database db(path, true, busy_timeout_ms);
+  // Nothing is written into a damaged file: a write could spread the damage over pages that are
+  // still good. Reading (open_read_only) still works, so what is left can be exported.
+  if (const std::string problems = db.integrity_problems(); !problems.empty())
+    throw Error(SourceLocation{path}, "the lexicon database is damaged (quick_check: " + problems +
+                                          "); it is left as it is and not written to. Export what can still be "
+                                          "read (gestura lexicon export) and import it into a new file");
   // WAL lets readers in other processes keep a consistent snapshot while one writer commits.
   {
     auto mode = db.prepare("PRAGMA journal_mode = WAL");
@@ -66,6 +96,7 @@ Lexicon Lexicon::open(const std::string& path, int busy_timeout_ms) {
 Lexicon Lexicon::in_memory() { return Lexicon(sqlite::Database(":memory:", true)); }
 
 std::int64_t Lexicon::add(SignEntry e, OnConflict on_conflict) {
+  require_writable();
   validate(e);
   sqlite::Transaction tx(db_);
   if (e.variant == 0) {
@@ -107,6 +138,7 @@ std::int64_t Lexicon::add(SignEntry e, OnConflict on_conflict) {
 }
 
 std::size_t Lexicon::remove(std::string_view gloss, std::string_view language, std::optional<int> variant) {
+  require_writable();
   sqlite::Transaction tx(db_);
   auto drop = db_.prepare(variant ? "DELETE FROM signs WHERE gloss = ?1 AND lang = ?2 AND variant = ?3"
                                   : "DELETE FROM signs WHERE gloss = ?1 AND lang = ?2");
@@ -191,6 +223,7 @@ std::size_t Lexicon::size() {
 }
 
 void Lexicon::atomically(const std::function<void()>& body) {
+  require_writable();
   sqlite::Transaction tx(db_);
   body();
   tx.commit();

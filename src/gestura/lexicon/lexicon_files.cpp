@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 
@@ -285,6 +286,14 @@ std::size_t import_file(Lexicon& lexicon, const std::string& path, const ImportO
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext == ".sigml" || ext == ".xml") return import_sigml(lexicon, path, options);
   return import_jsonl(lexicon, path, options);
+}
+
+std::size_t export_file(std::span<const SignEntry> entries, const std::string& path) {
+  std::ostringstream out;
+  const bool sigml = std::filesystem::path(path).extension() == ".sigml";
+  const std::size_t count = sigml ? export_sigml(entries, out) : (export_jsonl(entries, out), entries.size());
+  write_file_atomically(path, out.str());
+  return count;
 }
 
 Lexicon load_builtin_lexicon(const std::string& jsonl_path) {

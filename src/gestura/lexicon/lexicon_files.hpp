@@ -51,6 +51,10 @@ std::string read_sigml_sign(const std::string& path, std::string_view gloss);
 
 // Imports by extension: .sigml / .xml as SiGML, anything else as JSON lines.
 std::size_t import_file(Lexicon& lexicon, const std::string& path, const ImportOptions& options);
+// Exports by extension: .sigml as SiGML (SiGML entries only), anything else as JSON lines; returns
+// how many entries were written. All or nothing: the file is written to a temporary, every write
+// checked, then renamed into place, so a full disk leaves no file and reports an error.
+std::size_t export_file(std::span<const SignEntry> entries, const std::string& path);
 
 // The built-in lexicon: an in-memory database filled from JSON-lines files shipped in data/lexicon/
 // (one per sign language, e.g. ase.jsonl), so it is never written to and costs no disk state.

@@ -5,11 +5,12 @@
 #include <regex>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/output_limits.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/render/encoder_thread.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/progress.hpp"
-#include "gestura/render/staged_file.hpp"
 #include "gestura/render/video_writer.hpp"
 
 namespace gestura {
@@ -97,6 +98,8 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) 
   Animator animator(subject);
   const FramingBox box = framing_box(subject.mesh, subject.skeleton);
   const bool png = ends_with_png(job.output);
+  const float duration = subject.clip ? animator.duration() : job.rest_seconds;
+  if (!png) check_output_length(duration, job.fps, job.output);
   // Open the output first: an unwritable path fails before any rendering.
   std::optional<StagedFile> still;
   std::optional<VideoWriter> video;
@@ -109,7 +112,6 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) 
   RenderReport report;
   report.renderer = context.description();
   Image frame;
-  const float duration = subject.clip ? animator.duration() : job.rest_seconds;
 
   if (png && job.sheet) {
     const int w = std::max(kMinImageSide, job.size.width / kSheetColumns);
