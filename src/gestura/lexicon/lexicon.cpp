@@ -1,6 +1,11 @@
 #include "gestura/lexicon/lexicon.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 
 #include "gestura/core/error.hpp"
 #include "gestura/lexicon/schema.hpp"
@@ -78,6 +83,16 @@ Lexicon Lexicon::open_read_only(const std::string& path, int busy_timeout_ms) {
 }
 
 Lexicon Lexicon::open(const std::string& path, int busy_timeout_ms) {
+  // SQLite would say "unable to open database file" or "attempt to write a readonly database"
+  // somewhere later; say what is wrong before anything is tried. (access() also sees read-only
+  // mounts and immutable files, which stop root as well.)
+  if (path != ":memory:" && std::filesystem::exists(path)) {
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    if (::access(path.c_str(), W_OK) != 0 || ::access(folder.empty() ? "." : folder.c_str(), W_OK) != 0)
+      throw Error(SourceLocation{path}, std::string("the lexicon is read-only (") + std::strerror(errno) +
+                                            "): it can be listed, searched and exported, but adding, importing "
+                                            "and removing need the file and its folder writable");
+  }
   sqlite::Database db(path, true, busy_timeout_ms);
   // Nothing is written into a damaged file: a write could spread the damage over pages that are
   // still good. Reading (open_read_only) still works, so what is left can be exported.
