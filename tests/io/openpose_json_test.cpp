@@ -104,6 +104,10 @@ TEST(OpenPoseRead, MalformedFramesNameTheFileAndPlace) {
   const std::string huge = error_of([] { read_openpose_frame(R"({"people":[{"pose_keypoints_2d":[1e300,0,1]}]})", "e.json"); });
   EXPECT_NE(huge.find("finite"), std::string::npos) << huge;
   EXPECT_NE(error_of([] { read_openpose_frame("[1,2,3]", "f.json"); }), "");
+  // Found by fuzz_openpose_json: a number past a double's range made the JSON library throw an
+  // exception of another kind than a parse error, which escaped the reader.
+  const std::string overflow = error_of([] { read_openpose_frame(R"({"people":[{"pose_keypoints_2d":[552.11e308036376953125,0,1]}]})", "o.json"); });
+  EXPECT_NE(overflow.find("o.json"), std::string::npos) << overflow;
   EXPECT_NE(error_of([] { read_openpose_frame(std::string(1000, '['), "g.json"); }), "");
   EXPECT_NE(error_of([] { read_openpose_frame(std::string("\x00\xff\x01", 3), "h.json"); }), "");
   const std::string people = error_of([] {

@@ -154,7 +154,8 @@ TEST(SaySentence, NumbersOutsideTheLexiconAreComposed) {
   ASSERT_EQ(g.size(), 1u);
   EXPECT_EQ(g[0]->gloss, "47");
   // 47 is not a lexicon sign: it is 4 then 7, so it lasts clearly longer than the single sign 4.
-  const auto four = signed_glosses(say("4"));
+  const SentencePerformance four_said = say("4");  // kept: signed_glosses points into it
+  const auto four = signed_glosses(four_said);
   ASSERT_EQ(four.size(), 1u);
   EXPECT_GT(g[0]->end - g[0]->start, four[0]->end - four[0]->start + 0.08f);
 }

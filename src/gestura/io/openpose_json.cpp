@@ -147,6 +147,8 @@ OpenPoseFrame read_openpose_frame(std::string_view text, const std::string& sour
       else ++column;
     }
     throw Error(SourceLocation{source, line, column}, "not JSON: " + std::string(e.what()).substr(0, 160));
+  } catch (const json::exception& e) {  // e.g. a number too large for a double
+    throw Error(SourceLocation{source}, "not readable JSON: " + std::string(e.what()).substr(0, 160));
   }
   if (!doc.is_object()) fail(source, "", "an OpenPose frame is a JSON object with a \"people\" array");
   const auto people = doc.find("people");

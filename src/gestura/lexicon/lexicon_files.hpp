@@ -42,6 +42,9 @@ std::size_t import_jsonl(Lexicon& lexicon, const std::string& path, const Import
 void export_jsonl(std::span<const SignEntry> entries, std::ostream& out);
 
 std::size_t import_sigml(Lexicon& lexicon, const std::string& path, const ImportOptions& options);
+// The same from a document in memory; `name` stands for the file in errors.
+std::size_t import_sigml_text(Lexicon& lexicon, std::string_view text, const std::string& name,
+                              const ImportOptions& options);
 // Writes the SiGML-notated entries as one <sigml> document; returns how many were written (HamNoSys
 // and clip entries are skipped: converting them is not a lexicon concern).
 std::size_t export_sigml(std::span<const SignEntry> entries, std::ostream& out);
