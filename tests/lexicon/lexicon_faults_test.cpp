@@ -15,6 +15,7 @@
 
 #include "gestura/core/error.hpp"
 #include "gestura/lexicon/lexicon.hpp"
+#include "gestura/lexicon/lexicon_files.hpp"
 #include "gestura/lexicon/schema.hpp"
 #include "support/build_paths.hpp"
 #include "support/cli.hpp"
@@ -148,6 +149,25 @@ TEST(LexiconDamage, DamagedFileRefusesWritesAndIsLeftAsItIs) {
   const auto imported = run_cli("lexicon remove SIGN1 --lang ase --db " + path);
   EXPECT_EQ(imported.status, 1) << imported.output;
   EXPECT_EQ(bytes_of(path), before);
+}
+
+TEST(LexiconHostile, DeepOrBrokenSigmlNotationIsRefusedAtImport) {
+  // 300,000 nested elements once made `lexicon export` indent its way to 16 GB of memory.
+  TempDir dir;
+  std::string nested;
+  for (int i = 0; i < 300000; ++i) nested += "<a>";
+  for (int i = 0; i < 300000; ++i) nested += "</a>";
+  const std::string sigml = dir.write("deep.sigml", "<sigml><hns_sign gloss=\"deep\"><hamnosys_manual>" + nested +
+                                                        "</hamnosys_manual></hns_sign></sigml>");
+  Lexicon lexicon = Lexicon::open(dir.file("l.sqlite"));
+  const std::string message = error_of([&] { import_file(lexicon, sigml, ImportOptions{.language = "ins"}); });
+  EXPECT_NE(message.find("deep.sigml:1"), std::string::npos) << message.substr(0, 300);
+  EXPECT_NE(message.find("kMaxStoredSigmlDepth"), std::string::npos) << message.substr(0, 300);
+  SignEntry broken = sign("BROKEN");
+  broken.notation_kind = NotationKind::sigml;
+  broken.notation = "<hns_sign gloss=\"x\"><hamnosys_manual>";
+  EXPECT_NE(error_of([&] { lexicon.add(broken); }).find("not well-formed XML"), std::string::npos);
+  EXPECT_EQ(lexicon.size(), 0u);
 }
 
 // Many signs of our own making, so that an import takes long enough to be killed in the middle.

@@ -15,6 +15,7 @@
 #include "gestura/core/error.hpp"
 #include "gestura/core/staged_file.hpp"
 #include "gestura/io/gltf_reader.hpp"
+#include "gestura/io/json_excerpt.hpp"
 
 namespace gestura {
 namespace {
@@ -312,9 +313,9 @@ GltfAnimation read_gltf_animation(const std::string& bytes, const std::string& s
     if (!nodes[i]["children"].is_array()) r.fail(where, "children is not an array");
     for (const json& c : nodes[i]["children"]) {
       if (!c.is_number_integer() || c.get<long long>() < 0 || c.get<long long>() >= static_cast<long long>(nodes.size()))
-        r.fail(where, "has a child that is not a node index: " + c.dump());
+        r.fail(where, "has a child that is not a node index: " + json_excerpt(c));
       const auto ci = c.get<std::size_t>();
-      if (parent[ci] >= 0 || ci == i) r.fail(where, "node " + c.dump() + " has two parents or is its own child");
+      if (parent[ci] >= 0 || ci == i) r.fail(where, "node " + json_excerpt(c) + " has two parents or is its own child");
       parent[ci] = static_cast<int>(i);
     }
   }
@@ -403,7 +404,7 @@ GltfAnimation read_gltf_animation(const std::string& bytes, const std::string& s
       if (!target.contains("node")) continue;  // allowed by the specification: ignore
       const json& node = target["node"];
       if (!node.is_number_integer() || node.get<long long>() < 0 || node.get<long long>() >= static_cast<long long>(nodes.size()))
-        r.fail(where, "targets a missing node " + node.dump());
+        r.fail(where, "targets a missing node " + json_excerpt(node));
       const json& si = ch.contains("sampler") ? ch["sampler"] : json();
       if (!si.is_number_integer() || si.get<long long>() < 0 || si.get<long long>() >= static_cast<long long>(samplers.size()))
         r.fail(where, "refers to a missing sampler");

@@ -11,6 +11,7 @@
 
 #include "gestura/core/error.hpp"
 #include "gestura/core/staged_file.hpp"
+#include "gestura/io/json_excerpt.hpp"
 
 namespace gestura {
 
@@ -92,7 +93,7 @@ std::vector<float> keypoint_array(const json& person, const char* key, int per_p
   out.reserve(it->size());
   for (std::size_t i = 0; i < it->size(); ++i) {
     const json& v = (*it)[i];
-    if (!v.is_number()) fail(source, place + "[" + std::to_string(i) + "]", "not a number: " + v.dump().substr(0, 40));
+    if (!v.is_number()) fail(source, place + "[" + std::to_string(i) + "]", "not a number: " + json_excerpt(v));
     const double d = v.get<double>();
     if (!std::isfinite(d) || std::fabs(d) > 1e30)
       fail(source, place + "[" + std::to_string(i) + "]", "not a finite number within ±1e30");

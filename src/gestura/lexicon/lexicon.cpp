@@ -7,6 +7,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include <pugixml.hpp>
+
 #include "gestura/core/error.hpp"
 #include "gestura/lexicon/schema.hpp"
 #include "gestura/lexicon/sign_language_codes.hpp"
@@ -35,6 +37,25 @@ std::string like_escaped(std::string_view text) {
   return out;
 }
 
+// Stored SiGML must be one well-formed element, nested no deeper than real signs come near: a
+// hostile entry 300,000 elements deep once made `lexicon export` indent its way to 16 GB of memory.
+void validate_sigml(const SignEntry& e) {
+  pugi::xml_document doc;
+  if (!doc.load_buffer(e.notation.data(), e.notation.size()) || !doc.first_child())
+    throw Error("gloss '" + e.gloss + "': its SiGML notation is not well-formed XML");
+  struct DepthCheck : pugi::xml_tree_walker {
+    bool too_deep = false;
+    bool for_each(pugi::xml_node&) override {
+      too_deep = depth() >= kMaxStoredSigmlDepth;
+      return !too_deep;
+    }
+  } check;
+  doc.traverse(check);
+  if (check.too_deep)
+    throw Error("gloss '" + e.gloss + "': its SiGML elements nest deeper than " +
+                std::to_string(kMaxStoredSigmlDepth) + " (kMaxStoredSigmlDepth)");
+}
+
 void validate(const SignEntry& e) {
   if (e.gloss.empty()) throw Error("sign entry has an empty gloss");
   if (e.gloss.find_first_of("\n\r\t") != std::string::npos)
@@ -43,6 +64,7 @@ void validate(const SignEntry& e) {
   if (e.variant < 0) throw Error("gloss '" + e.gloss + "': variant must be 1 or more");
   if (e.notation_kind == NotationKind::clip ? e.clip.empty() : e.notation.empty())
     throw Error("gloss '" + e.gloss + "' has no " + std::string(to_string(e.notation_kind)) + " notation");
+  if (e.notation_kind == NotationKind::sigml) validate_sigml(e);
   for (const Keyword& k : e.keywords) {
     if (k.word.empty()) throw Error("gloss '" + e.gloss + "' has an empty keyword");
     if (!is_spoken_language_code(k.language))

@@ -16,6 +16,9 @@
 namespace gestura {
 
 enum class OnConflict { fail, replace };
+
+// The deepest nesting of elements a stored SiGML notation may have (real signs: under 10).
+inline constexpr int kMaxStoredSigmlDepth = 64;
 enum class SearchMode { prefix, substring };
 
 class Lexicon {
