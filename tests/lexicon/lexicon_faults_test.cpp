@@ -109,18 +109,27 @@ TEST(LexiconReadOnly, ImmutableFileIsListed) {
   EXPECT_EQ(bytes_of(path), before);
 }
 
-TEST(LexiconReadOnly, ReadOnlyOpenNeverUpgradesAnOldSchema) {
+// A version-1 file with one sign (the first schema: no variants).
+void make_version1_lexicon(const std::string& path) {
+  sqlite::Database db(path, true);
+  lexicon_schema::migrate(db, 1);
+  db.exec("INSERT INTO signs (gloss, lang, notation_kind, notation) VALUES ('OLD', 'ase', 'hamnosys', 'x')");
+}
+
+TEST(LexiconReadOnly, AnOldSchemaIsUpgradedWhenWritableAndNamedWhenNot) {
   TempDir dir;
   const std::string path = dir.file("v1.sqlite");
-  {
-    sqlite::Database db(path, true);
-    lexicon_schema::migrate(db, 1);
-  }
-  const std::string message = error_of([&] { Lexicon::open_read_only(path); });
-  EXPECT_NE(message.find("older"), std::string::npos) << message;
-  sqlite::Database db(path, false);
-  EXPECT_EQ(lexicon_schema::version_of(db), 1);
+  make_version1_lexicon(path);
+  Lexicon upgraded = Lexicon::open_read_only(path);
+  EXPECT_TRUE(upgraded.find("OLD", "ase"));
   EXPECT_NE(error_of([&] { Lexicon::open_read_only(dir.file("missing.sqlite")); }), "");
+
+  test::SmallTmpfs fs(1024 * 1024);
+  if (!fs.mounted()) GTEST_SKIP() << fs.skip_reason();
+  make_version1_lexicon(fs.path("v1.sqlite"));
+  fs.remount_read_only();
+  const std::string message = error_of([&] { Lexicon::open_read_only(fs.path("v1.sqlite")); });
+  EXPECT_NE(message.find("older"), std::string::npos) << message;
 }
 
 TEST(LexiconDamage, DamagedFileRefusesWritesAndIsLeftAsItIs) {

@@ -100,7 +100,23 @@ void Lexicon::require_writable() const {
                                             "it opened for writing");
 }
 
+namespace {
+
+bool writable(const std::string& path) {
+  const std::string folder = std::filesystem::path(path).parent_path().string();
+  return ::access(path.c_str(), W_OK) == 0 && ::access(folder.empty() ? "." : folder.c_str(), W_OK) == 0;
+}
+
+}  // namespace
+
 Lexicon Lexicon::open_read_only(const std::string& path, int busy_timeout_ms) {
+  {
+    // A file from an older version is upgraded once, as opening it for writing always did, when it
+    // can be written; a read-only one must already be current (the constructor says so).
+    sqlite::Database probe(path, sqlite::Access::read, busy_timeout_ms);
+    const int version = lexicon_schema::version_of(probe);
+    if (version > 0 && version < lexicon_schema::current_version() && writable(path)) open(path, busy_timeout_ms);
+  }
   return Lexicon(sqlite::Database(path, sqlite::Access::read, busy_timeout_ms));
 }
 
@@ -109,8 +125,7 @@ Lexicon Lexicon::open(const std::string& path, int busy_timeout_ms) {
   // somewhere later; say what is wrong before anything is tried. (access() also sees read-only
   // mounts and immutable files, which stop root as well.)
   if (path != ":memory:" && std::filesystem::exists(path)) {
-    const std::string folder = std::filesystem::path(path).parent_path().string();
-    if (::access(path.c_str(), W_OK) != 0 || ::access(folder.empty() ? "." : folder.c_str(), W_OK) != 0)
+    if (!writable(path))
       throw Error(SourceLocation{path}, std::string("the lexicon is read-only (") + std::strerror(errno) +
                                             "): it can be listed, searched and exported, but adding, importing "
                                             "and removing need the file and its folder writable");

@@ -29,8 +29,8 @@ class Lexicon {
   // database); so is a read-only one.
   static Lexicon open(const std::string& path, int busy_timeout_ms = 2000);
   // Opens an existing database for reading only: never writes to the file or its folder, so
-  // read-only files, folders and mounts and immutable files can be listed and searched. The
-  // schema must be the current one (an older file is upgraded by the first open for writing).
+  // read-only files, folders and mounts and immutable files can be listed and searched. A file of
+  // an older schema is upgraded first when it can be written; a read-only one must be current.
   // add, remove and atomically throw an Error naming the file.
   static Lexicon open_read_only(const std::string& path, int busy_timeout_ms = 2000);
   // A private database in memory (the built-in layer, tests).
