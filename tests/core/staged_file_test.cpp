@@ -3,6 +3,7 @@
 #include "gestura/core/staged_file.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <thread>
 
 #include "gestura/core/error.hpp"
 #include "gestura/core/output_limits.hpp"
@@ -82,6 +84,31 @@ TEST(StagedFile, NamesTheTargetWhenItCannotWrite) {
   done.commit();
   EXPECT_THROW(done.write("late"), Error);
   EXPECT_THROW(done.commit(), Error);
+}
+
+TEST(StagedFile, DevicesAndPipesAreWrittenStraightAndStayWhatTheyAre) {
+  write_file_atomically("/dev/null", "discarded");
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  Folder dir;
+  const std::string fifo = dir.file("pipe");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::string received;
+  std::thread reader([&] { received = contents(fifo); });
+  write_file_atomically(fifo, "through the pipe");
+  reader.join();
+  EXPECT_EQ(received, "through the pipe");
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"pipe"});
+}
+
+TEST(StagedFile, ASymbolicLinkStaysALinkToTheNewFile) {
+  Folder dir;
+  write_file_atomically(dir.file("real.txt"), "old");
+  fs::create_symlink("real.txt", dir.file("link.txt"));
+  write_file_atomically(dir.file("link.txt"), "new");
+  EXPECT_TRUE(fs::is_symlink(dir.file("link.txt")));
+  EXPECT_EQ(contents(dir.file("real.txt")), "new");
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"link.txt", "real.txt"}));
 }
 
 TEST(StagedFile, MovedFileKeepsOneOwner) {

@@ -157,8 +157,23 @@ mode_t file_mode() {
 
 StagedFile::StagedFile(std::string target) : target_(std::move(target)) {
   if (target_.empty()) throw Error("no output file given");
-  if (std::filesystem::is_directory(target_)) throw Error("cannot write " + target_ + ": it is a directory");
-  std::string pattern = target_ + ".part-XXXXXX";
+  std::error_code ec;
+  const auto status = std::filesystem::status(target_, ec);
+  if (std::filesystem::is_directory(status)) throw Error("cannot write " + target_ + ": it is a directory");
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    // A device or a pipe (/dev/null, /dev/stdout, a FIFO): nothing to stage or rename, the bytes go
+    // straight to it. Renaming over it would replace the device with a file.
+    fd_ = open(target_.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd_ < 0) throw Error("cannot write " + target_ + ": " + reason(errno));
+    temp_ = target_;
+    direct_ = true;
+    return;
+  }
+  // A symbolic link stays a link: the file it points to is the one replaced.
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(target_, ec)))
+    destination_ = std::filesystem::weakly_canonical(target_, ec).string();
+  if (destination_.empty()) destination_ = target_;
+  std::string pattern = destination_ + ".part-XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   fd_ = mkostemp(name.data(), O_CLOEXEC);
@@ -170,14 +185,16 @@ StagedFile::StagedFile(std::string target) : target_(std::move(target)) {
 
 StagedFile::StagedFile(StagedFile&& other) noexcept
     : target_(std::move(other.target_)),
+      destination_(std::move(other.destination_)),
       temp_(std::move(other.temp_)),
       fd_(std::exchange(other.fd_, -1)),
       slot_(std::exchange(other.slot_, -1)),
       written_(other.written_),
-      committed_(std::exchange(other.committed_, true)) {}
+      committed_(std::exchange(other.committed_, true)),
+      direct_(other.direct_) {}
 
 StagedFile::~StagedFile() {
-  if (!committed_ && !temp_.empty()) std::remove(temp_.c_str());
+  if (!committed_ && !direct_ && !temp_.empty()) std::remove(temp_.c_str());
   release();
 }
 
@@ -197,6 +214,12 @@ void StagedFile::write(std::string_view bytes) {
 
 void StagedFile::commit() {
   if (committed_) throw Error("cannot write " + target_ + ": the file was already committed");
+  if (direct_) {
+    committed_ = true;
+    const int fd = std::exchange(fd_, -1);
+    if (close(fd) != 0) throw Error("cannot write " + target_ + ": " + reason(errno));
+    return;
+  }
   auto fail = [&](const std::string& what) {
     std::remove(temp_.c_str());
     committed_ = true;  // nothing left to remove
@@ -206,10 +229,10 @@ void StagedFile::commit() {
   if (fsync(fd_) != 0) fail(reason(errno));
   const int fd = std::exchange(fd_, -1);
   if (close(fd) != 0) fail(reason(errno));
-  if (std::rename(temp_.c_str(), target_.c_str()) != 0) fail(reason(errno));
+  if (std::rename(temp_.c_str(), destination_.c_str()) != 0) fail(reason(errno));
   committed_ = true;
   release();
-  sync_directory(directory_of(target_));
+  sync_directory(directory_of(destination_));
 }
 
 void write_file_atomically(const std::string& path, std::string_view bytes) {

@@ -8,7 +8,9 @@
 // An uncommitted StagedFile removes its temporary when destroyed; after
 // remove_staged_files_on_signals(), SIGINT, SIGTERM and SIGHUP remove the live temporaries too
 // before the process ends. Only `kill -9` (or a power cut) can leave a temporary behind, never a
-// partial target: temporaries are named TARGET.part-XXXXXX.
+// partial target: temporaries are named TARGET.part-XXXXXX. A target that is a symbolic link keeps
+// being one (the file it points to is replaced); a device or pipe (/dev/null, /dev/stdout, a FIFO)
+// is written straight, as there is nothing to stage.
 //
 // Writers that produce bytes in memory call write_file_atomically(); writers that hand a path to
 // a library (ffmpeg) write into temp_path() and commit(); a writer of many files that belong
@@ -44,11 +46,12 @@ class StagedFile {
  private:
   void release();  // closes the descriptor and forgets the temporary for the signal handler
 
-  std::string target_, temp_;
+  std::string target_, destination_, temp_;  // destination: the target, or the file its link points to
   int fd_ = -1;
   int slot_ = -1;  // index in the signal handler's table of live temporaries, -1 when not there
   std::uint64_t written_ = 0;
   bool committed_ = false;
+  bool direct_ = false;  // a device or pipe, written straight
 };
 
 // Writes `bytes` to `path` through a StagedFile: all or nothing.
