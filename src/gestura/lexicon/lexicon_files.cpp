@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/file_extension.hpp"
 #include "gestura/core/staged_file.hpp"
 
 namespace gestura {
@@ -297,7 +298,7 @@ std::size_t import_file(Lexicon& lexicon, const std::string& path, const ImportO
 
 std::size_t export_file(std::span<const SignEntry> entries, const std::string& path) {
   std::ostringstream out;
-  const bool sigml = std::filesystem::path(path).extension() == ".sigml";
+  const bool sigml = has_extension(path, ".sigml");
   const std::size_t count = sigml ? export_sigml(entries, out) : (export_jsonl(entries, out), entries.size());
   write_file_atomically(path, out.str());
   return count;
