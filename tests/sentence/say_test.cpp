@@ -361,5 +361,24 @@ TEST(SayBadInput, ClearErrors) {
   expect_error("?!.", {}, "nothing to sign");
 }
 
+// An utterance has a cap on its duration (kMaxSaySeconds), checked gloss by gloss while planning so
+// that no motion is made for text that would be refused: 300 long unknown words fingerspelled at
+// the slowest tempo would last hours.
+TEST(SayLimits, AnUtteranceLongerThanTheCapIsRefusedAtTheGlossThatPassesIt) {
+  std::string text;
+  for (int w = 0; w < 290; ++w) text += std::string(w % 2 ? "zyxwvutsrqponmlkjihgfedcbazyxwvutsrqpon" : "qwertyuiopasdfghjklzxcvbnmqwertyuiopasdfg") + " ";
+  SayOptions slow;
+  slow.speed = 0.25f;
+  try {
+    say(text, slow);
+    ADD_FAILURE() << "no error for an utterance of hours";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("kMaxSaySeconds"), std::string::npos) << what;
+    EXPECT_NE(what.find("1800 s"), std::string::npos) << what;
+    EXPECT_NE(what.find("passed at gloss"), std::string::npos) << what;
+  }
+}
+
 }  // namespace
 }  // namespace gestura

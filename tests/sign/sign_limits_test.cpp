@@ -14,7 +14,10 @@
 #include <string>
 
 #include "gestura/core/error.hpp"
+#include "gestura/body/avatar.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
+#include "gestura/sign/sign_planner.hpp"
+#include "gestura/sign/signing_rig.hpp"
 #include "gestura/sign/sigml.hpp"
 #include "support/build_paths.hpp"
 #include "support/shared_data.hpp"
@@ -99,6 +102,28 @@ TEST(SignLimits, SignDurationCapNamesTheLimit) {
     EXPECT_NE(std::string(e.what()).find("kMaxSignSeconds"), std::string::npos) << e.what();
   }
   EXPECT_THROW(check_sign_duration(std::nanf("")), Error);
+}
+
+// Under the action caps a sign can still last long: nested repetitions of a movement, planned at the
+// slowest tempo. The planner refuses it naming kMaxSignSeconds; at normal tempo it plans.
+TEST(SignLimits, ThePlannerRefusesASignLongerThanTheDurationCap) {
+  std::string inner = "hammoveo";
+  for (int level = 0; level < 3; ++level)
+    inner = "hamseqbegin," + inner + ",hamrepeatfromstartseveral,hamseqend";
+  const HamSign sign = parse_hamnosys_names("hamflathand,hamextfingeru,hampalml,hamchest," + inner);
+  ASSERT_LE(performed_actions(sign), kMaxPerformedActions);
+  static const Avatar avatar = build_avatar();
+  const SigningRig rig = make_signing_rig(avatar);
+  const SignPlan normal = plan_sign(sign, rig);
+  EXPECT_LT(normal.duration(), kMaxSignSeconds);
+  PlanOptions slowest;
+  slowest.speed = 0.25f;
+  try {
+    const SignPlan slow = plan_sign(sign, rig, slowest);
+    ADD_FAILURE() << "a sign of " << slow.duration() << " s was planned (normal tempo: " << normal.duration() << " s)";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("kMaxSignSeconds"), std::string::npos) << e.what();
+  }
 }
 
 // Real signs are far from the caps: the busiest uses under a tenth of them.
