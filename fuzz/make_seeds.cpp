@@ -24,8 +24,9 @@
 #include "gestura/io/bvh.hpp"
 #include "gestura/io/gltf_animation.hpp"
 #include "gestura/io/openpose_json.hpp"
+#include "gestura/io/pose_format.hpp"
 #include "gestura/sign/hamnosys_symbol.hpp"
-#include "gestura/text/utf8.hpp"
+#include "gestura/core/utf8.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -205,6 +206,21 @@ void motion_seeds(const fs::path& shared, const Motions& m) {
                {"face_keypoints_2d", std::vector<double>(210, 3.0)}, {"pose_keypoints_3d", std::vector<double>(72, 0.5)}};
   seed("openpose_json", json({{"version", 1.1}, {"people", {coco, coco}}}).dump());
 
+  // .pose as gestura writes it: the skeleton layout, OpenPose 2D through a camera, and a short
+  // two-frame file (small seeds mutate faster).
+  for (const gestura::PoseLayout layout : {gestura::PoseLayout::Skeleton3D, gestura::PoseLayout::OpenPose2D})
+    seed("pose", gestura::encode_pose(gestura::pose_from_clip(m.humanoid, m.short_clip, 10.0f, layout)));
+  {
+    gestura::PoseData pose = gestura::pose_from_clip(m.humanoid, m.short_clip, 10.0f, gestura::PoseLayout::Skeleton3D);
+    pose.frames = 2;
+    pose.data.resize(2 * pose.point_count() * static_cast<std::size_t>(pose.dims()));
+    pose.confidence.resize(2 * pose.point_count());
+    seed("pose", gestura::encode_pose(pose));
+  }
+
+  dictionary("pose", {std::string("\xCD\xCC\x4C\x3E", 4) /* 0.2f */, std::string("\xCD\xCC\xCC\x3D", 4) /* 0.1f */,
+                      "XYZC", "XYC", "GESTURA_SKELETON", "pose_keypoints_2d", "POSE_LANDMARKS", std::string("\xFF\xFF", 2),
+                      std::string("\x00\x00\x00\x00", 4), std::string("\xFF\xFF\xFF\x7F", 4)});
   dictionary("bvh", {"HIERARCHY", "ROOT", "JOINT", "End Site", "OFFSET", "CHANNELS", "MOTION", "Frames:", "Frame Time:",
                      "Xposition", "Yposition", "Zposition", "Xrotation", "Yrotation", "Zrotation", "{", "}", "\n", "\t",
                      "1e308", "-0", "nan", "inf"});
@@ -278,6 +294,7 @@ int main(int argc, char** argv) {
   const fs::path shared = argv[1], source = argv[2];
   g_out = argv[3];
   try {
+    fs::remove_all(g_out);  // seeds of an older version must not linger
     hamnosys_seeds(shared, source);
     sigml_seeds(shared);
     const Motions motions;
