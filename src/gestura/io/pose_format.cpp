@@ -69,7 +69,7 @@ class Reader {
   void floats(std::vector<float>& out, std::size_t n, const char* what) {
     need(n * sizeof(float), what);
     out.resize(n);
-    std::memcpy(out.data(), bytes_.data() + at_, n * sizeof(float));
+    if (n > 0) std::memcpy(out.data(), bytes_.data() + at_, n * sizeof(float));  // an empty vector's data() may be null
     at_ += n * sizeof(float);
   }
   std::size_t left() const { return bytes_.size() - at_; }
@@ -112,7 +112,7 @@ std::string encode_pose(const PoseData& pose) {
                 " and " + std::to_string(cells));
   if (!std::isfinite(pose.fps) || !(pose.fps > 0.0f)) throw Error(".pose: fps must be positive");
   Writer w;
-  w.f32(pose.version);
+  w.f32(0.2f);  // the body below is version 0.2's, whatever version the data was read from
   w.u16(pose.width, "width");
   w.u16(pose.height, "height");
   w.u16(pose.depth, "depth");
