@@ -15,7 +15,7 @@
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/render_job.hpp"
 #include "gestura/render/renderer.hpp"
-#include "gestura/render/staged_file.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/render/viewer_controls.hpp"
 #include "scene_view.hpp"
 

@@ -5,6 +5,7 @@
 #include "gestura/body/body_sites.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/core/file_extension.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/io/gltf_export.hpp"
 
 namespace gestura::app {
@@ -50,12 +51,7 @@ AvatarResult run(const AvatarRequest& request, const RunContext&) {
   if (request.action == AvatarAction::sites) {
     result.sites_json = body_sites_json(a.skeleton, find_body_sites(a.skeleton, a.mesh));
     if (!request.output.empty()) {
-      as_field_error(ErrorCategory::output, "output", [&] {
-        std::FILE* f = std::fopen(request.output.c_str(), "wb");
-        if (!f) throw Error(request.output + ": cannot write here");
-        const bool ok = std::fwrite(result.sites_json.data(), 1, result.sites_json.size(), f) == result.sites_json.size();
-        if (std::fclose(f) != 0 || !ok) throw Error(request.output + ": write failed");
-      });
+      as_field_error(ErrorCategory::output, "output", [&] { write_file_atomically(request.output, result.sites_json); });
       result.written = request.output;
     }
   }

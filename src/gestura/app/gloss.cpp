@@ -31,7 +31,7 @@ GlossResult run(const GlossRequest& request, const RunContext&) {
     const std::string path = request.db.empty() ? default_user_lexicon_path() : request.db;
     if (!request.db.empty() && !std::filesystem::exists(path)) throw AppError(ErrorCategory::not_found, Place{"db", {path}}, "no such lexicon");
     if (std::filesystem::exists(path)) {
-      user.emplace(Lexicon::open(path));
+      user.emplace(Lexicon::open_read_only(path));
       layers.push_layer(*user);
     }
   }

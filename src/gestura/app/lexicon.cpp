@@ -34,7 +34,7 @@ struct ReadView {
     const std::string path = user_db_path(db);
     if (!db.empty() && !std::filesystem::exists(path)) throw AppError(ErrorCategory::not_found, Place{"db", {path}}, "no such lexicon");
     if (std::filesystem::exists(path)) {
-      user.emplace(Lexicon::open(path));
+      user.emplace(Lexicon::open_read_only(path));
       view.push_layer(*user);
     }
   }
@@ -156,13 +156,11 @@ LexiconChangeResult run(const LexiconExportRequest& request, const RunContext&) 
   validate(request);
   const std::string path = user_db_path(request.db);
   if (!std::filesystem::exists(path)) throw AppError(ErrorCategory::not_found, Place{"db", {path}}, "no such lexicon");
-  Lexicon lex = Lexicon::open(path);
+  Lexicon lex = Lexicon::open_read_only(path);
   const auto entries = lex.list(request.lang);
-  std::ofstream out(request.file, std::ios::binary);
-  if (!out) throw AppError(ErrorCategory::output, Place{"file", {request.file}}, "cannot write file");
-  const bool sigml = has_extension(request.file, ".sigml");
   LexiconChangeResult result;
-  result.count = sigml ? export_sigml(entries, out) : (export_jsonl(entries, out), entries.size());
+  // All or nothing: written to a temporary, checked, synced and renamed (a full disk leaves no file).
+  as_field_error(ErrorCategory::output, "file", [&] { result.count = export_file(entries, request.file); });
   result.skipped = entries.size() - result.count;
   result.path = request.file;
   return result;

@@ -3,11 +3,11 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 namespace {
@@ -233,10 +233,7 @@ std::vector<std::uint8_t> encode_glb(const Skeleton& skeleton, const Mesh& mesh,
 
 void write_glb(const std::string& path, const Skeleton& skeleton, const Mesh& mesh, const std::string& name) {
   const std::vector<std::uint8_t> bytes = encode_glb(skeleton, mesh, name);
-  std::ofstream file(path, std::ios::binary);
-  if (!file) throw Error(SourceLocation{path}, "cannot open for writing");
-  file.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  if (!file) throw Error(SourceLocation{path}, "write failed");
+  write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 }  // namespace gestura

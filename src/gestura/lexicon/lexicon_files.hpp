@@ -42,6 +42,9 @@ std::size_t import_jsonl(Lexicon& lexicon, const std::string& path, const Import
 void export_jsonl(std::span<const SignEntry> entries, std::ostream& out);
 
 std::size_t import_sigml(Lexicon& lexicon, const std::string& path, const ImportOptions& options);
+// The same from a document in memory; `name` stands for the file in errors.
+std::size_t import_sigml_text(Lexicon& lexicon, std::string_view text, const std::string& name,
+                              const ImportOptions& options);
 // Writes the SiGML-notated entries as one <sigml> document; returns how many were written (HamNoSys
 // and clip entries are skipped: converting them is not a lexicon concern).
 std::size_t export_sigml(std::span<const SignEntry> entries, std::ostream& out);
@@ -51,6 +54,10 @@ std::string read_sigml_sign(const std::string& path, std::string_view gloss);
 
 // Imports by extension: .sigml / .xml as SiGML, anything else as JSON lines.
 std::size_t import_file(Lexicon& lexicon, const std::string& path, const ImportOptions& options);
+// Exports by extension: .sigml as SiGML (SiGML entries only), anything else as JSON lines; returns
+// how many entries were written. All or nothing: the file is written to a temporary, every write
+// checked, then renamed into place, so a full disk leaves no file and reports an error.
+std::size_t export_file(std::span<const SignEntry> entries, const std::string& path);
 
 // The built-in lexicon: an in-memory database filled from JSON-lines files shipped in data/lexicon/
 // (one per sign language, e.g. ase.jsonl), so it is never written to and costs no disk state.

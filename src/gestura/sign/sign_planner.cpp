@@ -9,6 +9,7 @@
 #include "gestura/sign/arm_reach.hpp"
 #include "gestura/sign/hand_part.hpp"
 #include "gestura/sign/movement_timing.hpp"
+#include "gestura/sign/sign_limits.hpp"
 
 namespace gestura {
 
@@ -1054,7 +1055,11 @@ SignPlan plan_sign(const sign::HamSign& sign, const SigningRig& rig, const PlanO
   if (!(options.speed >= 0.25f && options.speed <= 4.0f))
     throw Error("speed must be between 0.25 and 4 (got " + std::to_string(options.speed) + ")");
   if (sign.segments.empty()) throw Error("the sign has no manual part");
-  return Planner(rig, options).run(sign);
+  SignPlan plan = Planner(rig, options).run(sign);
+  // The notation's caps (sign_limits.hpp) bound the actions; slow manners and a slow tempo still
+  // multiply their time, so the planned duration has its own cap.
+  sign::check_sign_duration(plan.duration());
+  return plan;
 }
 
 }  // namespace gestura

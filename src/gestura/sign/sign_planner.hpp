@@ -26,7 +26,8 @@ struct SignPlan {
   float duration() const { return std::max(right.end_time(), left.end_time()); }
 };
 
-// Throws gestura::Error (with the symbol index) for notation it cannot perform.
+// Throws gestura::Error (with the symbol index) for notation it cannot perform, and naming
+// sign::kMaxSignSeconds for a sign that would last longer (sign/sign_limits.hpp).
 SignPlan plan_sign(const sign::HamSign& sign, const SigningRig& rig, const PlanOptions& options = {});
 
 // The hand states at rest (arms hanging), used before and after signing.
