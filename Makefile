@@ -7,7 +7,7 @@ PRESET := $(if $(filter true,$(CI)),ci,release)
 JOBS   ?= $(shell nproc)
 BIN    := build/bin
 
-.PHONY: run test build deps bench clean
+.PHONY: run test build deps bench coverage clean
 
 deps:
 	@scripts/setup-deps.sh
@@ -24,6 +24,10 @@ test: build
 
 bench: build
 	@$(BIN)/gestura-bench
+
+# How many content words of everyday English sentences the ASL lexicon signs (docs/asl-lexicon.md).
+coverage: build
+	@python3 tools/coverage.py --gestura $(BIN)/gestura
 
 clean:
 	rm -rf build build-debug
