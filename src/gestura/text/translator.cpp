@@ -126,7 +126,7 @@ class SentenceTranslator {
       case TokenKind::sentence_end:
         break;
     }
-    if (phrase() || number_words() || month_date()) return;
+    if (phrase() || number_words() || month_date() || lexicon_phrase()) return;
     word();
   }
 
@@ -158,6 +158,39 @@ class SentenceTranslator {
       for (std::size_t k = 0; k < p->words.size(); ++k) note(w_[i_ + k], reason);
       i_ += p->words.size();
       return true;
+    }
+    return false;
+  }
+
+  // A keyword of several words in the lexicon ("train station", "wake up", "next to"), longest first;
+  // the first or the last word may be inflected ("woke up", "credit cards").
+  bool lexicon_phrase() {
+    if (inventory_.open_vocabulary()) return false;  // it would take any run of words as one sign
+    constexpr std::size_t kLongest = 4;
+    for (std::size_t n = kLongest; n >= 2; --n) {
+      if (i_ + n > w_.size()) continue;
+      bool words = true;
+      for (std::size_t k = 0; k < n && words; ++k) words = w_[i_ + k].kind == TokenKind::word;
+      if (!words) continue;
+      std::string middle;
+      for (std::size_t k = 1; k + 1 < n; ++k) middle += w_[i_ + k].lower + " ";
+      for (const LemmaCandidate& first : lemma_candidates(w_[i_].lower))
+        for (const LemmaCandidate& last : lemma_candidates(w_[i_ + n - 1].lower)) {
+          const std::string text = first.lemma + " " + middle + last.lemma;
+          const auto gloss = inventory_.gloss_for(text);
+          if (!gloss) continue;
+          const Word& from = w_[i_];
+          const Word& to = w_[i_ + n - 1];
+          const Role role = english::is_wh_word(from.lower) && question_ ? Role::wh : Role::plain;
+          if (role == Role::wh) has_wh_ = true;
+          std::string said;
+          for (std::size_t k = 0; k < n; ++k) said += (k ? " " : "") + w_[i_ + k].text;
+          const std::string reason = quoted(said) + " → " + *gloss + ": lexicon phrase " + quoted(text);
+          emit(GlossToken{*gloss, GlossKind::sign, from.begin, to.end, {}, reason}, role);
+          for (std::size_t k = 0; k < n; ++k) note(w_[i_ + k], reason);
+          i_ += n;
+          return true;
+        }
     }
     return false;
   }
@@ -488,12 +521,19 @@ class SentenceTranslator {
     }
     ++i_;
     const bool looks_like_name = w.capitalized && !all_caps_ && l != "i" && !sentence_initial_word(w);
+    const auto candidates = lemma_candidates(l);
     if (looks_like_name) {
+      // A capitalised word with a sign of its own (a place, a holiday, "Sundays") is signed.
       if (!inventory_.open_vocabulary())
-        if (const auto gloss = inventory_.gloss_for(l)) return sign(w, *gloss, quoted(w.text) + " → " + *gloss);
+        for (const LemmaCandidate& c : candidates)
+          if (const auto gloss = inventory_.gloss_for(c.lemma))
+            return sign(w, *gloss, quoted(w.text) + " → " + *gloss + (c.rule.empty() ? "" : ": " + std::string(c.rule)));
       return fingerspell(w, "name (capitalized)");
     }
-    const auto candidates = lemma_candidates(l);
+    // A form the lexicon lists as written ("glasses", "hearing", "news") keeps its own sign; other
+    // forms are looked up by their lemma.
+    if (!inventory_.open_vocabulary())
+      if (const auto gloss = inventory_.gloss_for(l)) return sign(w, *gloss, quoted(w.text) + " → " + *gloss);
     for (const LemmaCandidate& c : candidates)
       if (const auto gloss = inventory_.gloss_for(c.lemma))
         return sign(w, *gloss, quoted(w.text) + " → " + *gloss + (c.rule.empty() ? "" : ": " + std::string(c.rule)));
