@@ -28,6 +28,7 @@ bench: build
 # How many content words of everyday English sentences the ASL lexicon signs (docs/asl-lexicon.md).
 coverage: build
 	@python3 tools/coverage.py --gestura $(BIN)/gestura
+	@python3 tools/coverage.py --gestura $(BIN)/gestura --sentences data/eval/heldout-sentences.txt --quiet
 
 clean:
 	rm -rf build build-debug

@@ -132,7 +132,8 @@ def main():
             print("fingerspelled by convention (names, months; not counted): " +
                   ", ".join(f"{w} ({c})" for w, c in sorted(conventional.items())))
         print()
-    print(f"coverage: {signed_total} of {total} content words signed = {pct:.1f}%")
+    name = os.path.relpath(args.sentences, ROOT)
+    print(f"coverage of {name}: {signed_total} of {total} content words signed = {pct:.1f}%")
     return 1 if pct < args.min else 0
 
 

@@ -176,6 +176,25 @@ TEST(Translator, OpenVocabularyUsesLemmasAndCapitalsForNames) {
   EXPECT_EQ(translate_to_gloss("The kids liked running.", open).text(), "KID LIKE RUN");
 }
 
+// A keyword of several words (as a lexicon lists "train station" or "wake up") is one sign, found
+// with its first or last word inflected; a form the lexicon lists as written keeps its own sign
+// before lemmas are tried; a capitalised word with a sign is signed, not spelled as a name.
+TEST(Translator, LexiconPhrasesListedFormsAndCapitalisedWordsWithSigns) {
+  WordListInventory v{{"train station", "STATION"}, {"train", "TRAIN"}, {"wake up", "WAKE-UP"},
+                      {"glasses", "GLASSES"},       {"glass", "GLASS"},   {"sunday", "SUNDAY"},
+                      {"credit card", "CREDIT-CARD"}, {"pay", "PAY"},     {"lose", "LOSE"}};
+  EXPECT_EQ(translate_to_gloss("Where is the train station?", v).text(), "STATION WHERE");
+  EXPECT_EQ(translate_to_gloss("The train is late.", v).text(), "TRAIN FS-LATE");
+  EXPECT_EQ(translate_to_gloss("She woke up.", v).text(), "IX-3 WAKE-UP");
+  EXPECT_EQ(translate_to_gloss("I paid with credit cards.", v).text(), "IX-1 PAY FS-WITH CREDIT-CARD");
+  EXPECT_EQ(translate_to_gloss("I lost my glasses.", v).text(), "IX-1 LOSE POSS-1 GLASSES");
+  EXPECT_EQ(translate_to_gloss("I drank a glass.", v).text(), "IX-1 FS-DRANK GLASS");
+  EXPECT_EQ(translate_to_gloss("We rest on Sundays.", v).text(), "WE FS-REST SUNDAY");
+  // The open vocabulary would take any run of words as one sign, so it does not look phrases up.
+  OpenVocabulary open;
+  EXPECT_EQ(translate_to_gloss("The train station.", open).text(), "TRAIN STATION");
+}
+
 TEST(TranslatorInput, EmptyAndPunctuationOnly) {
   EXPECT_TRUE(gloss("").glosses.empty());
   EXPECT_TRUE(gloss("").sentences.empty());
