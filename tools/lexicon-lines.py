@@ -14,6 +14,8 @@ src/gestura/sign/hamnosys_symbol.cpp.
                                                      block (new categories at the end); refuses a gloss or
                                                      keyword the lexicon already has
     tools/lexicon-lines.py fill LEXICON              rewrite every line's `hamnosys` from its `names`
+    tools/lexicon-lines.py table LEXICON             print the Markdown table of glosses by category
+                                                     (docs/asl-lexicon.md, "Signs")
 """
 import json
 import os
@@ -120,8 +122,37 @@ def merge(path, new):
     print(f"{path}: {len(new)} signs added, {len(old) + len(new)} in all")
 
 
+CATEGORY_NAMES = {
+    "pronoun": "Pronouns and pointing", "greeting": "Greetings, politeness, yes/no/not",
+    "question": "Wh-words", "function": "Function signs, adverbs, prepositions, quantifiers, connectives",
+    "verb": "Verbs", "noun": "Nouns (people, things, abstract)", "adjective": "Adjectives", "time": "Time",
+    "day": "Days of the week", "colour": "Colours", "number": "Numbers", "home": "Home and household",
+    "food": "Food and drink", "body": "Body", "health": "Health", "clothing": "Clothing",
+    "travel": "Travel and transport", "place": "Places", "work": "Work", "school": "School",
+    "shopping": "Shopping, money and sport", "nature": "Weather and nature", "animal": "Animals",
+    "people": "People and society", "deaf": "Deaf life",
+}
+
+
+def table(path):
+    entries = read_lexicon(path)
+    order, blocks = [], {}
+    for e in entries:
+        if e["category"] not in blocks:
+            order.append(e["category"])
+            blocks[e["category"]] = []
+        blocks[e["category"]].append(e["gloss"])
+    known = [c for c in CATEGORY_NAMES if c in blocks]
+    order = known + [c for c in order if c not in CATEGORY_NAMES]
+    print("| category | count | glosses |")
+    print("|---|---|---|")
+    for c in order:
+        print(f"| {CATEGORY_NAMES.get(c, c)} (`{c}`) | {len(blocks[c])} | {', '.join(blocks[c])} |")
+    print(f"| **total** | **{len(entries)}** | |")
+
+
 def main(argv):
-    if len(argv) < 2 or argv[0] not in ("compact", "merge", "fill"):
+    if len(argv) < 2 or argv[0] not in ("compact", "merge", "fill", "table"):
         raise SystemExit(__doc__)
     if argv[0] == "compact":
         for path in argv[1:]:
@@ -131,6 +162,8 @@ def main(argv):
         if len(argv) < 3:
             raise SystemExit(__doc__)
         merge(argv[1], [e for p in argv[2:] for e in parse_compact(p)])
+    elif argv[0] == "table":
+        table(argv[1])
     else:
         entries = read_lexicon(argv[1])
         for e in entries:

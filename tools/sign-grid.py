@@ -43,6 +43,9 @@ def render_row(gestura, entry, workdir):
     n = re.search(r"([0-9]+) frames", run.stdout)
     last = int(n.group(1)) - 1 if n else round(b * FPS)
     frames = [min(last, round(t * FPS)) for t in (a, (a + b) / 2, b)]
+    for i in (1, 2):  # three distinct frames, or the tile would stay blank
+        frames[i] = max(frames[i], frames[i - 1] + 1)
+    frames = [f - max(0, frames[2] - last) for f in frames]
     select = "+".join(f"eq(n\\,{f})" for f in frames)
     cw, ch = int(FRONT[2] * SCALE), int(FRONT[3] * SCALE)
     row = os.path.join(workdir, safe + ".png")
