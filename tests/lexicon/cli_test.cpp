@@ -90,7 +90,8 @@ TEST(GlossCli, UsesTheLexiconAndExplains) {
   const CliRun run = gestura_cli(dir, "gloss 'I went to the shop yesterday.'");
   EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_EQ(run.output.substr(0, run.output.find('\n')), "YESTERDAY IX-1 GO STORE");
-  EXPECT_NE(run.output.find("'went' → GO: irregular past"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("'went' → GO: verb, WordNet lemma 'go'"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("parse: (S (NP I.p) (VP went.v-d"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("'the' dropped: article"), std::string::npos) << run.output;
 
   const CliRun json = gestura_cli(dir, "gloss 'Where is Bob?' --json");
