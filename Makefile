@@ -14,7 +14,7 @@ FUZZ_SECONDS ?= 60
 SANITIZER_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
                  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
 
-.PHONY: run test build build-cli deps bench bench-anchors legibility clean fuzz fuzz-smoke test-asan
+.PHONY: run test build build-cli deps bench bench-anchors legibility coverage clean fuzz fuzz-smoke test-asan
 
 deps:
 	@scripts/setup-deps.sh
@@ -50,6 +50,11 @@ test-asan: deps
 
 bench: build
 	@$(BIN)/gestura-bench
+
+# How many content words of everyday English sentences the ASL lexicon signs (docs/asl-lexicon.md).
+coverage: build-cli
+	@python3 tools/coverage.py --gestura $(BIN)/gestura
+	@python3 tools/coverage.py --gestura $(BIN)/gestura --sentences data/eval/heldout-sentences.txt --quiet
 
 # MediaPipe Holistic on rendered signs (minutes: ~5-10 s per frame); not part of make test.
 # LEGIBILITY_ARGS passes options, e.g. LEGIBILITY_ARGS="--size 640x360 --step 3 house".

@@ -60,7 +60,7 @@ nlohmann::json to_json(const GlossResult& result) {
   auto& sentences = out["sentences"] = nlohmann::json::array();
   for (const auto& s : t.sentences)
     sentences.push_back({{"type", to_string(s.type)}, {"negated", s.negated}, {"first", s.first}, {"last", s.last},
-                         {"begin", s.begin}, {"end", s.end}});
+                         {"begin", s.begin}, {"end", s.end}, {"parse", s.parse}});
   auto& markers = out["markers"] = nlohmann::json::array();
   for (const auto& m : t.markers) markers.push_back({{"kind", to_string(m.kind)}, {"first", m.first}, {"last", m.last}});
   return out;

@@ -5,8 +5,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
+#include <optional>
 #include <sstream>
 
 #include "gestura/core/error.hpp"
@@ -170,18 +172,31 @@ nlohmann::json entry_to_json(const SignEntry& e) {
 
 std::size_t import_jsonl(Lexicon& lexicon, std::istream& in, const std::string& name, const ImportOptions& options) {
   std::size_t count = 0;
+  std::map<std::string, int> occurrences;  // language + gloss → entries so far in this file
   lexicon.atomically([&] {
     int line_number = 0;
     for (std::string line; std::getline(in, line);) {
       ++line_number;
       if (trimmed(line).empty()) continue;
+      std::optional<Error> bad;
       try {
         const auto object = nlohmann::json::parse(line);
-        lexicon.add(entry_from_json(object, options), options.on_conflict);
+        SignEntry entry = entry_from_json(object, options);
+        // A gloss the file repeats without naming variants is a homonym (another sign with the same
+        // gloss), not a correction: it becomes the next variant instead of replacing the first.
+        const int seen = ++occurrences[entry.language + '\n' + entry.gloss];
+        if (!object.contains("variant")) entry.variant = seen;
+        if (options.check) options.check(entry);
+        lexicon.add(std::move(entry), options.on_conflict);
       } catch (const nlohmann::json::exception& e) {
-        throw Error(at(name, line_number), std::string("bad JSON: ") + e.what());
+        bad.emplace(at(name, line_number), std::string("bad JSON: ") + e.what());
       } catch (const Error& e) {
-        throw Error(at(name, line_number), e.what());
+        bad.emplace(at(name, line_number), e.what());
+      }
+      if (bad) {
+        if (!options.skip_bad) throw *bad;
+        options.skip_bad(*bad);
+        continue;
       }
       ++count;
     }
@@ -239,9 +254,13 @@ std::size_t import_sigml_text(Lexicon& lexicon, std::string_view text, const std
         e.keywords.push_back(Keyword{keyword});
         e.source = source;
         e.licence = options.licence;
+        if (options.check) options.check(e);
         lexicon.add(std::move(e), options.on_conflict);
       } catch (const Error& e) {
-        throw Error(at(path, line_of(text, offset)), e.what());
+        const Error bad(at(path, line_of(text, offset)), e.what());
+        if (!options.skip_bad) throw bad;
+        options.skip_bad(bad);
+        continue;
       }
       ++count;
     }
