@@ -26,6 +26,23 @@ Sex parse_sex(std::string_view text) {
   throw Error("avatar sex '" + std::string(text) + "' is not one of female, male, neutral");
 }
 
+std::string_view to_string(HairStyle style) {
+  switch (style) {
+    case HairStyle::Buzz: return "buzz";
+    case HairStyle::Curly: return "curly";
+    case HairStyle::Bun: return "bun";
+    case HairStyle::Bob: return "bob";
+    case HairStyle::Short: break;
+  }
+  return "short";
+}
+
+HairStyle parse_hair_style(std::string_view text) {
+  for (HairStyle s : {HairStyle::Short, HairStyle::Buzz, HairStyle::Curly, HairStyle::Bun, HairStyle::Bob})
+    if (to_string(s) == text) return s;
+  throw Error("hair style '" + std::string(text) + "' is not one of short, buzz, curly, bun, bob");
+}
+
 static void check_range(std::string_view name, float value, float lo, float hi, std::string_view unit) {
   if (std::isfinite(value) && value >= lo && value <= hi) return;
   std::ostringstream out;
@@ -50,8 +67,11 @@ void AvatarParams::validate() const {
   check_range("hand_size", hand_size, 0.7f, 1.4f, "");
   check_range("finger_length", finger_length, 0.7f, 1.4f, "");
   check_range("finger_thickness", finger_thickness, 0.6f, 1.5f, "");
+  check_range("sleeve", sleeve, 0.5f, 1.0f, "");
   if (sex != Sex::Neutral && sex != Sex::Female && sex != Sex::Male)
     throw Error("avatar parameter sex has an invalid value");
+  if (static_cast<int>(hair) < 0 || static_cast<int>(hair) > static_cast<int>(HairStyle::Bob))
+    throw Error("avatar parameter hair has an invalid value");
 }
 
 }  // namespace gestura

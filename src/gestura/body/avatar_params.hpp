@@ -13,6 +13,13 @@ std::string_view to_string(Sex sex);
 // "female", "male", "neutral" (case-insensitive); throws gestura::Error otherwise.
 Sex parse_sex(std::string_view text);
 
+// Hair over the scalp: short (cropped), buzz (shaved close), curly (a short rounded volume),
+// bun (pulled back into a bun), bob (covering the ears down to the jaw).
+enum class HairStyle { Short, Buzz, Curly, Bun, Bob };
+std::string_view to_string(HairStyle style);
+// The names above; throws gestura::Error listing them otherwise.
+HairStyle parse_hair_style(std::string_view text);
+
 struct AvatarParams {
   float height = 1.70f;            // metres, crown to floor; allowed [1.0, 2.5]
   float build = 1.0f;              // girth multiplier of trunk and limbs; allowed [0.6, 1.6]
@@ -22,6 +29,8 @@ struct AvatarParams {
   float finger_length = 1.0f;      // extra multiplier of the phalanges only; [0.7, 1.4]
   float finger_thickness = 1.0f;   // multiplier of finger radii; [0.6, 1.5]
   Sex sex = Sex::Neutral;
+  HairStyle hair = HairStyle::Short;
+  float sleeve = 1.0f;             // the shirt's sleeve, as a share of the forearm it covers; [0.5, 1]
 
   // Throws gestura::Error naming the parameter, its value and the allowed range for a negative,
   // NaN, infinite or absurd value.

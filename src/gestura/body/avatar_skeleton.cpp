@@ -191,8 +191,8 @@ Skeleton build_avatar_skeleton(const AvatarParams& params) {
   b.add("temporomandibular", skull, vec3(0.0f, 1.545f, 0.030f) * k,
         dofs(RotationOrder::XYZ, kX | kY, {-2, -8, 0}, {28, 8, 0}));
   const JointDofs eye = dofs(RotationOrder::YXZ, kX | kY, {-25, -35, 0}, {30, 35, 0});
-  b.add("l_eyeball_joint", skull, vec3(0.032f, 1.598f, 0.075f) * k, eye);
-  b.add("r_eyeball_joint", skull, vec3(-0.032f, 1.598f, 0.075f) * k, mirrored(eye));
+  b.add("l_eyeball_joint", skull, vec3(0.031f, 1.591f, 0.070f) * k, eye);
+  b.add("r_eyeball_joint", skull, vec3(-0.031f, 1.591f, 0.070f) * k, mirrored(eye));
   b.add("skull_tip", skull, vec3(0.0f, 1.700f, 0.000f) * k);
 
   for (float side : {1.0f, -1.0f}) {

@@ -5,6 +5,7 @@
 
 #include "gestura/body/avatar_proportions.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
+#include "gestura/body/head_sculpt.hpp"
 #include "gestura/body/mesh.hpp"
 #include "gestura/core/error.hpp"
 
@@ -105,79 +106,45 @@ void add_trunk(VolumeBuilder& b, const AvatarParams& p, float k) {
             MaterialId::Skin, 0.03f * k);
 }
 
-// Turns everything riding the jaw open about the jaw joint.
-void open_jaw(VolumeBuilder& b, float degrees) {
-  const int jaw = b.joint("temporomandibular");
-  const vec3 pivot = b.joints[static_cast<std::size_t>(jaw)];
-  const quat open = glm::angleAxis(deg(degrees), vec3(1, 0, 0));
-  for (Primitive& prim : b.body.primitives) {
-    if (prim.joint != jaw) continue;
-    prim.a = pivot + open * (prim.a - pivot);
-    prim.b = pivot + open * (prim.b - pivot);
-    prim.axes = glm::mat3_cast(open) * prim.axes;
-  }
-}
-
-void add_head(VolumeBuilder& b, float k, float jaw_open_degrees) {
-  const MaterialId skin = MaterialId::Skin;
+// The head: one sculpted surface with the mouth carved in and the jaw open by the bind angle
+// (head_sculpt.hpp), the hair as a shell over it, ears, and a ball of lid skin over each eyeball
+// with the almond of the eye opening carved into it down past the eyeball's surface: what is left of
+// the ball above and below the opening are the upper and lower lids, whose margins rest on the
+// eyeball, so a lid that turns about the eye's centre slides over it (the blink morph). The eyeballs,
+// teeth and tongue are separate rigid parts (face_parts.hpp).
+void add_head(VolumeBuilder& b, const AvatarParams& p, float k, float jaw_open_degrees) {
+  auto head = std::make_shared<HeadSculpt>(p, b.at("temporomandibular"),
+                                           std::array<vec3, 2>{b.at("l_eyeball_joint"), b.at("r_eyeball_joint")},
+                                           jaw_open_degrees);
+  Primitive face;
+  face.shape = PrimitiveShape::Sculpt;
+  face.sculpt = head;
+  b.push(face, "skullbase", MaterialId::Skin, 0.007f * k);
+  Primitive hair;
+  hair.shape = PrimitiveShape::Sculpt;
+  hair.sculpt = std::make_shared<HairSculpt>(head, p.hair);
+  b.push(hair, "skullbase", MaterialId::Hair, 0.002f * k);
   auto v = [k](float x, float y, float z) { return vec3(x, y, z) * k; };
-  b.ellipsoid("skullbase", v(0, 1.610f, -0.008f), v(0.075f, 0.088f, 0.096f), skin, 0.02f * k);
-  b.ellipsoid("skullbase", v(0, 1.578f, 0.028f), v(0.064f, 0.072f, 0.072f), skin, 0.02f * k);
-  b.ellipsoid("temporomandibular", v(0, 1.527f, 0.030f), v(0.051f, 0.036f, 0.064f), skin, 0.02f * k);
-  b.ellipsoid("temporomandibular", v(0, 1.499f, 0.080f), v(0.022f, 0.017f, 0.017f), skin, 0.014f * k);
-  for (float s : {1.0f, -1.0f}) {
-    b.ellipsoid("skullbase", v(s * 0.040f, 1.574f, 0.070f), v(0.021f, 0.017f, 0.018f), skin, 0.014f * k);
-    // Ears, tilted slightly back.
-    const mat3 tilt = glm::mat3_cast(glm::angleAxis(deg(-12.0f), vec3(1, 0, 0)));
-    b.ellipsoid("skullbase", v(s * 0.076f, 1.592f, -0.006f), v(0.011f, 0.029f, 0.018f), skin, 0.006f * k,
-                BlendOp::Union, tilt);
-  }
-  // Brow ridge and nose.
-  b.capsule("skullbase", v(-0.050f, 1.626f, 0.078f), v(0.0f, 1.628f, 0.088f), 0.010f * k, 0.009f * k, skin, 0.012f * k);
-  b.capsule("skullbase", v(0.050f, 1.626f, 0.078f), v(0.0f, 1.628f, 0.088f), 0.010f * k, 0.009f * k, skin, 0.012f * k);
-  b.capsule("skullbase", v(0, 1.612f, 0.093f), v(0, 1.572f, 0.113f), 0.0075f * k, 0.010f * k, skin, 0.010f * k);
-  b.ellipsoid("skullbase", v(0, 1.566f, 0.112f), v(0.011f, 0.010f, 0.011f), skin, 0.006f * k);
-  for (float s : {1.0f, -1.0f}) b.ellipsoid("skullbase", v(s * 0.012f, 1.563f, 0.104f), v(0.008f, 0.007f, 0.008f), skin, 0.006f * k);
-  // Hair cap over the top and back of the cranium.
-  b.ellipsoid("skullbase", v(0, 1.628f, -0.012f), v(0.081f, 0.073f, 0.094f), MaterialId::Hair, 0.012f * k);
-  // Eyes (the eyeballs themselves are separate rigid parts, face_parts.hpp): a ball of lid skin
-  // over each eyeball, blended into the face, with the almond of the eye opening carved into it
-  // down past the eyeball's surface. What is left of the ball above and below the opening are the
-  // upper and lower lids; their margins rest on the eyeball, so a lid that turns about the eye's
-  // centre slides over it (the blink morph).
+  if (p.hair == HairStyle::Bun)
+    b.ellipsoid("skullbase", v(0.0f, 1.652f, -0.094f), v(0.031f, 0.029f, 0.026f), MaterialId::Hair, 0.012f * k);
+  if (p.hair != HairStyle::Bob && p.hair != HairStyle::Curly)
+    for (float s : {1.0f, -1.0f}) {
+      // Ears, tilted slightly back, with the hollow of the concha.
+      const mat3 tilt = glm::mat3_cast(glm::angleAxis(deg(-15.0f), vec3(1, 0, 0)));
+      b.ellipsoid("skullbase", v(s * 0.0770f, 1.584f, -0.010f), v(0.0095f, 0.0310f, 0.0185f), MaterialId::Skin, 0.006f * k,
+                  BlendOp::Union, tilt);
+      b.ellipsoid("skullbase", v(s * 0.0855f, 1.579f, -0.006f), v(0.0055f, 0.0120f, 0.0085f), MaterialId::Skin, 0.003f * k,
+                  BlendOp::Subtract, tilt);
+    }
   for (const char* side : {"l_", "r_"}) {
     const vec3 eye = b.at(std::string(side) + "eyeball_joint");
-    b.ellipsoid("skullbase", eye, vec3(proportions::kEyeballRadius + proportions::kLidThickness) * k, skin, 0.004f * k);
+    b.ellipsoid("skullbase", eye, vec3(proportions::kEyeballRadius + proportions::kLidThickness) * k, MaterialId::Skin,
+                0.004f * k);
     b.ellipsoid("skullbase", eye + vec3(proportions::kEyeOpeningCentre[0], proportions::kEyeOpeningCentre[1],
                                         proportions::kEyeOpeningCentre[2]) * k,
                 vec3(proportions::kEyeOpeningRadii[0], proportions::kEyeOpeningRadii[1], proportions::kEyeOpeningRadii[2]) * k,
-                skin, 0.0015f * k, BlendOp::Subtract);
+                MaterialId::Skin, 0.0015f * k, BlendOp::Subtract);
   }
-  // Mouth: lips around the oral cavity, carved as two halves — the roof rides the skull, the
-  // floor the jaw — so that opening the jaw opens the cavity (teeth and tongue: face_parts.hpp).
-  for (float s : {1.0f, -1.0f}) {
-    b.capsule("skullbase", v(s * 0.024f, 1.5275f, 0.089f), v(0, 1.5325f, 0.0975f), 0.0040f * k, 0.0056f * k,
-              MaterialId::Lips, 0.004f * k);
-    b.capsule("temporomandibular", v(s * 0.023f, 1.5245f, 0.088f), v(0, 1.5185f, 0.0960f), 0.0040f * k, 0.0062f * k,
-              MaterialId::Lips, 0.004f * k);
-  }
-  b.ellipsoid("skullbase", v(0, 1.5285f, 0.066f), v(0.0215f, 0.0085f, 0.0275f), MaterialId::Mouth, 0.003f * k,
-              BlendOp::Subtract);
-  b.ellipsoid("temporomandibular", v(0, 1.5210f, 0.066f), v(0.0215f, 0.0090f, 0.0275f), MaterialId::Mouth, 0.003f * k,
-              BlendOp::Subtract);
-  open_jaw(b, jaw_open_degrees);
-  // The slit between the lips into the cavity: the wedge the open jaw makes, carved at half its
-  // angle and as tall as the lips stand apart.
-  const vec3 pivot = b.at("temporomandibular");
-  const vec3 slit = v(0, proportions::kMouthLineY, 0.097f);
-  const float half = deg(0.5f * jaw_open_degrees);
-  const vec3 centre = pivot + glm::angleAxis(half, vec3(1, 0, 0)) * (slit - pivot);
-  const float apart = 2.0f * glm::distance(slit, pivot) * std::sin(std::abs(half));
-  // Slightly thinner than the gap, so the closed lips press a little into each other (a closed jaw
-  // keeps a hairline groove).
-  const float slit_height = std::max(0.5f * apart - 0.0022f * k, 0.0005f * k);
-  b.ellipsoid("skullbase", centre, vec3(0.0225f * k, slit_height, 0.012f * k), MaterialId::Lips,
-              0.004f * k, BlendOp::Subtract, glm::mat3_cast(glm::angleAxis(half, vec3(1, 0, 0))));
 }
 
 void add_arm(VolumeBuilder& b, const AvatarParams& p, const std::string& s, float k) {
@@ -260,7 +227,7 @@ ImplicitBody build_avatar_volume(const Skeleton& skeleton, const AvatarParams& p
   VolumeBuilder b{skeleton, rest_joint_positions(skeleton), {}};
   const float k = params.height / 1.70f;
   add_trunk(b, params, k);
-  add_head(b, k, jaw_open_degrees);
+  add_head(b, params, k, jaw_open_degrees);
   for (const char* side : {"l_", "r_"}) add_arm(b, params, side, k);
   for (const char* side : {"l_", "r_"}) add_leg(b, params, side, k);
   // The floor flattens the soles.
@@ -311,9 +278,9 @@ std::vector<DetailBox> avatar_detail_boxes(const Skeleton& skeleton, const Avata
   }
   // The head above the neck; the neck enters through the bottom.
   DetailBox head;
-  head.lo = vec3(-0.105f, 1.478f, -0.13f) * k;
-  head.hi = vec3(0.105f, 1.73f, 0.15f) * k;
-  head.refine = 3;
+  head.lo = vec3(-0.112f, 1.470f, -0.145f) * k;
+  head.hi = vec3(0.112f, 1.745f, 0.15f) * k;
+  head.refine = 4;
   head.open_axis = 1;
   head.open_side = -1;
   boxes.push_back(head);

@@ -50,8 +50,17 @@ float primitive_distance(const Primitive& s, const vec3& p) {
       return glm::length(glm::max(q, vec3(0.0f))) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f) - s.radius_a;
     }
     case PrimitiveShape::HalfSpace: return glm::dot(p - s.a, s.axes[1]);
+    case PrimitiveShape::Sculpt: return s.sculpt->distance(glm::transpose(s.axes) * (p - s.a));
   }
   return std::numeric_limits<float>::infinity();
+}
+
+std::uint8_t primitive_material(const Primitive& s, const vec3& p) {
+  if (s.shape == PrimitiveShape::Sculpt) {
+    const int m = s.sculpt->material(glm::transpose(s.axes) * (p - s.a));
+    if (m >= 0) return static_cast<std::uint8_t>(m);
+  }
+  return s.material;
 }
 
 void ImplicitBody::finish() {
@@ -81,6 +90,19 @@ void ImplicitBody::finish() {
         s.lo = vec3(-inf);
         s.hi = vec3(inf);
         break;
+      case PrimitiveShape::Sculpt: {
+        vec3 box_lo, box_hi;
+        s.sculpt->bounds(box_lo, box_hi);
+        s.lo = vec3(inf);
+        s.hi = vec3(-inf);
+        for (int c = 0; c < 8; ++c) {
+          const vec3 corner(c & 1 ? box_hi.x : box_lo.x, c & 2 ? box_hi.y : box_lo.y, c & 4 ? box_hi.z : box_lo.z);
+          const vec3 q = s.a + s.axes * corner;
+          s.lo = glm::min(s.lo, q);
+          s.hi = glm::max(s.hi, q);
+        }
+        break;
+      }
     }
     if (s.op == BlendOp::Union) {
       lo = glm::min(lo, s.lo);
