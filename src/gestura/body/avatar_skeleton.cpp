@@ -1,6 +1,7 @@
 #include "gestura/body/avatar_skeleton.hpp"
 
 #include "gestura/body/avatar_proportions.hpp"
+#include "gestura/body/trunk_sculpt.hpp"
 
 #include <algorithm>
 #include <string>
@@ -135,11 +136,12 @@ void add_leg(Builder& b, int pelvis, const SideDims& s) {
   auto limits = [&](JointDofs d) { return s.side > 0 ? d : mirrored(d); };
   auto at = [&](float x, float y, float z) { return vec3(s.side * x, y * s.scale, z * s.scale); };
   const float hx = s.hip_x;
-  const int hip = b.add(p + "hip", pelvis, at(hx, 0.890f, 0.0f),
+  // Hip, knee and ankle at 0.530, 0.285 and 0.039 of the stature (Drillis & Contini).
+  const int hip = b.add(p + "hip", pelvis, at(hx, 0.901f, 0.0f),
                         limits(dofs(RotationOrder::ZXY, kX | kY | kZ, {-125, -40, -30}, {30, 45, 45})));
-  const int knee = b.add(p + "knee", hip, at(hx * 1.02f, 0.480f, 0.008f),
+  const int knee = b.add(p + "knee", hip, at(hx * 1.02f, 0.4845f, 0.008f),
                          limits(dofs(RotationOrder::XYZ, kX | kY, {0, -10, 0}, {140, 10, 0})));
-  const int ankle = b.add(p + "ankle", knee, at(hx, 0.078f, -0.020f),
+  const int ankle = b.add(p + "ankle", knee, at(hx, 0.070f, -0.020f),
                           limits(dofs(RotationOrder::XYZ, kX, {-20, 0, 0}, {50, 0, 0})));
   const int subtalar = b.add(p + "subtalar", ankle, at(hx, 0.055f, -0.030f),
                              limits(dofs(RotationOrder::XYZ, kZ, {0, 0, -35}, {0, 0, 15})));
@@ -155,11 +157,17 @@ void add_leg(Builder& b, int pelvis, const SideDims& s) {
 float a_pose_angle(const AvatarParams& p, float shoulder_x) {
   using namespace proportions;
   const float hip_x = 0.086f * (0.8f + 0.2f * p.build);
-  const float hips = std::max(kPelvisHalfWidth * hip_factor(p.sex), hip_x + kThighRadius * thigh_factor(p.sex)) * p.build;
+  // The trunk's widest below the waist (its sections at 1.70 m) or the thighs.
+  AvatarParams at_170 = p;
+  at_170.height = 1.70f;
+  float trunk = 0.0f;
+  for (const TrunkSection& s : trunk_sections(at_170))
+    if (s.y < 0.95f) trunk = std::max(trunk, s.half_breadth);
+  const float hips = std::max(trunk, (hip_x + kThighRadius * thigh_factor(p.sex)) * p.build);
   // Blend bulge of the thighs, lattice snapping (one coarse cell) and a centimetre of air.
   const float clearance = 0.0125f * p.build + 0.016f + 0.010f;
   const float wrist_x = hips + clearance + kThumbPalmReach * p.hand_size + hand_flesh_margin(p);
-  const float arm = 0.55f * p.arm_length;
+  const float arm = (0.186f + 0.146f) * 1.70f * p.arm_length;
   const float s = std::clamp((wrist_x - shoulder_x) / arm, std::sin(deg(10.0f)), std::sin(deg(30.0f)));
   return std::asin(s);
 }
@@ -169,9 +177,13 @@ float a_pose_angle(const AvatarParams& p, float shoulder_x) {
 Skeleton build_avatar_skeleton(const AvatarParams& params) {
   params.validate();
   const float k = params.height / 1.70f;
-  const float shoulder = params.sex == Sex::Male ? 0.182f : params.sex == Sex::Female ? 0.158f : 0.170f;
+  // Segment lengths as shares of the stature after Drillis & Contini (1966): upper arm 0.186 H,
+  // forearm 0.146 H, hand 0.108 H; shoulder joints from the biacromial breadth (ANSUR: 0.232 H in
+  // men, 0.225 H in women) less the two or so centimetres from the acromion in to the joint's centre
+  // (docs/avatar.md). Relative to the stature the hand is as long in women as in men.
+  const float shoulder = params.sex == Sex::Male ? 0.188f : params.sex == Sex::Female ? 0.167f : 0.178f;
   const float hip = params.sex == Sex::Male ? 0.082f : params.sex == Sex::Female ? 0.092f : 0.086f;
-  const float hand = params.sex == Sex::Male ? 1.04f : params.sex == Sex::Female ? 0.93f : 1.0f;
+  const float hand = 0.94f;
 
   Builder b;
   const auto spine = [](RotationOrder o, vec3 lo, vec3 hi) { return dofs(o, kX | kY | kZ, lo, hi); };
@@ -200,8 +212,8 @@ Skeleton build_avatar_skeleton(const AvatarParams& params) {
                         k,
                         shoulder * params.shoulder_width * k * (0.85f + 0.15f * params.build),
                         hip * k * (0.8f + 0.2f * params.build),
-                        0.300f * k * params.arm_length,
-                        0.250f * k * params.arm_length,
+                        0.186f * 1.70f * k * params.arm_length,
+                        0.146f * 1.70f * k * params.arm_length,
                         k * hand * params.hand_size,
                         params.finger_length,
                         a_pose_angle(params, shoulder * params.shoulder_width * (0.85f + 0.15f * params.build))};

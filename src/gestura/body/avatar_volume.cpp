@@ -7,6 +7,7 @@
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/body/head_sculpt.hpp"
 #include "gestura/body/mesh.hpp"
+#include "gestura/body/trunk_sculpt.hpp"
 #include "gestura/core/error.hpp"
 
 namespace gestura {
@@ -68,41 +69,53 @@ using proportions::by_sex;
 
 void add_trunk(VolumeBuilder& b, const AvatarParams& p, float k) {
   const float g = p.build;
-  const float hips = proportions::hip_factor(p.sex);
-  const float chest = by_sex(p.sex, 0.93f, 1.0f, 1.06f);
   const MaterialId cloth = MaterialId::Cloth;
-  b.ellipsoid("sacroiliac", vec3(0, 0.930f, -0.005f) * k, vec3(proportions::kPelvisHalfWidth * hips * g, 0.105f, 0.105f * g) * k, cloth, 0.04f * k);
-  for (float s : {1.0f, -1.0f})
-    b.ellipsoid("sacroiliac", vec3(s * 0.066f, 0.885f, -0.050f) * k, vec3(0.080f * hips * g, 0.085f, 0.075f * g) * k, cloth,
-                0.03f * k);
-  b.ellipsoid("vl3", vec3(0, 1.060f, 0.003f) * k, vec3(0.135f * (0.5f + 0.5f * hips) * g, 0.120f, 0.092f * g) * k, cloth,
-              0.06f * k);
-  b.ellipsoid("vt6", vec3(0, 1.250f, -0.008f) * k, vec3(0.150f * chest * g, 0.150f, 0.103f * g) * k, cloth, 0.06f * k);
+  // The trunk's loft, one piece per spine joint (trunk_sculpt.hpp).
+  const auto loft = std::make_shared<const TrunkLoft>(trunk_sections(p));
+  const struct {
+    const char* joint;
+    float top;  // metres at 1.70 m; each piece starts where the one below ends
+  } pieces[] = {{"sacroiliac", 0.975f}, {"vl5", 1.025f}, {"vl3", 1.095f}, {"vt12", 1.185f}, {"vt6", 1.320f}, {"vt1", 9.0f}};
+  float bottom = loft->bottom() - 0.05f * k;
+  for (const auto& piece : pieces) {
+    Primitive trunk;
+    trunk.shape = PrimitiveShape::Sculpt;
+    const float top = std::min(piece.top * k, loft->top() + 0.05f * k);
+    trunk.sculpt = std::make_shared<TrunkPiece>(loft, bottom, top);
+    b.push(trunk, piece.joint, cloth, 0.0f);
+    bottom = top;
+  }
+  const float chest_breadth = loft->at(1.23f * k).half_breadth;
   if (p.sex == Sex::Female)
     for (float s : {1.0f, -1.0f})
-      b.ellipsoid("vt6", vec3(s * 0.078f, 1.245f, 0.070f) * k, vec3(0.058f * g, 0.052f, 0.048f * g) * k, cloth, 0.03f * k);
-  const vec3 ls = b.at("l_shoulder"), rs = b.at("r_shoulder");
-  // The shoulder line keeps its top at the same height for any build (the neck stays free).
-  const float shoulder_y = (1.414f - 0.062f * g) * k;
-  b.capsule("vt1", vec3(rs.x + 0.06f * k, shoulder_y, -0.035f * k), vec3(ls.x - 0.06f * k, shoulder_y, -0.035f * k),
-            0.062f * k * g, 0.062f * k * g, cloth, 0.05f * k);
+      b.ellipsoid("vt6", vec3(s * 0.080f, 1.240f, 0.078f) * k, vec3(0.060f * g, 0.054f, 0.050f * g) * k, cloth, 0.03f * k);
+  // The shoulder girdle over the top of the loft, sloping from the base of the neck down to the
+  // shoulders (its top keeps its height for any build, so the neck stays free).
+  for (const char* side : {"l_", "r_"}) {
+    const vec3 sh = b.at(std::string(side) + "shoulder");
+    const float dir = sh.x > 0 ? 1.0f : -1.0f;
+    b.capsule("vt1", vec3(0.0f, (1.430f - 0.050f * g) * k, -0.035f * k),
+              vec3(sh.x - dir * 0.080f * k, (1.404f - 0.050f * g) * k, -0.030f * k), 0.050f * k * g, 0.048f * k * g, cloth,
+              0.04f * k);
+  }
   for (const char* side : {"l_", "r_"}) {
     const std::string s = side;
     const vec3 sh = b.at(s + "shoulder");
     const float dir = sh.x > 0 ? 1.0f : -1.0f;
-    b.capsule(s + "sternoclavicular", b.at(s + "sternoclavicular") + vec3(0, -0.005f, -0.01f) * k,
-              sh + vec3(-dir * 0.02f, 0.012f, 0.0f) * k, 0.028f * k, 0.032f * k, cloth, 0.03f * k);
-    b.capsule("vt1", vec3(dir * 0.050f, 1.448f - 0.033f * g, -0.050f) * k, sh + vec3(-dir * 0.035f, 0.012f, -0.015f) * k,
-              0.033f * k * g, 0.032f * k * g, cloth, 0.035f * k);
-    b.ellipsoid(s + "shoulder", sh + vec3(dir * 0.010f, -0.025f, 0.0f) * k, vec3(0.050f, 0.068f, 0.052f) * k * g, cloth,
+    b.capsule(s + "sternoclavicular", b.at(s + "sternoclavicular") + vec3(0, -0.008f, -0.020f) * k,
+              sh + vec3(-dir * 0.02f, 0.008f, -0.006f) * k, 0.024f * k, 0.030f * k, cloth, 0.04f * k);
+    b.capsule("vt1", vec3(dir * 0.050f, 1.448f - 0.033f * g, -0.050f) * k, sh + vec3(-dir * 0.035f, -0.004f, -0.015f) * k,
+              0.033f * k * g, 0.030f * k * g, cloth, 0.035f * k);
+    b.ellipsoid(s + "shoulder", sh + vec3(dir * 0.010f, -0.033f, 0.0f) * k, vec3(0.048f, 0.068f, 0.052f) * k * g, cloth,
                 0.03f * k);
     // The hollow of the armpit: the chest wall under the shoulder falls back a centimetre, so the
     // hanging arm (added later, not carved) stays clear of it below the armpit.
-    b.ellipsoid("vt6", vec3(dir * (0.150f * chest * g + 0.012f), 1.230f, -0.010f) * k, vec3(0.022f, 0.075f, 0.050f) * k, cloth,
+    b.ellipsoid("vt6", vec3(dir * (chest_breadth + 0.012f * k), 1.230f * k, -0.010f * k), vec3(0.022f, 0.075f, 0.050f) * k, cloth,
                 0.02f * k, BlendOp::Subtract);
   }
   // Neck: skin above the collar.
-  b.capsule("vc4", vec3(0, 1.400f, -0.028f) * k, b.at("skullbase") + vec3(0, 0.0f, 0.0f), 0.054f * k, 0.050f * k,
+  const float neck = by_sex(p.sex, 0.050f, 0.054f, 0.058f) * (0.85f + 0.15f * g) * k;
+  b.capsule("vc4", vec3(0, 1.400f, -0.028f) * k, b.at("skullbase") + vec3(0, 0.0f, 0.0f), neck, 0.93f * neck,
             MaterialId::Skin, 0.03f * k);
 }
 

@@ -6,6 +6,7 @@
 #include "gestura/body/avatar_material_borders.hpp"
 #include "gestura/body/avatar_proportions.hpp"
 #include "gestura/body/mesh.hpp"
+#include "gestura/body/natural_spline.hpp"
 
 namespace gestura {
 namespace {
@@ -36,40 +37,6 @@ float smin(float a, float b, float k) {
 }
 float smax(float a, float b, float k) { return -smin(-a, -b, k); }
 
-// A C2 curve through knots (x ascending): a natural cubic spline, flat beyond the ends (the
-// shading follows the curvature, so a kink in it would show as a line across the face).
-template <std::size_t N>
-class Spline {
- public:
-  explicit constexpr Spline(const std::array<std::array<float, 2>, N>& knots) : k_(knots) {
-    // Second derivatives m_i of the natural spline (m_0 = m_{N-1} = 0), by the Thomas algorithm.
-    std::array<float, N> c{}, d{};
-    for (std::size_t i = 1; i + 1 < N; ++i) {
-      const float h0 = k_[i][0] - k_[i - 1][0], h1 = k_[i + 1][0] - k_[i][0];
-      const float a = h0, b = 2.0f * (h0 + h1), cc = h1;
-      const float r = 6.0f * ((k_[i + 1][1] - k_[i][1]) / h1 - (k_[i][1] - k_[i - 1][1]) / h0);
-      const float denom = b - a * c[i - 1];
-      c[i] = cc / denom;
-      d[i] = (r - a * d[i - 1]) / denom;
-    }
-    m_[N - 1] = 0.0f;
-    for (std::size_t i = N - 2; i >= 1; --i) m_[i] = d[i] - c[i] * m_[i + 1];
-    m_[0] = 0.0f;
-  }
-  float operator()(float x) const {
-    if (x <= k_[0][0]) return k_[0][1];
-    if (x >= k_[N - 1][0]) return k_[N - 1][1];
-    std::size_t i = 0;
-    while (x > k_[i + 1][0]) ++i;
-    const float h = k_[i + 1][0] - k_[i][0], a = (k_[i + 1][0] - x) / h, b = 1.0f - a;
-    return a * k_[i][1] + b * k_[i + 1][1] + ((a * a * a - a) * m_[i] + (b * b * b - b) * m_[i + 1]) * h * h / 6.0f;
-  }
-
- private:
-  std::array<std::array<float, 2>, N> k_;
-  std::array<float, N> m_{};
-};
-
 float ellipsoid_distance(vec3 q, vec3 r) {
   const float k0 = glm::length(q / r), k1 = glm::length(q / (r * r));
   return k1 > 0.0f ? k0 * (k0 - 1.0f) / k1 : -std::min(r.x, std::min(r.y, r.z));
@@ -78,7 +45,7 @@ float ellipsoid_distance(vec3 q, vec3 r) {
 // The face's midline, as the radius of the face plane (without nose and lips) from the sculpt's
 // centre by elevation (degrees), at 1.70 m: forehead, the nasal root's dip, the muzzle over the
 // teeth, the chin and the jaw's underside (knots from the soft-tissue landmarks, docs/avatar.md).
-const Spline<15> kMidline{{{{-90.0f, 0.1240f},
+const NaturalSpline kMidline{{{-90.0f, 0.1240f},
                            {-82.5f, 0.1220f},
                            {-72.5f, 0.1195f},
                            {-60.6f, 0.1263f},
@@ -92,13 +59,13 @@ const Spline<15> kMidline{{{{-90.0f, 0.1240f},
                            {-8.0f, 0.0895f},
                            {9.8f, 0.0883f},
                            {18.4f, 0.0960f},
-                           {44.0f, 0.1139f}}}};
+                           {44.0f, 0.1139f}}};
 // Half-width (degrees of azimuth) over which the face plane blends into the skull, by elevation.
-const Spline<7> kMaskHalfWidth{std::array<std::array<float, 2>, 7>{
-    {{-75.0f, 44.0f}, {-55.0f, 48.0f}, {-40.0f, 55.0f}, {-25.0f, 58.0f}, {-5.0f, 61.0f}, {15.0f, 62.0f}, {40.0f, 64.0f}}}};
+const NaturalSpline kMaskHalfWidth{
+    {{-75.0f, 44.0f}, {-55.0f, 48.0f}, {-40.0f, 55.0f}, {-25.0f, 58.0f}, {-5.0f, 61.0f}, {15.0f, 62.0f}, {40.0f, 64.0f}}};
 // The nose's height over the face plane along its dorsum (metres at 1.70 m) and half-width
 // (degrees), by elevation: nasal root, dorsum, tip (pronasale), columella down to the subnasale.
-const Spline<11> kNoseHeight{{{{-25.0f, 0.0f},
+const NaturalSpline kNoseHeight{{{-25.0f, 0.0f},
                                {-23.0f, 0.0030f},
                                {-20.0f, 0.0100f},
                                {-17.0f, 0.0150f},
@@ -108,9 +75,9 @@ const Spline<11> kNoseHeight{{{{-25.0f, 0.0f},
                                {1.0f, 0.0060f},
                                {6.0f, 0.0035f},
                                {10.0f, 0.0012f},
-                               {14.0f, 0.0f}}}};
-const Spline<6> kNoseHalfWidth{std::array<std::array<float, 2>, 6>{
-    {{-24.0f, 8.5f}, {-18.0f, 8.0f}, {-13.0f, 6.0f}, {-6.0f, 4.2f}, {2.0f, 3.4f}, {10.0f, 3.8f}}}};
+                               {14.0f, 0.0f}}};
+const NaturalSpline kNoseHalfWidth{
+    {{-24.0f, 8.5f}, {-18.0f, 8.0f}, {-13.0f, 6.0f}, {-6.0f, 4.2f}, {2.0f, 3.4f}, {10.0f, 3.8f}}};
 
 }  // namespace
 
