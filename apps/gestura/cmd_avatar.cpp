@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "gestura/body/avatar_look.hpp"
 #include "gestura/body/avatar_source.hpp"
 #include "gestura/body/face_morphs.hpp"
 #include "gestura/core/error.hpp"
@@ -18,13 +19,15 @@ const char* kUsage =
     "usage: gestura avatar export -o FILE.glb [PARAMS]\n"
     "       gestura avatar info [PARAMS]\n"
     "       gestura avatar sites [-o FILE.json] [PARAMS]   (sign locations: name → position in metres)\n"
+    "       gestura avatar looks   (the built-in looks --avatar takes by name)\n"
     "\n"
     "Builds the default avatar from parameters (no asset files) and writes it as binary glTF 2.0\n"
     "(skin, joints, inverse bind matrices, named morph targets, materials), or prints its joints,\n"
     "degrees of freedom, vertex and triangle counts and morph names.\n"
     "\n"
     "PARAMS:\n"
-    "  --avatar SPEC         default (built from the parameters below) or makehuman:DIR\n"
+    "  --avatar SPEC         default (built from the parameters below), a built-in look (ana, ben, chidi,\n"
+    "                        dana, eli: avatar looks; the parameters given change it) or makehuman:DIR\n"
     "                        (MakeHuman base mesh + default rig; the parameters are then ignored)\n"
     "  --height M            crown to floor in metres (1.0 .. 2.5, default 1.70)\n"
     "  --build X             girth multiplier (0.6 .. 1.6, default 1)\n"
@@ -95,11 +98,13 @@ void print_info(const gestura::Avatar& a, gestura::SkinWeightMethod weights) {
 }
 
 gestura::Avatar build(const Request& r) {
-  return r.spec == "default" ? gestura::build_avatar(r.params, r.options) : gestura::load_avatar(r.spec);
+  if (const gestura::AvatarLook* look = gestura::find_look(r.spec))
+    return gestura::build_avatar(gestura::with_given(look->params, r.params), r.options);
+  return gestura::load_avatar(r.spec, r.params);
 }
 
 int run(const std::vector<std::string>& args) {
-  if (args.empty()) throw Error("avatar: missing subcommand (export, info or sites)");
+  if (args.empty()) throw Error("avatar: missing subcommand (export, info, sites or looks)");
   if (args[0] == "export") {
     const Request r = parse(args, 1);
     if (r.output.empty()) throw Error("avatar export: missing -o FILE.glb");
@@ -113,6 +118,12 @@ int run(const std::vector<std::string>& args) {
     const Request r = parse(args, 1);
     if (!r.output.empty()) throw Error("avatar info: -o is only for export");
     print_info(build(r), r.options.weights);
+    return 0;
+  }
+  if (args[0] == "looks") {
+    if (args.size() > 1) throw Error("avatar looks: takes no arguments");
+    for (const gestura::AvatarLook& look : gestura::builtin_looks())
+      std::printf("%-8s %s\n", std::string(look.name).c_str(), std::string(look.description).c_str());
     return 0;
   }
   if (args[0] == "sites") {
@@ -130,7 +141,7 @@ int run(const std::vector<std::string>& args) {
     }
     return 0;
   }
-  throw Error("avatar: unknown subcommand '" + args[0] + "' (export, info or sites)");
+  throw Error("avatar: unknown subcommand '" + args[0] + "' (export, info, sites or looks)");
 }
 
 gestura::cli::Registration reg{{"avatar", "build the default avatar; export it as glTF or print its structure", kUsage, run}};

@@ -36,7 +36,8 @@ The file appears only when complete.
   --cpu-skinning          skin on the CPU and upload (comparison path)
   --rest                  the rest pose, no clip (the default)
   --test-motion           the built-in test motion (the right hand waves, 2 s)
-  --avatar SPEC                    default (generated) or makehuman:DIR (MakeHuman assets)
+  --avatar SPEC                    default (generated), a built-in look (gestura avatar looks)
+                                   or makehuman:DIR (MakeHuman assets)
   --height M, --build X, --sex S   the avatar, as in gestura avatar export)";
 
 // Fills job.orbit (and whether it aims at the body) from "YAW,PITCH,DIST[,X,Y,Z]".

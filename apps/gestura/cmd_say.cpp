@@ -76,7 +76,7 @@ const cli::Registration reg{{
     "returning to rest, and the face adds mouthing, question brows, negation headshake and blinks.\n"
     "Without -o the gloss timeline is printed. " + std::string(cli::kMotionOutputUsage) + "\n"
     "Here a .png is always a 4x4 contact sheet of the sentence; .glb/.gltf carry the face morph weights.\n"
-    "--speed 0.25–2 scales the tempo. --avatar is default (the generated avatar) or makehuman:DIR.\n"
+    "--speed 0.25–2 scales the tempo. --avatar is default (the generated avatar), a built-in look (gestura avatar looks) or makehuman:DIR.\n"
     "Only 'ase' (ASL) has a lexicon. At most 16 KiB of text and 300 glosses per call: split longer text.",
     run_say,
 }};

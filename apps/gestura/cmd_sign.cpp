@@ -57,8 +57,8 @@ const cli::Registration reg{{
     "(hamflathand,hamextfingeru,...). --speed scales the tempo (0.25–4). The dominant hand is the\n"
     "right hand. A SiGML sign's non-manual tiers (head, shoulders, body, eye gaze, brows, eyelids,\n"
     "nose, cheeks, mouth gestures and pictures) are performed over the sign; values that cannot be\n"
-    "are named with their line on stderr. --avatar is default (the generated avatar) or\n"
-    "makehuman:DIR (MakeHuman base mesh and default rig). A single .png shows the middle of the sign.\n" +
+    "are named with their line on stderr. --avatar is default (the generated avatar), a built-in\n"
+    "look (gestura avatar looks) or makehuman:DIR (MakeHuman base mesh and default rig). A single .png shows the middle of the sign.\n" +
         std::string(cli::kMotionOutputUsage),
     run_sign,
 }};

@@ -36,7 +36,8 @@ xvfb-run -a gestura view ...).
   --screenshot PATH.png  save the window after --frames frames and quit (for scripts, Xvfb)
   --frames N             frames before the screenshot                       [30]
   --at SECONDS           start paused at this time of the motion (for screenshots)
-  --avatar SPEC                    default (generated) or makehuman:DIR (MakeHuman assets)
+  --avatar SPEC                    default (generated), a built-in look (gestura avatar looks)
+                                   or makehuman:DIR (MakeHuman assets)
   --height M, --build X, --sex S   the avatar, as in gestura avatar export
 
 keys:  space play/pause   , . step one frame back/forward   1 2 3 speed 0.25x 0.5x 1x

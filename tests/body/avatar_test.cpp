@@ -176,11 +176,13 @@ TEST(AvatarMesh, MaterialsDressTheBody) {
   };
   EXPECT_EQ(material_near("l_index2", vec3(0)), MaterialId::Skin);
   EXPECT_EQ(material_near("vt6", vec3(0, 0, 0.2f)), MaterialId::Cloth);   // chest: shirt
-  EXPECT_EQ(material_near("l_knee", vec3(0, 0, 0.1f)), MaterialId::Cloth);  // trousers
+  EXPECT_EQ(material_near("vt12", vec3(0, 0, 0.15f)), MaterialId::Cloth);  // the shirt over the belly
+  EXPECT_EQ(material_near("l_knee", vec3(0, 0, 0.1f)), MaterialId::Trousers);
   EXPECT_EQ(material_near("skull_tip", vec3(0)), MaterialId::Hair);
   std::set<int> used(m.materials.begin(), m.materials.end());
   for (MaterialId id : {MaterialId::Skin, MaterialId::Cloth, MaterialId::Hair, MaterialId::EyeWhite, MaterialId::Iris,
-                        MaterialId::Pupil, MaterialId::Lips, MaterialId::Teeth, MaterialId::Tongue, MaterialId::Mouth})
+                        MaterialId::Pupil, MaterialId::Lips, MaterialId::Teeth, MaterialId::Tongue, MaterialId::Mouth,
+                        MaterialId::Brow, MaterialId::Nail, MaterialId::Trousers})
     EXPECT_TRUE(used.count(static_cast<int>(id))) << static_cast<int>(id);
 }
 

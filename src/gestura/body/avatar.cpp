@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "gestura/body/avatar_look.hpp"
 #include "gestura/body/avatar_material_borders.hpp"
 #include "gestura/body/avatar_proportions.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
@@ -53,7 +54,8 @@ const HeadSculpt* find_head(const ImplicitBody& body) {
 // vermilion and the mouth's lining on the head), with hair, brows and lashes drawn by their fields
 // instead (avatar_material_borders.hpp), so their edges follow smooth curves.
 std::vector<std::uint8_t> surface_materials(const ImplicitBody& body, const Mesh& mesh, const AvatarParams& params,
-                                            std::array<vec3, 2> eyes) {
+                                            std::array<vec3, 2> eyes, const NailPlates& nails,
+                                            const std::vector<bool>& below_the_waist, const HeadSculpt* head) {
   const float k = params.height / 1.70f;
   std::vector<std::uint8_t> out(mesh.vertex_count(), static_cast<std::uint8_t>(MaterialId::Skin));
   std::vector<float> d(body.primitives.size());
@@ -64,10 +66,18 @@ std::vector<std::uint8_t> surface_materials(const ImplicitBody& body, const Mesh
     for (std::size_t i = 1; i < d.size(); ++i)
       if (d[i] < d[best]) best = i;
     auto m = static_cast<MaterialId>(primitive_material(body.primitives[best], p));
-    if (m == MaterialId::Skin || m == MaterialId::Hair) {
+    // Below the top's hem the trunk and legs wear the trousers (not the arms hanging beside them).
+    if (m == MaterialId::Cloth && p.y < params.hem * params.height &&
+        below_the_waist[static_cast<std::size_t>(body.primitives[best].joint)])
+      m = MaterialId::Trousers;
+    // Hair that stands off the scalp (a bob's curtain, its underside) is hair wherever it hangs.
+    const bool loose_hair = m == MaterialId::Hair && body.primitives[best].shape == PrimitiveShape::Sculpt && head &&
+                            head->distance(p) > 0.002f * k;
+    if (!loose_hair && (m == MaterialId::Skin || m == MaterialId::Hair || m == MaterialId::Nail)) {
       m = hair_field(p, k, params.hair) < 0.0f                                          ? MaterialId::Hair
           : eyebrow_field(p, k) < 0.0f                                                  ? MaterialId::Brow
           : lash_field(p, eyes[0], k) < 0.0f || lash_field(p, eyes[1], k) < 0.0f ? MaterialId::Brow
+          : nails.field(p) < 0.0f                                                       ? MaterialId::Nail
                                                                                         : MaterialId::Skin;
     }
     out[v] = static_cast<std::uint8_t>(m);
@@ -147,7 +157,7 @@ void unfold(Mesh& mesh) {
       const std::uint32_t a = mesh.indices[f + e], b = mesh.indices[f + (e + 1) % 3];
       ring[a].push_back(b), ring[b].push_back(a);
     }
-  for (int round = 0; round < 8; ++round) {
+  for (int round = 0; round < 24; ++round) {
     std::vector<std::uint32_t> folded;
     for (std::size_t f = 0; f + 2 < mesh.indices.size(); f += 3) {
       const std::uint32_t a = mesh.indices[f], b = mesh.indices[f + 1], c = mesh.indices[f + 2];
@@ -199,10 +209,27 @@ Avatar build_avatar(const AvatarParams& params, const AvatarOptions& options) {
   const std::array<vec3, 2> eyes{joints[static_cast<std::size_t>(avatar.skeleton.find("l_eyeball_joint"))],
                                  joints[static_cast<std::size_t>(avatar.skeleton.find("r_eyeball_joint"))]};
   const HeadSculpt* head = find_head(body);
-  mesh.materials = surface_materials(body, mesh, params, eyes);
+  const NailPlates nails(avatar.skeleton, params);
+  // The joints the trousers can cover: the trunk and the legs, not the arms (nor the neck and head).
+  std::vector<bool> below_the_waist(avatar.skeleton.size(), true);
+  for (std::size_t j = 0; j < avatar.skeleton.size(); ++j)
+    for (int a = static_cast<int>(j); a >= 0; a = avatar.skeleton.parents[static_cast<std::size_t>(a)])
+      if (avatar.skeleton.names[static_cast<std::size_t>(a)].find("sternoclavicular") != std::string::npos ||
+          avatar.skeleton.names[static_cast<std::size_t>(a)] == "vc7")
+        below_the_waist[j] = false;
+  mesh.materials = surface_materials(body, mesh, params, eyes, nails, below_the_waist, head);
   std::vector<MaterialBorder> borders = avatar_material_borders(body, k, params.hair, eyes);
+  // The hairline, except where hair stands off the scalp (it stays hair there).
+  for (MaterialBorder& border : borders)
+    if (border.below == MaterialId::Hair && head)
+      border.field = [head, k, style = params.hair](const vec3& p) {
+        return head->distance(p) > 0.002f * k ? -0.01f : hair_field(p, k, style);
+      };
+  borders.push_back({MaterialId::Nail, MaterialId::Skin, [&nails](const vec3& p) { return nails.field(p); }});
+  const float hem = params.hem * params.height;
+  borders.push_back({MaterialId::Trousers, MaterialId::Cloth, [hem](const vec3& p) { return p.y - hem; }});
   if (head)
-    borders.push_back({MaterialId::Lips, MaterialId::Skin, [head](const vec3& p) { return head->lip_field(head->to_rest(p)); }});
+    borders.push_back({MaterialId::Lips, MaterialId::Skin, [head](const vec3& p) { return head->vermilion(p); }});
   sharpen_material_borders(borders, 0.0005f * k, mesh.positions, mesh.indices, mesh.materials);
   compute_skin_weights(avatar.skeleton, body, options.weights, mesh);
   if (head) add_jaw_weights(avatar.skeleton, *head, mesh);
@@ -214,6 +241,7 @@ Avatar build_avatar(const AvatarParams& params, const AvatarOptions& options) {
   turn_jaw(avatar.skeleton, -proportions::kLipPressDegrees, mesh);
   unfold(mesh);
   append_mesh(mesh, build_face_parts(avatar.skeleton, k));
+  mesh.material_colors = material_colors(params.colors);
   mesh.morphs = build_face_morphs(avatar.skeleton, mesh,
                                   head ? head->landmarks() : face_landmarks(params, joints[static_cast<std::size_t>(avatar.skeleton.find("temporomandibular"))]));
   compute_morph_normal_deltas(mesh);

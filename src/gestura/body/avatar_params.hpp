@@ -5,6 +5,8 @@
 #include <string>
 #include <string_view>
 
+#include "gestura/core/math.hpp"
+
 namespace gestura {
 
 enum class Sex { Neutral, Female, Male };
@@ -20,6 +22,16 @@ std::string_view to_string(HairStyle style);
 // The names above; throws gestura::Error listing them otherwise.
 HairStyle parse_hair_style(std::string_view text);
 
+// The avatar's colours (sRGB, 0..1): the rest (lips, nails, the eye's white, teeth, the mouth's
+// lining) follow from these.
+struct AvatarColors {
+  vec3 skin{0.86f, 0.66f, 0.55f};
+  vec3 hair{0.20f, 0.13f, 0.08f};
+  vec3 iris{0.28f, 0.40f, 0.52f};
+  vec3 cloth{0.17f, 0.20f, 0.26f};     // a dark slate top: the hands stand out against it
+  vec3 trousers{0.13f, 0.13f, 0.15f};  // below the top's hem
+};
+
 struct AvatarParams {
   float height = 1.70f;            // metres, crown to floor; allowed [1.0, 2.5]
   float build = 1.0f;              // girth multiplier of trunk and limbs; allowed [0.6, 1.6]
@@ -31,6 +43,8 @@ struct AvatarParams {
   Sex sex = Sex::Neutral;
   HairStyle hair = HairStyle::Short;
   float sleeve = 1.0f;             // the shirt's sleeve, as a share of the forearm it covers; [0.5, 1]
+  float hem = 0.56f;               // the top's hem (where the trousers begin), a share of the height; [0.45, 0.7]
+  AvatarColors colors;
 
   // Throws gestura::Error naming the parameter, its value and the allowed range for a negative,
   // NaN, infinite or absurd value.

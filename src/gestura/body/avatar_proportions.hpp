@@ -22,7 +22,7 @@ inline float thigh_factor(Sex sex) { return by_sex(sex, 1.04f, 1.0f, 0.98f); }
 inline float hand_flesh_margin(const AvatarParams& p) { return 0.020f * p.hand_size * p.finger_thickness + 0.006f; }
 inline float sleeve_margin(const AvatarParams& p) { return (kWristSleeveRadius + 0.4f * kForearmBlend) * p.build + 0.006f; }
 // How far the hand's joints reach towards the body (the thumb, on the palm side), per hand_size.
-inline constexpr float kThumbPalmReach = 0.034f;
+inline constexpr float kThumbPalmReach = 0.050f;
 
 // The face at 1.70 m (model space, metres), shared by the volume (sockets, lips, oral cavity), the
 // rigid face parts (eyeballs, teeth, tongue) and the facial morphs.

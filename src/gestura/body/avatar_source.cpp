@@ -6,6 +6,7 @@
 #include <limits>
 #include <string_view>
 
+#include "gestura/body/avatar_look.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/body/skinning.hpp"
 #include "gestura/core/error.hpp"
@@ -148,13 +149,13 @@ Avatar load_makehuman_avatar(const std::string& directory) {
 }
 
 Avatar load_avatar(const std::string& spec, const AvatarParams& params) {
-  if (spec == "default") return build_avatar(params);
+  if (const AvatarLook* look = find_look(spec)) return build_avatar(with_given(look->params, params));
   if (spec.starts_with(kMakeHumanPrefix)) {
     const std::string dir = spec.substr(kMakeHumanPrefix.size());
     if (dir.empty()) throw Error("avatar 'makehuman:': give the MakeHuman asset directory, e.g. makehuman:DIR");
     return load_makehuman_avatar(dir);
   }
-  throw Error("unknown avatar '" + spec + "' (use 'default' or 'makehuman:DIR')");
+  throw Error("unknown avatar '" + spec + "' (use a built-in look: " + look_names() + "; or makehuman:DIR)");
 }
 
 }  // namespace gestura

@@ -194,12 +194,12 @@ vec3 lids(const Face& f, const vec3& p, int eye, float upper, float lower) {
   if (gap <= 0.0f) return vec3(0.0f);
   const float elevation = std::atan2(q.y, q.z);
   const float lid_surface = (proportions::kEyeballRadius + proportions::kLidThickness) * f.k;
-  const float near = 1.0f - smoothstep(lid_surface + 0.002f * f.k, lid_surface + 0.009f * f.k, glm::length(q));
+  const float near = 1.0f - smoothstep(lid_surface + 0.003f * f.k, lid_surface + 0.010f * f.k, glm::length(q));
   if (near <= 0.0f) return vec3(0.0f);
   const float middle = 0.5f * (up + low);
   const float is_upper = smoothstep(middle - deg(6.0f), middle + deg(6.0f), elevation);
   // Closing lids overlap a little, so a full blink leaves no slit.
-  const float overlap = deg(3.0f) * smoothstep(0.0f, deg(10.0f), gap);
+  const float overlap = deg(6.0f) * smoothstep(0.0f, deg(10.0f), gap);
   float angle = 0.0f;
   if (is_upper > 0.0f) {
     const float reach = 1.0f - smoothstep(up + deg(25.0f), up + deg(70.0f), elevation);

@@ -77,7 +77,7 @@ const NaturalSpline kNoseHeight{{{-25.0f, 0.0f},
                                {10.0f, 0.0012f},
                                {14.0f, 0.0f}}};
 const NaturalSpline kNoseHalfWidth{
-    {{-24.0f, 8.5f}, {-18.0f, 8.0f}, {-13.0f, 6.0f}, {-6.0f, 4.2f}, {2.0f, 3.4f}, {10.0f, 3.8f}}};
+    {{-24.0f, 8.6f}, {-18.0f, 8.0f}, {-13.0f, 6.4f}, {-6.0f, 5.2f}, {2.0f, 4.6f}, {10.0f, 4.8f}}};
 
 }  // namespace
 
@@ -119,9 +119,12 @@ float HeadSculpt::radius(float azimuth, float elevation) const {
   const float jaw_taper = proportions::by_sex(sex_, 0.11f, 0.08f, 0.05f);
   const float ax = (0.0745f + 0.0015f * male - 0.002f * female + 0.004f * fuller) * (1.0f - jaw_taper * ramp(-5.0f, -62.0f, p));
   const float ay = 0.112f + 0.006f * ramp(-25.0f, 25.0f, p);
-  const float az = 0.098f + 0.003f * ramp(40.0f, 140.0f, t);
+  // Deeper towards the chin, so the face's lower profile is mostly the egg's own (a large face
+  // mask there would show its edge as a line down the cheeks).
+  const float az_front = 0.098f + 0.019f * ramp(-15.0f, -58.0f, p);
+  const float az = az_front + (0.101f - az_front) * ramp(40.0f, 140.0f, t);
   const float egg = 1.0f / std::sqrt((ux / ax) * (ux / ax) + (uy / ay) * (uy / ay) + (uz / az) * (uz / az));
-  const float egg_mid = 1.0f / std::sqrt((uy / ay) * (uy / ay) + (std::cos(elevation) / 0.098f) * (std::cos(elevation) / 0.098f));
+  const float egg_mid = 1.0f / std::sqrt((uy / ay) * (uy / ay) + (std::cos(elevation) / az_front) * (std::cos(elevation) / az_front));
 
   // The face plane over the front, blending into the skull's sides.
   float r = egg;
@@ -153,7 +156,7 @@ float HeadSculpt::radius(float azimuth, float elevation) const {
   r += brow * bump_at(ts, p, 14.0f, 15.5f, 20.0f, 6.5f);
   const vec3 eye = eyes_[0] / k_ - marks_.centre / k_;
   const float eye_t = to_degrees(std::atan2(eye.x, eye.z)), eye_p = to_degrees(std::asin(eye.y / glm::length(eye)));
-  r -= 0.0015f * bump_at(ts, p, eye_t, eye_p, 12.0f, 9.0f);
+  r -= 0.0045f * bump_at(ts, p, eye_t, eye_p, 11.0f, 8.5f);
   r += (0.0026f + 0.001f * fuller) * bump_at(ts, p, 38.0f, -8.0f, 20.0f, 13.0f);
   r -= 0.0015f * bump_at(ts, p, 64.0f, 17.0f, 16.0f, 14.0f);
   r += (0.0030f + 0.002f * fuller) * bump_at(ts, p, 36.0f, -28.0f, 22.0f, 14.0f);  // the cheeks over the teeth
@@ -245,7 +248,8 @@ float HeadSculpt::lip_field(const vec3& rest) const {
   const float t = std::abs(to_degrees(std::atan2(q.x, q.z))), p = to_degrees(std::asin(std::clamp(q.y / len, -1.0f, 1.0f)));
   // The vermilion's outline in the face's angles: the corners, the upper border with its bow,
   // the lower border.
-  const float corner_t = to_degrees(std::atan2(marks_.mouth_half_width / k_, 0.080f));
+  // (The vermilion ends a little short of the commissure, so it does not run out into a sliver.)
+  const float corner_t = 0.92f * to_degrees(std::atan2(marks_.mouth_half_width / k_, 0.080f));
   const float corner_p = -35.0f;
   const float across = std::min(t / corner_t, 1.0f);
   const float open = std::pow(std::max(0.0f, 1.0f - across * across), 0.65f);
@@ -256,21 +260,38 @@ float HeadSculpt::lip_field(const vec3& rest) const {
   return -deg(inside) * len * k_;
 }
 
+namespace {
+// How far a rest point lies inside the uncarved head (negative inside), metres.
+float depth_in(const HeadSculpt& head, const vec3& rest) {
+  const FaceLandmarks& m = head.landmarks();
+  const vec3 q = (rest - m.centre) / m.k;
+  const float len = glm::length(q);
+  if (len < 1e-6f) return -1.0f;
+  return (len - head.radius(std::atan2(q.x, q.z), std::asin(std::clamp(q.y / len, -1.0f, 1.0f)))) * m.k;
+}
+}  // namespace
+
+float HeadSculpt::vermilion(const vec3& p) const {
+  const vec3 rest = to_rest(p);
+  return depth_in(*this, rest) < -0.0030f * k_ ? 0.01f * k_ : lip_field(rest);
+}
+
 int HeadSculpt::material(const vec3& p) const {
   const vec3 rest = to_rest(p);
-  const vec3 q = (rest - marks_.centre) / k_;
-  const float len = glm::length(q);
-  const float outer = len > 1e-6f ? (len - radius(std::atan2(q.x, q.z), std::asin(std::clamp(q.y / len, -1.0f, 1.0f)))) * k_ : -1.0f;
-  // Deeper than the lips' rounded edge inside the uncarved head: the mouth's lining.
-  if (std::abs(carved(rest)) < 0.0015f * k_ && outer < -0.0035f * k_) return static_cast<int>(MaterialId::Mouth);
-  if (lip_field(rest) < 0.0f) return static_cast<int>(MaterialId::Lips);
+  // Deeper than the lips' rounded edge inside the uncarved head: the mouth's lining; the vermilion
+  // only on the outer skin (not on the lining at the mouth's corners).
+  const bool inside = depth_in(*this, rest) < -0.0030f * k_;
+  if (inside && std::abs(carved(rest)) < 0.0025f * k_) return static_cast<int>(MaterialId::Mouth);
+  if (!inside && lip_field(rest) < 0.0f) return static_cast<int>(MaterialId::Lips);
   return static_cast<int>(MaterialId::Skin);
 }
 
 HairSculpt::HairSculpt(std::shared_ptr<const HeadSculpt> head, HairStyle style)
     : head_(std::move(head)), style_(style), k_(head_->landmarks().k) {}
 
-float HairSculpt::distance(const vec3& p) const {
+float HairSculpt::distance(const vec3& bind_point) const {
+  // Through the head's hinge warp, so hair that reaches the jaw stays on it.
+  const vec3 p = head_->to_rest(bind_point);
   const vec3 centre = head_->landmarks().centre;
   const vec3 q = (p - centre) / k_;
   const float len = glm::length(q);
@@ -283,7 +304,7 @@ float HairSculpt::distance(const vec3& p) const {
   float thick = 0.0f, covered = 0.0f;
   switch (style_) {
     case HairStyle::Short:
-      covered = ramp(0.002f * k_, -0.010f * k_, line);
+      covered = ramp(0.002f * k_, -0.014f * k_, line);
       thick = 0.0055f + 0.0045f * ramp(5.0f, 60.0f, el);
       break;
     case HairStyle::Buzz:
@@ -291,7 +312,7 @@ float HairSculpt::distance(const vec3& p) const {
       thick = 0.0018f;
       break;
     case HairStyle::Curly:
-      covered = ramp(0.002f * k_, -0.012f * k_, line);
+      covered = ramp(0.002f * k_, -0.030f * k_, line);
       thick = 0.014f + 0.010f * ramp(0.0f, 60.0f, el);
       break;
     case HairStyle::Bun:
@@ -299,7 +320,7 @@ float HairSculpt::distance(const vec3& p) const {
       thick = 0.0035f + 0.0015f * ramp(10.0f, 60.0f, el);
       break;
     case HairStyle::Bob:
-      covered = ramp(0.0008f * k_, -0.0035f * k_, line);
+      covered = ramp(0.0010f * k_, -0.0080f * k_, line);
       // Fuller over the crown; below the skull's widest line it hangs straight down instead of
       // following the head in towards the neck.
       thick = 0.0085f + 0.0040f * ramp(10.0f, 60.0f, el) +

@@ -54,6 +54,9 @@ class HeadSculpt final : public Sculpt {
 
   // Negative on the lips' vermilion (red part), positive elsewhere; roughly metres. At rest.
   float lip_field(const vec3& rest_point) const;
+  // The same for a point of the open-mouthed surface, positive on the mouth's lining (where the
+  // vermilion's outline would reach into the mouth at its corners).
+  float vermilion(const vec3& bind_point) const;
   const FaceLandmarks& landmarks() const { return marks_; }
   // The uncarved head's radius from landmarks().centre in a direction (radians: azimuth from the
   // front towards the avatar's left, elevation up), in metres at 1.70 m (times k for the avatar).
