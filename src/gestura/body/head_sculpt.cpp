@@ -37,6 +37,19 @@ float smin(float a, float b, float k) {
 }
 float smax(float a, float b, float k) { return -smin(-a, -b, k); }
 
+// atan2 within 1e-5 rad (a minimax polynomial on [0, 1] and the octant's symmetries): the head's
+// field takes the direction's angles at every point the polygoniser samples.
+float fast_atan2(float y, float x) {
+  const float ax = std::abs(x), ay = std::abs(y);
+  const float big = std::max(ax, ay), small = std::min(ax, ay);
+  if (big == 0.0f) return 0.0f;
+  const float z = small / big, z2 = z * z;
+  float a = z * (0.99997726f + z2 * (-0.33262347f + z2 * (0.19354346f + z2 * (-0.11643287f + z2 * (0.05265332f + z2 * -0.01172120f)))));
+  if (ay > ax) a = 1.57079633f - a;
+  if (x < 0.0f) a = 3.14159265f - a;
+  return y < 0.0f ? -a : a;
+}
+
 float ellipsoid_distance(vec3 q, vec3 r) {
   const float k0 = glm::length(q / r), k1 = glm::length(q / (r * r));
   return k1 > 0.0f ? k0 * (k0 - 1.0f) / k1 : -std::min(r.x, std::min(r.y, r.z));
@@ -106,16 +119,25 @@ HeadSculpt::HeadSculpt(const AvatarParams& params, vec3 jaw_pivot, std::array<ve
       bind_open_(deg(bind_open_degrees)) {
   const vec3 mouth(0.0f, marks_.mouth_y, marks_.lip_front - 0.004f * k_);
   hinge_dir_ = glm::normalize(vec3(0.0f, mouth.y - jaw_pivot.y, mouth.z - jaw_pivot.z));
+  hinge_base_ = fast_atan2(hinge_dir_.y, hinge_dir_.z);
+  const vec3 eye = (eyes_[0] - marks_.centre) / k_;
+  eye_angles_ = vec2(to_degrees(std::atan2(eye.x, eye.z)), to_degrees(std::asin(eye.y / glm::length(eye))));
 }
 
 float HeadSculpt::radius(float azimuth, float elevation) const {
+  return radius_towards(vec3(std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth)));
+}
+
+float HeadSculpt::radius_towards(const vec3& u) const {
+  const float azimuth = fast_atan2(u.x, u.z);
+  const float elevation = fast_atan2(u.y, std::sqrt(std::max(0.0f, u.x * u.x + u.z * u.z)));
   const float ts = to_degrees(azimuth), t = std::abs(ts), p = to_degrees(elevation);
   const float male = sex_ == Sex::Male ? 1.0f : 0.0f, female = sex_ == Sex::Female ? 1.0f : 0.0f;
   const float fuller = std::clamp(build_ - 1.0f, -0.4f, 0.6f);  // soft tissue of heavier builds
 
   // The skull: an egg, wider above the ears than at the jaw, longer behind than in front.
-  const float ux = std::cos(elevation) * std::sin(std::abs(azimuth)), uy = std::sin(elevation),
-              uz = std::cos(elevation) * std::cos(azimuth);
+  const float ux = std::abs(u.x), uy = u.y, uz = u.z;
+  const float horizontal = std::sqrt(std::max(0.0f, u.x * u.x + u.z * u.z));
   const float jaw_taper = proportions::by_sex(sex_, 0.11f, 0.08f, 0.05f);
   const float ax = (0.0745f + 0.0015f * male - 0.002f * female + 0.004f * fuller) * (1.0f - jaw_taper * ramp(-5.0f, -62.0f, p));
   const float ay = 0.112f + 0.006f * ramp(-25.0f, 25.0f, p);
@@ -124,7 +146,7 @@ float HeadSculpt::radius(float azimuth, float elevation) const {
   const float az_front = 0.098f + 0.019f * ramp(-15.0f, -58.0f, p);
   const float az = az_front + (0.101f - az_front) * ramp(40.0f, 140.0f, t);
   const float egg = 1.0f / std::sqrt((ux / ax) * (ux / ax) + (uy / ay) * (uy / ay) + (uz / az) * (uz / az));
-  const float egg_mid = 1.0f / std::sqrt((uy / ay) * (uy / ay) + (std::cos(elevation) / az_front) * (std::cos(elevation) / az_front));
+  const float egg_mid = 1.0f / std::sqrt((uy / ay) * (uy / ay) + (horizontal / az_front) * (horizontal / az_front));
 
   // The face plane over the front, blending into the skull's sides.
   float r = egg;
@@ -154,9 +176,7 @@ float HeadSculpt::radius(float azimuth, float elevation) const {
   // Brow ridge (stronger in men), eye sockets, cheekbones, temples and the jaw's angles.
   const float brow = 0.0028f + 0.0020f * male - 0.0013f * female;
   r += brow * bump_at(ts, p, 14.0f, 15.5f, 20.0f, 6.5f);
-  const vec3 eye = eyes_[0] / k_ - marks_.centre / k_;
-  const float eye_t = to_degrees(std::atan2(eye.x, eye.z)), eye_p = to_degrees(std::asin(eye.y / glm::length(eye)));
-  r -= 0.0045f * bump_at(ts, p, eye_t, eye_p, 11.0f, 8.5f);
+  r -= 0.0045f * bump_at(ts, p, eye_angles_.x, eye_angles_.y, 11.0f, 8.5f);
   r += (0.0026f + 0.001f * fuller) * bump_at(ts, p, 38.0f, -8.0f, 20.0f, 13.0f);
   r -= 0.0015f * bump_at(ts, p, 64.0f, 17.0f, 16.0f, 14.0f);
   r += (0.0030f + 0.002f * fuller) * bump_at(ts, p, 36.0f, -28.0f, 22.0f, 14.0f);  // the cheeks over the teeth
@@ -192,14 +212,13 @@ float HeadSculpt::rest_distance(const vec3& p) const {
   const vec3 q = (p - marks_.centre) / k_;
   const float len = glm::length(q);
   if (len < 1e-6f) return -0.1f * k_;
-  const float azimuth = std::atan2(q.x, q.z), elevation = std::asin(std::clamp(q.y / len, -1.0f, 1.0f));
-  const float outer = 0.9f * (len - radius(azimuth, elevation)) * k_;
+  const float outer = 0.9f * (len - radius_towards(q / len)) * k_;
   return smax(outer, -carved(p), 0.0010f * k_);
 }
 
 float HeadSculpt::hinge_angle(const vec3& p) const {
   const vec3 v = p - marks_.jaw_pivot;
-  const float a = std::atan2(v.y, v.z) - std::atan2(hinge_dir_.y, hinge_dir_.z);
+  const float a = fast_atan2(v.y, v.z) - hinge_base_;
   return std::remainder(a, 2.0f * kPi);
 }
 
@@ -267,7 +286,7 @@ float depth_in(const HeadSculpt& head, const vec3& rest) {
   const vec3 q = (rest - m.centre) / m.k;
   const float len = glm::length(q);
   if (len < 1e-6f) return -1.0f;
-  return (len - head.radius(std::atan2(q.x, q.z), std::asin(std::clamp(q.y / len, -1.0f, 1.0f)))) * m.k;
+  return (len - head.radius_towards(q / len)) * m.k;
 }
 }  // namespace
 
@@ -296,8 +315,10 @@ float HairSculpt::distance(const vec3& bind_point) const {
   const vec3 q = (p - centre) / k_;
   const float len = glm::length(q);
   if (len < 1e-6f) return -0.1f * k_;
-  const float azimuth = std::atan2(q.x, q.z), elevation = std::asin(std::clamp(q.y / len, -1.0f, 1.0f));
-  const float r = head_->radius(azimuth, elevation);
+  const vec3 u = q / len;
+  const float r = head_->radius_towards(u);
+  const float elevation = fast_atan2(u.y, std::sqrt(std::max(0.0f, u.x * u.x + u.z * u.z)));
+  const float azimuth = fast_atan2(u.x, u.z);
   const vec3 skin = centre + q / len * (r * k_);
   const float line = hair_field(skin, k_, style_);
   const float el = to_degrees(elevation), around = std::abs(to_degrees(azimuth));

@@ -61,6 +61,7 @@ class HeadSculpt final : public Sculpt {
   // The uncarved head's radius from landmarks().centre in a direction (radians: azimuth from the
   // front towards the avatar's left, elevation up), in metres at 1.70 m (times k for the avatar).
   float radius(float azimuth, float elevation) const;
+  float radius_towards(const vec3& unit_direction) const;  // the same for a unit direction
 
  private:
   float carved(const vec3& rest_point) const;          // the cavity and slit (negative inside)
@@ -73,6 +74,8 @@ class HeadSculpt final : public Sculpt {
   std::array<vec3, 2> eyes_;
   float bind_open_;  // radians
   vec3 hinge_dir_;   // from the pivot along the hinge plane towards the mouth (yz)
+  float hinge_base_;  // its angle in the yz plane
+  vec2 eye_angles_;   // the left eye's azimuth and elevation from the centre, degrees
 };
 
 // The hair over the scalp as a shell on the head: the head's radius plus the style's thickness

@@ -64,7 +64,7 @@ struct ImplicitBody {
   std::vector<Primitive> primitives;
   vec3 lo{0.0f}, hi{0.0f};  // bounds of the union primitives; filled by finish()
 
-  // Computes bounding boxes; call after the last primitive is added.
+  // Computes bounding boxes and the index below; call after the last primitive is added.
   void finish();
 
   // The field at p. `band` > 0 allows skipping primitives farther than band: the result is then
@@ -74,6 +74,23 @@ struct ImplicitBody {
 
   // Distances from p to every union primitive (others: +inf), for weights and materials.
   void distances(const vec3& p, std::span<float> out) const;
+
+  // Uniform grids over the bounds: for each cell, in order, the primitives that can change the
+  // field within `band` of it (the rest are too far to matter: a blend reaches only so far), so
+  // field() looks at a few instead of all of them. A coarse grid for the polygoniser's coarse
+  // lattice, a fine one for everything near the surface (fine lattices, gradients). Built by finish().
+  struct Index {
+    float band = 0.0f;
+    vec3 origin{0.0f};
+    float cell = 0.0f;
+    glm::ivec3 cells{0};
+    std::vector<std::uint32_t> start;  // per cell, into items; one extra at the end
+    std::vector<std::uint16_t> items;
+    void build(const ImplicitBody& body, float band, float cell);
+    // The primitives for p, or false when p lies outside the grid or band exceeds its own.
+    bool find(const vec3& p, float band, std::uint32_t& first, std::uint32_t& last) const;
+  };
+  Index coarse_index, fine_index;
 };
 
 }  // namespace gestura
