@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <string_view>
 
+#include "gestura/body/avatar_import.hpp"
 #include "gestura/body/avatar_look.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/body/skinning.hpp"
@@ -148,14 +150,23 @@ Avatar load_makehuman_avatar(const std::string& directory) {
   return a;
 }
 
-Avatar load_avatar(const std::string& spec, const AvatarParams& params) {
+Avatar load_avatar(const std::string& spec, const AvatarParams& params, std::vector<std::string>* notes) {
   if (const AvatarLook* look = find_look(spec)) return build_avatar(with_given(look->params, params));
+  if (is_avatar_file(spec)) {
+    ImportedAvatar imported = load_file_avatar(spec);
+    for (const std::string& note : imported.notes) {
+      if (notes) notes->push_back(note);
+      else std::fprintf(stderr, "note: %s\n", note.c_str());
+    }
+    return std::move(imported.avatar);
+  }
   if (spec.starts_with(kMakeHumanPrefix)) {
     const std::string dir = spec.substr(kMakeHumanPrefix.size());
     if (dir.empty()) throw Error("avatar 'makehuman:': give the MakeHuman asset directory, e.g. makehuman:DIR");
     return load_makehuman_avatar(dir);
   }
-  throw Error("unknown avatar '" + spec + "' (use a built-in look: " + look_names() + "; or makehuman:DIR)");
+  throw Error("unknown avatar '" + spec + "' (use a built-in look: " + look_names() +
+              "; makehuman:DIR; or an avatar file FILE.vrm, FILE.glb, FILE.gltf)");
 }
 
 }  // namespace gestura
