@@ -9,7 +9,7 @@
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/scene_render_job.hpp"
-#include "gestura/render/staged_file.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/render/viewer_controls.hpp"
 #include "scene_view.hpp"
 

@@ -5,7 +5,7 @@
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/progress.hpp"
-#include "gestura/render/staged_file.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/render/video_writer.hpp"
 
 namespace gestura {
