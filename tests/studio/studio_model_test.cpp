@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "gestura/core/error.hpp"
 #include "gestura/lexicon/lexicon.hpp"
@@ -217,6 +218,25 @@ TEST(StudioScript, ParsesActionsAndNamesTheLineOfAMistake) {
   }
   EXPECT_THROW(parse_script("save now\n", "s.txt"), Error);
   EXPECT_THROW(parse_script("replace-symbol 0\n", "s.txt"), Error);
+}
+
+}  // namespace
+}  // namespace gestura::studio
+
+#include "gestura/studio/palette.hpp"
+
+namespace gestura::studio {
+namespace {
+
+TEST(StudioPalette, EverySymbolIsInExactlyOneGroupAndGroupsFollowTheNotation) {
+  std::map<sign::Symbol, int> seen;
+  for (const PaletteGroup& g : palette_groups())
+    for (const sign::Symbol s : g.symbols) ++seen[s];
+  for (const sign::SymbolInfo& info : sign::symbol_table()) EXPECT_EQ(1, seen[info.symbol]) << info.name;
+  ASSERT_GE(palette_groups().size(), 11u);
+  EXPECT_EQ("Handshape", palette_groups()[0].title);
+  EXPECT_EQ(sign::Symbol::fist, palette_groups()[0].symbols.front());
+  EXPECT_EQ("flathand", short_name(sign::Symbol::flathand));
 }
 
 }  // namespace
