@@ -859,6 +859,16 @@ void Studio::write_dump(const std::string& path) {
   j["selected_symbol"] = selected_symbol_;
   j["frame"] = frame_;
   j["browse_count"] = rows_.size();
+  // The user lexicon's row for the draft's key as stored now (names), null when there is none.
+  j["db_names"] = nullptr;
+  if (const SignDraft& d = model_.draft(); !d.gloss.empty()) {
+    if (const auto row = model_.find(EntryKey{d.gloss, d.language, d.variant}); row && !row->builtin) {
+      try {
+        j["db_names"] = draft_from_entry(row->entry, false).names;
+      } catch (const Error&) {
+      }
+    }
+  }
   nlohmann::json p{{"has_clip", preview_.clip.has_value()}, {"synthesis_ms", preview_.synthesis_ms}};
   if (preview_.clip) {
     const float mid = 0.5f * (preview_.sign_start + preview_.sign_end);

@@ -1,0 +1,231 @@
+// The studio itself under a virtual X server, driven by --script (UI actions replayed one per
+// frame): a handshape change bends the preview's fingers and, saved, changes the database row;
+// undo restores both; notation that does not parse is shown at its symbol and never saved; a killed
+// studio offers its draft back. Screenshots go to $GESTURA_STUDIO_SCREENSHOTS when set (docs/studio.md
+// uses them), else to a temporary directory. Skipped only where xvfb-run is not installed.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "gestura/lexicon/lexicon.hpp"
+#include "gestura/sign/hamnosys_parser.hpp"
+#include "lexicon/temp_dir.hpp"
+#include "support/build_paths.hpp"
+#include "support/cli.hpp"
+#include "support/png_file.hpp"
+
+namespace gestura {
+namespace {
+
+namespace fs = std::filesystem;
+using gestura::test::run_command;
+using gestura::testing::TempDir;
+
+
+// Runs the studio on `db` with `script` (lines), under xvfb-run.
+gestura::test::CliRun run_studio(const TempDir& dir, const std::string& db, const std::string& script_name,
+                                 const std::string& script, const std::string& size = "1280x800") {
+  const std::string path = dir.write(script_name, script);
+  return run_command("timeout 300 xvfb-run -a -s '-screen 0 1400x900x24' " + gestura::test::cli_path() + " studio " + db +
+                     " --size " + size + " --script " + path);
+}
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return nlohmann::json();
+  return nlohmann::json::parse(in, nullptr, false);
+}
+
+std::string shot_dir(const TempDir& dir) {
+  const char* env = std::getenv("GESTURA_STUDIO_SCREENSHOTS");
+  if (env && *env) {
+    fs::create_directories(env);
+    return env;
+  }
+  return dir.file("");
+}
+
+std::optional<std::string> stored_names(const std::string& db, const std::string& gloss) {
+  Lexicon lex = Lexicon::open(db);
+  const auto row = lex.find(gloss, "ase", 1);
+  if (!row) return std::nullopt;
+  std::string names;
+  for (const sign::Symbol s : sign::symbols_from_unicode(row->notation)) names += (names.empty() ? "" : ",") + std::string(sign::symbol_name(s));
+  return names;
+}
+
+bool have_xvfb() { return run_command("command -v xvfb-run").status == 0; }
+
+TEST(StudioUnderXvfb, AHandshapeChangeBendsThePreviewAndSavesTheRowAndUndoRestoresBoth) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
+  TempDir dir;
+  const std::string db = dir.file("user.sqlite"), shots = shot_dir(dir);
+  const std::string j = dir.file("");
+  const auto r = run_studio(dir, db, "edit.txt",
+                            "new\n"
+                            "set gloss TESTFLEX\n"
+                            "set keywords flex test\n"
+                            "set names hamflathand,hamextfingeru,hampalml,hamchest\n"
+                            "save\n"
+                            "wait 1\n"
+                            "dump " + j + "flat.json\n"
+                            "select-symbol 0\n"
+                            "palette hamfist\n"  // a click on the palette replaces the selected symbol
+                            "wait 1\n"
+                            "dump " + j + "fist.json\n"
+                            "save\n"
+                            "dump " + j + "saved.json\n"
+                            "screenshot " + shots + "/studio-edit.png\n"
+                            "undo\n"  // the save
+                            "dump " + j + "undo_save.json\n"
+                            "undo\n"  // the handshape
+                            "wait 1\n"
+                            "dump " + j + "undo_symbol.json\n"
+                            "quit\n");
+  ASSERT_EQ(0, r.status) << r.output;
+  const auto flat = read_json(j + "flat.json"), fist = read_json(j + "fist.json"), saved = read_json(j + "saved.json"),
+             undo_save = read_json(j + "undo_save.json"), undo_symbol = read_json(j + "undo_symbol.json");
+  ASSERT_TRUE(flat.is_object() && fist.is_object() && saved.is_object() && undo_save.is_object() && undo_symbol.is_object());
+
+  // The preview: a fist bends the right hand's fingers far more than a flat hand.
+  ASSERT_TRUE(flat["preview"]["has_clip"].get<bool>()) << flat.dump();
+  ASSERT_TRUE(fist["preview"]["has_clip"].get<bool>()) << fist.dump();
+  const float flat_flex = flat["preview"]["flexion_right"], fist_flex = fist["preview"]["flexion_right"];
+  EXPECT_GT(fist_flex, flat_flex + 150.0f) << "flat " << flat_flex << " fist " << fist_flex;
+  EXPECT_EQ("hamfist,hamextfingeru,hampalml,hamchest", fist["draft"]["names"]);
+
+  // The database: the first save stored the flat hand, the second the fist, undo put the flat hand back.
+  EXPECT_EQ("hamflathand,hamextfingeru,hampalml,hamchest", flat["db_names"]);
+  EXPECT_EQ("hamfist,hamextfingeru,hampalml,hamchest", saved["db_names"]);
+  EXPECT_EQ("hamflathand,hamextfingeru,hampalml,hamchest", undo_save["db_names"]);
+  EXPECT_EQ("hamfist,hamextfingeru,hampalml,hamchest", undo_save["draft"]["names"]);
+  // ... and the preview with it.
+  EXPECT_EQ("hamflathand,hamextfingeru,hampalml,hamchest", undo_symbol["draft"]["names"]);
+  const float undone_flex = undo_symbol["preview"]["flexion_right"];
+  EXPECT_NEAR(flat_flex, undone_flex, 1.0f);
+  // Read independently of the studio after it quit: the row is the flat hand again.
+  EXPECT_EQ("hamflathand,hamextfingeru,hampalml,hamchest", stored_names(db, "TESTFLEX").value_or("(none)"));
+
+  const auto image = gestura::test::read_png(shots + "/studio-edit.png", 3);
+  ASSERT_TRUE(image.loaded());
+  EXPECT_EQ(1280, image.width);
+  EXPECT_EQ(800, image.height);
+}
+
+TEST(StudioUnderXvfb, NotationThatDoesNotParseIsShownAtItsSymbolAndNeverSaved) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
+  TempDir dir;
+  const std::string db = dir.file("user.sqlite"), shots = shot_dir(dir), j = dir.file("");
+  const auto r = run_studio(dir, db, "bad.txt",
+                            "new\n"
+                            "set gloss TESTBAD\n"
+                            "set names hamflathand,hamextfingeru,hamparend,hamchest\n"
+                            "wait 1\n"
+                            "save\n"
+                            "screenshot " + shots + "/studio-error.png\n"
+                            "dump " + j + "bad.json\n"
+                            "quit\n");
+  ASSERT_EQ(0, r.status) << r.output;
+  const auto bad = read_json(j + "bad.json");
+  ASSERT_TRUE(bad.is_object());
+  ASSERT_TRUE(bad["notation_error"].is_object()) << bad.dump();
+  EXPECT_EQ(2, bad["notation_error"]["symbol"]);
+  EXPECT_EQ(2, bad["preview"]["error"]["symbol"]);
+  EXPECT_FALSE(bad["preview"]["has_clip"].get<bool>());
+  const std::string status = bad["status"];
+  EXPECT_NE(std::string::npos, status.find("not saved")) << status;
+  EXPECT_NE(std::string::npos, status.find("symbol 2")) << status;
+  EXPECT_TRUE(bad["db_names"].is_null());
+  EXPECT_FALSE(stored_names(db, "TESTBAD").has_value());
+  EXPECT_TRUE(bad["dirty"].get<bool>());  // the draft is kept
+
+  // The symbol is marked in red in the notation panel (the error chip's colour).
+  const auto image = gestura::test::read_png(shots + "/studio-error.png", 3);
+  ASSERT_TRUE(image.loaded());
+  int red = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = image.width / 2; x < image.width; ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      red += p[0] > 170 && p[1] < 60 && p[2] < 60;
+    }
+  EXPECT_GT(red, 200) << "no red error chip in the notation panel";
+}
+
+TEST(StudioUnderXvfb, AKilledStudioOffersItsDraftBack) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
+  TempDir dir;
+  const std::string db = dir.file("user.sqlite"), shots = shot_dir(dir), j = dir.file("");
+  const auto killed = run_studio(dir, db, "kill.txt",
+                                 "new\n"
+                                 "set gloss TESTDRAFT\n"
+                                 "set names hamfist,hamthumboutmod,hamextfingeru,hampalml,hamchin\n"
+                                 "wait 2\n"
+                                 "kill\n");
+  EXPECT_NE(0, killed.status) << killed.output;
+  ASSERT_TRUE(fs::exists(db + ".studio-draft.json"));
+  EXPECT_FALSE(stored_names(db, "TESTDRAFT").has_value());
+
+  const auto again = run_studio(dir, db, "recover.txt",
+                                "wait 2\n"
+                                "screenshot " + shots + "/studio-recovery.png\n"
+                                "dump " + j + "offered.json\n"
+                                "recover\n"
+                                "wait 1\n"
+                                "dump " + j + "recovered.json\n"
+                                "quit\n");
+  ASSERT_EQ(0, again.status) << again.output;
+  const auto offered = read_json(j + "offered.json"), recovered = read_json(j + "recovered.json");
+  ASSERT_TRUE(offered.is_object() && recovered.is_object());
+  EXPECT_TRUE(offered["recovery_offered"].get<bool>());
+  EXPECT_EQ("", offered["draft"]["gloss"]);  // nothing restored before the user says so
+  EXPECT_FALSE(recovered["recovery_offered"].get<bool>());
+  EXPECT_EQ("TESTDRAFT", recovered["draft"]["gloss"]);
+  EXPECT_EQ("hamfist,hamthumboutmod,hamextfingeru,hampalml,hamchin", recovered["draft"]["names"]);
+  EXPECT_TRUE(recovered["dirty"].get<bool>());
+  EXPECT_TRUE(recovered["preview"]["has_clip"].get<bool>());
+  // Quitting with the draft still unsaved keeps it for next time.
+  EXPECT_TRUE(fs::exists(db + ".studio-draft.json"));
+}
+
+TEST(StudioUnderXvfb, BrowsesTheBuiltInLexiconByHandshapeAndShowsEveryPanel) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
+  TempDir dir;
+  const std::string db = dir.file("user.sqlite"), shots = shot_dir(dir), j = dir.file("");
+  const auto r = run_studio(dir, db, "tour.txt",
+                            "filter handshape hamfinger2\n"
+                            "dump " + j + "filtered.json\n"
+                            "filter handshape -\n"
+                            "search thank\n"
+                            "open THANK-YOU\n"
+                            "panel Palette\n"
+                            "camera three-quarter\n"
+                            "time 0.9\n"
+                            "wait 2\n"
+                            "screenshot " + shots + "/studio-browse.png\n"
+                            "dump " + j + "tour.json\n"
+                            "quit\n");
+  ASSERT_EQ(0, r.status) << r.output;
+  const auto filtered = read_json(j + "filtered.json"), tour = read_json(j + "tour.json");
+  ASSERT_TRUE(filtered.is_object() && tour.is_object());
+  EXPECT_GT(filtered["browse_count"].get<int>(), 5);
+  EXPECT_EQ("THANK-YOU", tour["draft"]["gloss"]) << tour["status"];
+  EXPECT_TRUE(tour["draft"]["from_builtin"].get<bool>());
+  EXPECT_TRUE(tour["preview"]["has_clip"].get<bool>());
+  const auto image = gestura::test::read_png(shots + "/studio-browse.png", 3);
+  ASSERT_TRUE(image.loaded());
+  // The preview (the middle of the window) shows the avatar, not a flat background.
+  int differing = 0;
+  const std::uint8_t* corner = image.at(image.width / 5 + 20, 60);
+  for (int y = 80; y < image.height / 2; y += 4) {
+    const std::uint8_t* p = image.at(image.width / 2, y);
+    differing += std::abs(p[0] - corner[0]) + std::abs(p[1] - corner[1]) + std::abs(p[2] - corner[2]) > 30;
+  }
+  EXPECT_GT(differing, 10);
+}
+
+}  // namespace
+}  // namespace gestura
