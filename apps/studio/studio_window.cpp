@@ -695,7 +695,7 @@ void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
     }
     ImGui::Checkbox("loop", &controls_->loop);
     ImGui::SameLine();
-    ImGui::Text("%.2f / %.2f s", controls_->time, duration);
+    ImGui::Text("%.2f / %.2f s", duration > 0.0f ? controls_->time : 0.0f, duration);
     ImGui::SameLine();
     if (ImGui::SmallButton("front")) controls_->apply(ViewerCommand::Front);
     ImGui::SameLine();
@@ -708,6 +708,7 @@ void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
 
 void Studio::draw_problems(const ImVec2& pos, const ImVec2& size) {
   if (begin_panel("Problems", pos, size)) {
+    ImGui::PushTextWrapPos(0.0f);
     if (preview_.error) {
       ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1.0f), "error%s: %s",
                          preview_.error->symbol >= 0 ? (" at symbol " + std::to_string(preview_.error->symbol)).c_str() : "",
@@ -725,6 +726,7 @@ void Studio::draw_problems(const ImVec2& pos, const ImVec2& size) {
     if (preview_.clip)
       ImGui::TextDisabled("synthesis %.1f ms; edit to preview %.1f ms (last)", preview_.synthesis_ms,
                           latencies_ms_.empty() ? 0.0 : latencies_ms_.back());
+    ImGui::PopTextWrapPos();
   }
   ImGui::End();
 }
