@@ -7,7 +7,7 @@ PRESET := $(if $(filter true,$(CI)),ci,release)
 JOBS   ?= $(shell nproc)
 BIN    := build/bin
 
-.PHONY: run test build build-cli deps bench bench-anchors legibility clean
+.PHONY: run test build build-cli deps bench bench-studio bench-anchors legibility clean
 
 deps:
 	@scripts/setup-deps.sh
@@ -29,6 +29,11 @@ test: build
 
 bench: build
 	@$(BIN)/gestura-bench
+
+# The studio's frame time and edit-to-preview latency at 1280x800 under Xvfb (docs/benchmarks.md, "Studio").
+bench-studio: build-cli
+	@db=$$(mktemp -d)/bench.sqlite; xvfb-run -a -s '-screen 0 1400x900x24' $(BIN)/gestura studio $$db --size 1280x800 \
+	  --script bench/studio/frame-time.script --frame-log $$(dirname $$db)/frames.tsv $(ARGS); rm -rf $$(dirname $$db)
 
 # MediaPipe Holistic on rendered signs (minutes: ~5-10 s per frame); not part of make test.
 # LEGIBILITY_ARGS passes options, e.g. LEGIBILITY_ARGS="--size 640x360 --step 3 house".
