@@ -241,3 +241,56 @@ TEST(StudioPalette, EverySymbolIsInExactlyOneGroupAndGroupsFollowTheNotation) {
 
 }  // namespace
 }  // namespace gestura::studio
+
+#include "gestura/studio/learning.hpp"
+
+namespace gestura::studio {
+namespace {
+
+TEST(StudioLearning, TopicsComeFromTheLexiconsCategoriesWithTheirSentences) {
+  TempDir dir;
+  const std::string lexicon = dir.write("x.jsonl",
+                                        "{\"gloss\":\"RED\",\"lang\":\"ase\",\"category\":\"colour\",\"names\":\"hamfinger2,hamextfingeru,hampalml,hamlips\",\"description\":\"index brushes down the lips\",\"keywords\":[\"red\"]}\n"
+                                        "{\"gloss\":\"BLUE\",\"lang\":\"ase\",\"category\":\"colour\",\"names\":\"hamfinger2345,hamextfingeru,hampalml,hamneutralspace\",\"keywords\":[\"blue\"]}\n"
+                                        "\n"
+                                        "{\"gloss\":\"HELLO\",\"lang\":\"ase\",\"names\":\"hamflathand,hamextfingeru,hampalmd,hamforehead\"}\n");
+  const std::string sentences = dir.write("s.json", "{\"_about\":\"x\",\"colour\":[\"I like red.\"],\"nothing\":[\"x\"]}");
+  const auto topics = load_topics({lexicon}, sentences);
+  ASSERT_EQ(2u, topics.size());
+  EXPECT_EQ("colour", topics[0].name);
+  ASSERT_EQ(2u, topics[0].words.size());
+  EXPECT_EQ("index brushes down the lips", topics[0].words[0].description);
+  EXPECT_EQ((std::vector<std::string>{"I like red."}), topics[0].sentences);
+  EXPECT_EQ("other", topics[1].name);
+
+  const std::string bad = dir.write("bad.jsonl", "{\"gloss\":\"A\"}\nnot json\n");
+  try {
+    load_topics({bad}, "");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(2, e.where().line);
+  }
+}
+
+TEST(StudioLearning, TheQuizAsksWordsOfTheTopicAndCountsRightAnswers) {
+  Topic t{"t", {}, {}};
+  for (const char* g : {"A", "B", "C", "D", "E", "F"}) t.words.push_back(LessonWord{g, "ase", "hamfist", "", {}});
+  Quiz quiz(t, 7);
+  std::string previous;
+  for (int i = 0; i < 20; ++i) {
+    const std::string gloss = quiz.word().gloss;
+    EXPECT_NE(previous, gloss);
+    ASSERT_EQ(4u, quiz.choices().size());
+    EXPECT_NE(quiz.choices().end(), std::find(quiz.choices().begin(), quiz.choices().end(), gloss));
+    if (i % 2) EXPECT_TRUE(quiz.answer(gloss));
+    else EXPECT_FALSE(quiz.answer(gloss == "A" ? "B" : "A"));
+    EXPECT_FALSE(quiz.answer(gloss) != quiz.answered().value());  // the first answer stands
+    previous = gloss;
+    quiz.next();
+  }
+  EXPECT_EQ(10, quiz.right());
+  EXPECT_EQ(21, quiz.asked());
+}
+
+}  // namespace
+}  // namespace gestura::studio
