@@ -25,6 +25,7 @@
 
 #include "gestura/app/error.hpp"
 #include "gestura/app/lexicon.hpp"
+#include "gestura/app/say.hpp"
 #include "gestura/app/workspace.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/render/camera.hpp"
@@ -36,6 +37,7 @@
 #include "gestura/render/subject.hpp"
 #include "gestura/render/viewer_controls.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
+#include "gestura/studio/learning.hpp"
 #include "gestura/studio/palette.hpp"
 #include "gestura/studio/recovery.hpp"
 #include "gestura/studio/script.hpp"
@@ -96,6 +98,11 @@ class Studio {
       message_ = std::string(e.what()) + ": not offered; remove or fix it";
     }
     if (!model_.user_error().empty()) message_ = model_.status();
+    try {
+      topics_ = load_topics(setup_.builtin_files, default_sentences_file(setup_.builtin_files));
+    } catch (const Error& e) {
+      message_ = std::string("learning mode has no material: ") + e.what();
+    }
     refresh_browse();
     if (!setup_.script.empty()) script_ = setup_.script;
   }
@@ -117,6 +124,13 @@ class Studio {
   void accept_recovery(bool restore);
   void palette_click(sign::Symbol symbol);
   void set_field(const std::string& field, const std::string& value);
+  void set_learning(bool on);
+  void select_topic(const std::string& name);
+  void play_word(const LessonWord& word, bool reveal);
+  void play_sentence(const std::string& text);
+  void show_clip(const Clip& clip);
+  void draw_learn(const ImVec2& pos, const ImVec2& size);
+  void draw_word(const ImVec2& pos, const ImVec2& size);
 
   // ---- per frame ----
   void update_preview(Clock::time_point now);
@@ -169,6 +183,7 @@ class Studio {
   float rendered_time_ = 0.0f;
   mat4 rendered_view_{1.0f}, rendered_projection_{1.0f};
   glm::ivec2 rendered_size_{0, 0};
+  int rendered_layout_ = 0;  // 0: one view; 1 + preset: two views, the second from that preset
   std::optional<Clock::time_point> edit_time_;  // an edit not yet shown in the preview
   std::vector<double> latencies_ms_, synthesis_ms_;
   // recovery
@@ -190,6 +205,17 @@ class Studio {
   bool quit_ = false;
   int exit_status_ = 0;
   std::string message_;  // overrides the model's status until the next model action
+  // learning mode
+  bool learning_ = false;
+  std::vector<Topic> topics_;
+  int topic_ = 0;
+  std::string learn_title_;          // what the preview performs: a word or a sentence
+  const LessonWord* learn_word_ = nullptr;
+  std::vector<PerformedGloss> learn_glosses_;  // a sentence's signs, as bars on the timeline
+  std::optional<Quiz> quiz_;
+  bool two_views_ = true;
+  bool orbited_ = false;  // the learner moved the left view's camera
+  CameraPreset second_view_ = CameraPreset::Side;
   std::uint64_t frame_ = 0;
 };
 
@@ -279,6 +305,78 @@ void Studio::accept_recovery(bool restore) {
   show_recovery_ = false;
 }
 
+void Studio::show_clip(const Clip& clip) {
+  subject_.clip = clip;
+  animator_.emplace(subject_);
+  controls_->time = 0.0f;
+  controls_->playing = true;
+  rendered_ = false;
+}
+
+void Studio::set_learning(bool on) {
+  if (on == learning_) return;
+  learning_ = on;
+  rendered_ = false;
+  if (!on) {
+    // Back to the editor: its preview again (synthesized anew from the draft).
+    quiz_.reset();
+    subject_.clip.reset();
+    animator_.emplace(subject_);
+    preview_revision_ = ~0ull;
+    say("sign editor");
+  } else {
+    say(topics_.empty() ? "learning mode: no topics (no built-in lexicon)" : "learning mode: pick a topic, a word or a sentence");
+  }
+}
+
+void Studio::select_topic(const std::string& name) {
+  for (std::size_t i = 0; i < topics_.size(); ++i)
+    if (topics_[i].name == name) {
+      topic_ = static_cast<int>(i);
+      quiz_.reset();
+      say("topic " + name + ": " + std::to_string(topics_[i].words.size()) + " words, " +
+          std::to_string(topics_[i].sentences.size()) + " sentences");
+      return;
+    }
+  say("no topic '" + name + "'");
+}
+
+void Studio::play_word(const LessonWord& word, bool reveal) {
+  SignDraft d;
+  d.gloss = word.gloss;
+  d.language = word.language;
+  d.names = word.names;
+  const SignPreview p = preview_sign(d, *rig_);
+  if (!p.clip) {
+    say("cannot perform " + word.gloss + ": " + (p.error ? p.error->message : std::string("no clip")));
+    return;
+  }
+  show_clip(*p.clip);
+  learn_glosses_ = {PerformedGloss{word.gloss, word.keywords.empty() ? std::string() : word.keywords.front(), p.sign_start, p.sign_end}};
+  learn_word_ = reveal ? &word : nullptr;
+  learn_title_ = reveal ? word.gloss : "which sign is this?";
+  if (reveal) say("word " + word.gloss);
+}
+
+void Studio::play_sentence(const std::string& text) {
+  app::SayRequest request;
+  request.text = text;
+  app::RunContext context;
+  context.workspace = workspace_;
+  try {
+    const app::SayResult r = app::run(request, context);
+    show_clip(r.performance.clip);
+    learn_glosses_ = r.performance.glosses;
+    learn_word_ = nullptr;
+    learn_title_ = text;
+    std::string glosses;
+    for (const PerformedGloss& g : learn_glosses_) glosses += (glosses.empty() ? "" : " ") + g.gloss;
+    say("sentence: " + glosses);
+  } catch (const std::exception& e) {
+    say(std::string("cannot sign '") + text + "': " + e.what());
+  }
+}
+
 void Studio::execute(const ScriptStep& step) {
   const std::string& a = step.action;
   const auto arg = [&](std::size_t i) { return i < step.args.size() ? step.args[i] : std::string(); };
@@ -289,7 +387,8 @@ void Studio::execute(const ScriptStep& step) {
       throw Error(SourceLocation{request_.script, step.line}, "'" + arg(i) + "' is not a number");
     }
   };
-  if (a != "screenshot" && a != "dump" && a != "wait") message_.clear();
+  static const char* const keeps_message[] = {"screenshot", "dump", "wait", "time", "play", "pause", "speed", "camera", "views", "panel"};
+  if (std::none_of(std::begin(keeps_message), std::end(keeps_message), [&](const char* k) { return a == k; })) message_.clear();
   if (a == "open") {
     EntryKey key{arg(0), step.args.size() > 1 ? arg(1) : "ase", step.args.size() > 2 ? number(2) : 1};
     model_.open(key);
@@ -364,6 +463,42 @@ void Studio::execute(const ScriptStep& step) {
     pending_screenshot_ = arg(0);
   } else if (a == "dump") {
     write_dump(arg(0));
+  } else if (a == "mode") {
+    if (arg(0) == "learn") set_learning(true);
+    else if (arg(0) == "edit") set_learning(false);
+    else say("no mode '" + arg(0) + "' (learn, edit)");
+  } else if (a == "topic") {
+    set_learning(true);
+    select_topic(arg(0));
+  } else if (a == "word") {
+    set_learning(true);
+    const LessonWord* found = nullptr;
+    for (const Topic& t : topics_)
+      for (const LessonWord& w : t.words)
+        if (!found && w.gloss == arg(0)) found = &w;
+    if (found) play_word(*found, true);
+    else say("no word " + arg(0) + " in the learning material");
+  } else if (a == "sentence") {
+    set_learning(true);
+    play_sentence(arg(0));
+  } else if (a == "quiz") {
+    set_learning(true);
+    if (topics_.empty() || topics_[topic_].words.empty()) say("no words to test");
+    else quiz_.emplace(topics_[topic_], static_cast<std::uint32_t>(number(0))), play_word(quiz_->word(), false);
+  } else if (a == "answer") {
+    if (!quiz_) say("no self-test running");
+    else say(quiz_->answer(arg(0)) ? "right: " + quiz_->word().gloss : "no: it was " + quiz_->word().gloss);
+  } else if (a == "next-question") {
+    if (quiz_) quiz_->next(), play_word(quiz_->word(), false);
+  } else if (a == "views") {
+    const std::string v = arg(0);
+    two_views_ = v != "one";
+    if (v == "side") second_view_ = CameraPreset::Side;
+    else if (v == "three-quarter") second_view_ = CameraPreset::ThreeQuarter;
+    else if (v == "top") second_view_ = CameraPreset::Top;
+    rendered_ = false;
+  } else if (a == "speed") {
+    controls_->speed = std::clamp(std::stof(arg(0)), 0.25f, 2.0f);
   } else if (a == "kill") {
     std::fflush(nullptr);
     std::raise(SIGKILL);
@@ -408,17 +543,34 @@ void Studio::render_preview() {
     renderer_.resize(width, height);
     preview_width_ = width, preview_height_ = height;
   }
-  controls_->aspect = static_cast<float>(width) / static_cast<float>(height);
-  const View view{controls_->camera(controls_->aspect), {0, 0, width, height}};
+  const bool two = learning_ && two_views_;
+  const int left_width = two ? width / 2 : width;
+  controls_->aspect = static_cast<float>(left_width) / static_cast<float>(height);
+  // Two narrow views: the left one is the front framing fitted to its width until the learner orbits.
+  Camera left_camera = two && !orbited_ ? preset_camera(CameraPreset::Front, controls_->box, controls_->aspect)
+                                        : controls_->camera(controls_->aspect);
+  if (two && !orbited_ && !left_camera.orthographic) {
+    // The front framing is made for a landscape picture; a half-width view steps back until the
+    // shoulders and elbows fit its width as well.
+    const float back = std::max(1.0f, 0.9f / controls_->aspect);
+    left_camera.eye = left_camera.target + (left_camera.eye - left_camera.target) * back;
+    left_camera.view = glm::lookAt(left_camera.eye, left_camera.target, vec3(0.0f, 1.0f, 0.0f));
+  }
+  const View view{left_camera, {0, 0, left_width, height}};
+  std::vector<View> views{view};
+  if (two)
+    views.push_back(View{preset_camera(second_view_, controls_->box, static_cast<float>(width - left_width) / static_cast<float>(height)),
+                         {left_width, 0, width - left_width, height}});
   // A still picture is not drawn again: paused, same camera, same clip, same size.
   const bool same = rendered_ && rendered_clip_ == preview_revision_ && rendered_time_ == controls_->time &&
                     rendered_view_ == view.camera.view && rendered_projection_ == view.camera.projection &&
-                    rendered_size_ == glm::ivec2(width, height);
+                    rendered_size_ == glm::ivec2(width, height) && rendered_layout_ == (two ? 1 + static_cast<int>(second_view_) : 0);
   if (same) return;
+  rendered_layout_ = two ? 1 + static_cast<int>(second_view_) : 0;
   rendered_ = true, rendered_clip_ = preview_revision_, rendered_time_ = controls_->time;
   rendered_view_ = view.camera.view, rendered_projection_ = view.camera.projection, rendered_size_ = glm::ivec2(width, height);
   animator_->pose_at(controls_->time);
-  renderer_.render(std::span(&view, 1), animator_->skinning(), animator_->morph_weights());
+  renderer_.render(views, animator_->skinning(), animator_->morph_weights());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -458,7 +610,13 @@ void Studio::draw_menu() {
     }
     ImGui::EndMenu();
   }
+  if (ImGui::BeginMenu("Mode")) {
+    if (ImGui::MenuItem("Sign editor", "F9", !learning_)) set_learning(false);
+    if (ImGui::MenuItem("Learning", "F10", learning_)) set_learning(true);
+    ImGui::EndMenu();
+  }
   if (ImGui::BeginMenu("View")) {
+    ImGui::MenuItem("Two views (learning)", nullptr, &two_views_);
     for (int i = 0; i < 6; ++i) ImGui::MenuItem(kPanels[i], nullptr, &visible_[i]);
     ImGui::Separator();
     if (ImGui::MenuItem("Front", "F1")) controls_->apply(ViewerCommand::Front);
@@ -658,9 +816,9 @@ void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
                  ImVec2(static_cast<float>(preview_width_) / static_cast<float>(std::max(1, renderer_.width())), 0));
     if (ImGui::IsItemHovered()) {
       const ImGuiIO& io = ImGui::GetIO();
-      if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) controls_->orbit_drag(io.MouseDelta.x, io.MouseDelta.y);
-      if (ImGui::IsMouseDragging(ImGuiMouseButton_Right)) controls_->pan_drag(io.MouseDelta.x, io.MouseDelta.y);
-      if (io.MouseWheel != 0.0f) controls_->zoom(io.MouseWheel);
+      if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) controls_->orbit_drag(io.MouseDelta.x, io.MouseDelta.y), orbited_ = true;
+      if (ImGui::IsMouseDragging(ImGuiMouseButton_Right)) controls_->pan_drag(io.MouseDelta.x, io.MouseDelta.y), orbited_ = true;
+      if (io.MouseWheel != 0.0f) controls_->zoom(io.MouseWheel), orbited_ = true;
     }
     // The timeline: the clip, the signing part, problem marks and the playhead; click to scrub.
     const float duration = animator_->duration();
@@ -670,10 +828,19 @@ void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
     draw->AddRectFilled(p0, ImVec2(p0.x + width, p0.y + height), IM_COL32(45, 45, 50, 255));
     if (duration > 0.0f) {
       const auto x_of = [&](float t) { return p0.x + width * std::clamp(t / duration, 0.0f, 1.0f); };
-      draw->AddRectFilled(ImVec2(x_of(preview_.sign_start), p0.y + 4), ImVec2(x_of(preview_.sign_end), p0.y + height - 4),
-                          IM_COL32(70, 120, 190, 255));
+      if (!learning_)
+        draw->AddRectFilled(ImVec2(x_of(preview_.sign_start), p0.y + 4), ImVec2(x_of(preview_.sign_end), p0.y + height - 4),
+                            IM_COL32(70, 120, 190, 255));
+      if (learning_) {
+        // One bar per sign of the word or sentence, labelled with its gloss.
+        for (const PerformedGloss& g : learn_glosses_) {
+          draw->AddRectFilled(ImVec2(x_of(g.start), p0.y + 3), ImVec2(x_of(g.end), p0.y + height - 3), IM_COL32(70, 120, 190, 255));
+          if (learn_word_ || learn_glosses_.size() > 1 || !quiz_)
+            draw->AddText(ImVec2(x_of(g.start) + 2, p0.y + 4), IM_COL32(255, 255, 255, 255), g.gloss.c_str());
+        }
+      }
       for (const PreviewProblem& p : preview_.problems)
-        if (p.time >= 0.0f)
+        if (p.time >= 0.0f && !learning_)
           draw->AddTriangleFilled(ImVec2(x_of(p.time) - 5, p0.y), ImVec2(x_of(p.time) + 5, p0.y), ImVec2(x_of(p.time), p0.y + 9),
                                   IM_COL32(240, 70, 60, 255));
       draw->AddLine(ImVec2(x_of(controls_->time), p0.y), ImVec2(x_of(controls_->time), p0.y + height), IM_COL32(255, 255, 255, 255), 2.0f);
@@ -727,6 +894,100 @@ void Studio::draw_problems(const ImVec2& pos, const ImVec2& size) {
       ImGui::TextDisabled("synthesis %.1f ms; edit to preview %.1f ms (last)", preview_.synthesis_ms,
                           latencies_ms_.empty() ? 0.0 : latencies_ms_.back());
     ImGui::PopTextWrapPos();
+  }
+  ImGui::End();
+}
+
+void Studio::draw_learn(const ImVec2& pos, const ImVec2& size) {
+  if (begin_panel("Learn", pos, size)) {
+    if (topics_.empty()) ImGui::TextDisabled("no learning material");
+    if (!topics_.empty()) {
+      ImGui::SetNextItemWidth(-1);
+      if (ImGui::BeginCombo("##topic", topics_[topic_].name.c_str())) {
+        for (const Topic& t : topics_)
+          if (ImGui::Selectable(t.name.c_str(), t.name == topics_[topic_].name)) select_topic(t.name);
+        ImGui::EndCombo();
+      }
+      const Topic& t = topics_[topic_];
+      ImGui::TextDisabled("words");
+      ImGui::BeginChild("words", ImVec2(0, size.y * 0.42f), true);
+      for (const LessonWord& w : t.words)
+        if (ImGui::Selectable(w.gloss.c_str(), learn_word_ == &w)) quiz_.reset(), play_word(w, true);
+      ImGui::EndChild();
+      ImGui::TextDisabled("sentences");
+      ImGui::BeginChild("sentences", ImVec2(0, size.y * 0.2f), true);
+      for (const std::string& sentence : t.sentences)
+        if (ImGui::Selectable(sentence.c_str(), learn_title_ == sentence)) quiz_.reset(), play_sentence(sentence);
+      ImGui::EndChild();
+      ImGui::Separator();
+      ImGui::TextDisabled("self-test");
+      if (!quiz_) {
+        if (ImGui::Button("Test me on this topic") && !t.words.empty()) {
+          quiz_.emplace(t, static_cast<std::uint32_t>(Clock::now().time_since_epoch().count()));
+          play_word(quiz_->word(), false);
+        }
+      } else {
+        ImGui::Text("Which sign is this?  (%d of %d right)", quiz_->right(), quiz_->asked() - (quiz_->answered() ? 0 : 1));
+        for (const std::string& choice : quiz_->choices()) {
+          const bool answered = quiz_->answered().has_value();
+          const bool right = choice == quiz_->word().gloss;
+          int colours = 0;
+          if (answered && right) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.15f, 0.55f, 0.2f, 1.0f)), ++colours;
+          if (ImGui::Button(choice.c_str(), ImVec2(-1, 0)) && !answered)
+            say(quiz_->answer(choice) ? "right: " + quiz_->word().gloss : "no: it was " + quiz_->word().gloss);
+          if (colours) ImGui::PopStyleColor(colours);
+        }
+        if (ImGui::Button("Play again")) controls_->time = 0.0f, controls_->playing = true;
+        ImGui::SameLine();
+        if (ImGui::Button("Next")) quiz_->next(), play_word(quiz_->word(), false);
+        ImGui::SameLine();
+        if (ImGui::Button("Stop test")) quiz_.reset();
+      }
+    }
+  }
+  ImGui::End();
+}
+
+void Studio::draw_word(const ImVec2& pos, const ImVec2& size) {
+  if (begin_panel("Word", pos, size)) {
+    ImGui::PushTextWrapPos(0.0f);
+    if (quiz_ && !quiz_->answered()) {
+      ImGui::TextDisabled("(hidden until you answer)");
+    } else if (learn_word_) {
+      ImGui::Text("%s", learn_word_->gloss.c_str());
+      if (!learn_word_->keywords.empty()) {
+        std::string k;
+        for (const std::string& w : learn_word_->keywords) k += (k.empty() ? "" : ", ") + w;
+        ImGui::TextDisabled("English: %s", k.c_str());
+      }
+      if (!learn_word_->description.empty()) ImGui::Text("%s", learn_word_->description.c_str());
+      ImGui::Separator();
+      ImGui::TextDisabled("notation");
+      ImGui::Text("%s", learn_word_->names.c_str());
+    } else if (quiz_ && quiz_->answered()) {
+      ImGui::Text("%s", quiz_->word().gloss.c_str());
+      if (!quiz_->word().description.empty()) ImGui::Text("%s", quiz_->word().description.c_str());
+      ImGui::TextDisabled("notation");
+      ImGui::Text("%s", quiz_->word().names.c_str());
+    } else if (!learn_title_.empty()) {
+      ImGui::Text("%s", learn_title_.c_str());
+      for (const PerformedGloss& g : learn_glosses_)
+        ImGui::BulletText("%s  (%s)  %.2f-%.2f s", g.gloss.c_str(), g.source.c_str(), g.start, g.end);
+    } else {
+      ImGui::TextDisabled("pick a word or a sentence");
+    }
+    ImGui::PopTextWrapPos();
+    ImGui::Separator();
+    ImGui::TextDisabled("watch");
+    ImGui::Checkbox("two views", &two_views_);
+    ImGui::SameLine();
+    for (const auto& [label, preset] : {std::pair{"side", CameraPreset::Side}, std::pair{"3/4", CameraPreset::ThreeQuarter},
+                                         std::pair{"top", CameraPreset::Top}}) {
+      if (ImGui::RadioButton(label, second_view_ == preset)) second_view_ = preset, rendered_ = false;
+      ImGui::SameLine();
+    }
+    ImGui::NewLine();
+    ImGui::TextDisabled("slow motion, frame by frame: 0.25x / 0.5x, < >, R repeats; drag the left view to see any side");
   }
   ImGui::End();
 }
@@ -805,6 +1066,9 @@ void Studio::shortcuts() {
   if (pressed(GLFW_KEY_F2)) controls_->apply(ViewerCommand::Side);
   if (pressed(GLFW_KEY_F3)) controls_->apply(ViewerCommand::ThreeQuarter);
   if (pressed(GLFW_KEY_F4)) controls_->apply(ViewerCommand::Top);
+  if (pressed(GLFW_KEY_F9)) set_learning(false);
+  if (pressed(GLFW_KEY_F10)) set_learning(true);
+  if (pressed(GLFW_KEY_R) && learning_) controls_->time = 0.0f, controls_->playing = true;
   if (pressed(GLFW_KEY_DELETE) && selected_symbol_ >= 0) model_.remove_symbol(selected_symbol_), selected_symbol_ = -1;
 }
 
@@ -815,6 +1079,15 @@ void Studio::draw_ui() {
   const float w = vp->WorkSize.x, h = vp->WorkSize.y - status_h;
   const float left = std::round(w * 0.2f), right = std::round(w * 0.3f), centre = w - left - right;
   const float problems_h = std::round(h * 0.2f), meta_h = std::round(h * 0.36f), notation_h = std::round(h * 0.26f);
+  if (learning_) {
+    draw_learn({0, top}, {left, h});
+    draw_preview({left, top}, {centre, h});
+    draw_word({left + centre, top}, {right, h});
+    draw_status({0, top + h}, {w, status_h});
+    draw_popups();
+    shortcuts();
+    return;
+  }
   if (visible_[0]) draw_signs({0, top}, {left, h});
   if (visible_[1]) draw_metadata({left + centre, top}, {right, meta_h});
   if (visible_[2]) draw_notation({left + centre, top + meta_h}, {right, notation_h});
@@ -884,6 +1157,18 @@ void Studio::write_dump(const std::string& path) {
   auto& problems = p["problems"] = nlohmann::json::array();
   for (const PreviewProblem& pr : preview_.problems) problems.push_back({{"text", pr.text}, {"symbol", pr.symbol}, {"time", pr.time}});
   j["preview"] = p;
+  nlohmann::json learn{{"active", learning_}, {"title", learn_title_}, {"two_views", two_views_}};
+  learn["topic"] = topics_.empty() ? std::string() : topics_[topic_].name;
+  learn["topics"] = topics_.size();
+  learn["duration"] = animator_->duration();
+  auto& glosses = learn["glosses"] = nlohmann::json::array();
+  for (const PerformedGloss& g : learn_glosses_) glosses.push_back({{"gloss", g.gloss}, {"start", g.start}, {"end", g.end}});
+  if (quiz_) {
+    learn["quiz"] = {{"asked", quiz_->asked()}, {"right", quiz_->right()}, {"choices", quiz_->choices()},
+                     {"answered", quiz_->answered() ? nlohmann::json(*quiz_->answered()) : nlohmann::json()},
+                     {"word", quiz_->word().gloss}};
+  }
+  j["learning"] = learn;
   std::ofstream out(path, std::ios::binary);
   out << j.dump(1) << '\n';
   if (!out) say("cannot write " + path);

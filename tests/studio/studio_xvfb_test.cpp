@@ -227,5 +227,59 @@ TEST(StudioUnderXvfb, BrowsesTheBuiltInLexiconByHandshapeAndShowsEveryPanel) {
   EXPECT_GT(differing, 10);
 }
 
+TEST(StudioUnderXvfb, LearningModePlaysWordsAndSentencesAndScoresTheSelfTest) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
+  TempDir dir;
+  const std::string db = dir.file("user.sqlite"), shots = shot_dir(dir), j = dir.file("");
+  const auto r = run_studio(dir, db, "learn.txt",
+                            "topic greeting\n"
+                            "word HELLO\n"
+                            "wait 1\n"
+                            "dump " + j + "word.json\n"
+                            "sentence Hello, nice to meet you.\n"
+                            "speed 0.5\n"
+                            "time 1.5\n"
+                            "wait 2\n"
+                            "screenshot " + shots + "/studio-learn.png\n"
+                            "dump " + j + "sentence.json\n"
+                            "quiz 5\n"
+                            "wait 1\n"
+                            "dump " + j + "quiz.json\n"
+                            "quit\n");
+  ASSERT_EQ(0, r.status) << r.output;
+  const auto word = read_json(j + "word.json"), sentence = read_json(j + "sentence.json"), quiz = read_json(j + "quiz.json");
+  ASSERT_TRUE(word.is_object() && sentence.is_object() && quiz.is_object());
+  EXPECT_TRUE(word["learning"]["active"].get<bool>());
+  EXPECT_EQ("greeting", word["learning"]["topic"]);
+  ASSERT_EQ(1u, word["learning"]["glosses"].size());
+  EXPECT_EQ("HELLO", word["learning"]["glosses"][0]["gloss"]);
+  // A sentence is several signs, one bar each, in order.
+  const auto& bars = sentence["learning"]["glosses"];
+  ASSERT_GE(bars.size(), 3u) << sentence.dump();
+  EXPECT_EQ("HELLO", bars[0]["gloss"]);
+  for (std::size_t i = 1; i < bars.size(); ++i) EXPECT_GE(bars[i]["start"].get<float>(), bars[i - 1]["start"].get<float>());
+  // The self-test: the right gloss is among the choices, the word is from the topic.
+  const auto& q = quiz["learning"]["quiz"];
+  ASSERT_TRUE(q.is_object()) << quiz.dump();
+  const std::string answer = q["word"];
+  const auto choices = q["choices"].get<std::vector<std::string>>();
+  EXPECT_EQ(4u, choices.size());
+  EXPECT_NE(choices.end(), std::find(choices.begin(), choices.end(), answer));
+
+  // Answering: once wrong, then (next question) right.
+  std::string wrong;
+  for (const std::string& c : choices)
+    if (c != answer) wrong = c;
+  const auto r2 = run_studio(dir, db, "answer.txt",
+                             "topic greeting\nquiz 5\nanswer " + wrong + "\ndump " + j + "a1.json\n");
+  ASSERT_EQ(0, r2.status) << r2.output;
+  const auto a1 = read_json(j + "a1.json");
+  ASSERT_TRUE(a1.is_object());
+  EXPECT_EQ(answer, a1["learning"]["quiz"]["word"]);  // the same seed asks the same word
+  EXPECT_FALSE(a1["learning"]["quiz"]["answered"].get<bool>());
+  EXPECT_EQ(0, a1["learning"]["quiz"]["right"]);
+  EXPECT_NE(std::string::npos, a1["status"].get<std::string>().find("it was " + answer));
+}
+
 }  // namespace
 }  // namespace gestura

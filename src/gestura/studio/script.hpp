@@ -13,6 +13,8 @@
 //   import FILE   export FILE     recover   discard-recovery
 //   screenshot FILE.png           dump FILE.json (the studio's state, for tests)
 //   kill (the process kills itself with SIGKILL, as a crash would)   quit
+//   learning mode: mode learn|edit   topic NAME   word GLOSS   sentence TEXT...   quiz SEED
+//   answer GLOSS   next-question   views one|side|three-quarter|top   speed X
 #include <string>
 #include <vector>
 
