@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -134,6 +135,9 @@ class Studio {
 
   // ---- per frame ----
   void update_preview(Clock::time_point now);
+  void apply_preview(SignPreview result);
+  // A synthesis is running or due (script steps wait for it, so a dump sees the edit's preview).
+  bool preview_busy() const { return pending_.valid() || (!learning_ && model_.revision() != requested_revision_); }
   void render_preview();
   void draw_ui();
   void draw_menu();
@@ -175,7 +179,9 @@ class Studio {
   int selected_symbol_ = -1;
   // preview
   SignPreview preview_;
-  std::uint64_t preview_revision_ = ~0ull;
+  std::uint64_t requested_revision_ = ~0ull;  // the draft revision last sent to synthesis
+  std::uint64_t shown_clip_ = 0;               // counts the clips the preview has shown
+  std::future<SignPreview> pending_;
   int preview_width_ = 0, preview_height_ = 0;  // pixels the preview renders at
   ImVec2 preview_panel_{640, 480};
   bool rendered_ = false;  // what the preview texture shows
@@ -307,6 +313,7 @@ void Studio::accept_recovery(bool restore) {
 
 void Studio::show_clip(const Clip& clip) {
   subject_.clip = clip;
+  ++shown_clip_;
   animator_.emplace(subject_);
   controls_->time = 0.0f;
   controls_->playing = true;
@@ -322,7 +329,7 @@ void Studio::set_learning(bool on) {
     quiz_.reset();
     subject_.clip.reset();
     animator_.emplace(subject_);
-    preview_revision_ = ~0ull;
+    requested_revision_ = ~0ull;
     say("sign editor");
   } else {
     say(topics_.empty() ? "learning mode: no topics (no built-in lexicon)" : "learning mode: pick a topic, a word or a sentence");
@@ -510,16 +517,14 @@ void Studio::execute(const ScriptStep& step) {
 // ---------------------------------------------------------------------------------------------
 // preview
 
-void Studio::update_preview(Clock::time_point now) {
-  if (model_.revision() == preview_revision_) return;
-  if (!edit_time_) edit_time_ = now;
-  preview_revision_ = model_.revision();
-  preview_ = preview_sign(model_.draft(), *rig_);
+void Studio::apply_preview(SignPreview result) {
+  preview_ = std::move(result);
   synthesis_ms_.push_back(preview_.synthesis_ms);
   // Keep the last good clip on screen while the notation does not parse (the error says why).
   if (preview_.clip) {
     subject_.clip = *preview_.clip;
     animator_.emplace(subject_);
+    ++shown_clip_;
     if (!framed_for_sign_) {
       controls_->box = framing_box(subject_.mesh, subject_.skeleton, &*subject_.clip);
       controls_->select(CameraPreset::Front);
@@ -527,6 +532,20 @@ void Studio::update_preview(Clock::time_point now) {
     }
     if (controls_->time > animator_->duration()) controls_->time = 0.0f;
   }
+}
+
+void Studio::update_preview(Clock::time_point now) {
+  if (learning_) return;
+  using namespace std::chrono_literals;
+  if (pending_.valid() && pending_.wait_for(0ms) == std::future_status::ready) apply_preview(pending_.get());
+  if (pending_.valid() || model_.revision() == requested_revision_) return;
+  // Synthesis runs beside the window, so a long or pathological sign never freezes it; the result
+  // replaces the preview when it is ready (edits made meanwhile are synthesized next, the latest only).
+  if (!edit_time_) edit_time_ = now;
+  requested_revision_ = model_.revision();
+  pending_ = std::async(std::launch::async, [draft = model_.draft(), rig = rig_] { return preview_sign(draft, *rig); });
+  // A usual sign is ready within a few tens of milliseconds: show it in this very frame.
+  if (pending_.wait_for(60ms) == std::future_status::ready) apply_preview(pending_.get());
 }
 
 float Studio::flexion_at(float t, char side) {
@@ -562,12 +581,12 @@ void Studio::render_preview() {
     views.push_back(View{preset_camera(second_view_, controls_->box, static_cast<float>(width - left_width) / static_cast<float>(height)),
                          {left_width, 0, width - left_width, height}});
   // A still picture is not drawn again: paused, same camera, same clip, same size.
-  const bool same = rendered_ && rendered_clip_ == preview_revision_ && rendered_time_ == controls_->time &&
+  const bool same = rendered_ && rendered_clip_ == shown_clip_ && rendered_time_ == controls_->time &&
                     rendered_view_ == view.camera.view && rendered_projection_ == view.camera.projection &&
                     rendered_size_ == glm::ivec2(width, height) && rendered_layout_ == (two ? 1 + static_cast<int>(second_view_) : 0);
   if (same) return;
   rendered_layout_ = two ? 1 + static_cast<int>(second_view_) : 0;
-  rendered_ = true, rendered_clip_ = preview_revision_, rendered_time_ = controls_->time;
+  rendered_ = true, rendered_clip_ = shown_clip_, rendered_time_ = controls_->time;
   rendered_view_ = view.camera.view, rendered_projection_ = view.camera.projection, rendered_size_ = glm::ivec2(width, height);
   animator_->pose_at(controls_->time);
   renderer_.render(views, animator_->skinning(), animator_->morph_weights());
@@ -1203,7 +1222,7 @@ int Studio::run() {
     // One script step per frame boundary (after its waits).
     if (wait_frames_ > 0) {
       --wait_frames_;
-    } else if (script_next_ < script_.size()) {
+    } else if (script_next_ < script_.size() && !preview_busy()) {
       const ScriptStep& step = script_[script_next_++];
       try {
         execute(step);
