@@ -19,6 +19,8 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <atomic>
+#include <stop_token>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -27,6 +29,7 @@
 #include "gestura/app/error.hpp"
 #include "gestura/app/lexicon.hpp"
 #include "gestura/app/say.hpp"
+#include "gestura/app/sign.hpp"
 #include "gestura/app/workspace.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/render/camera.hpp"
@@ -137,7 +140,9 @@ class Studio {
   void update_preview(Clock::time_point now);
   void apply_preview(SignPreview result);
   // A synthesis is running or due (script steps wait for it, so a dump sees the edit's preview).
-  bool preview_busy() const { return pending_.valid() || (!learning_ && model_.revision() != requested_revision_); }
+  void start_export(const std::string& path);
+  void finish_export();
+  bool preview_busy() const { return pending_.valid() || export_.valid() || (!learning_ && model_.revision() != requested_revision_); }
   void render_preview();
   void draw_ui();
   void draw_menu();
@@ -182,6 +187,11 @@ class Studio {
   std::uint64_t requested_revision_ = ~0ull;  // the draft revision last sent to synthesis
   std::uint64_t shown_clip_ = 0;               // counts the clips the preview has shown
   std::future<SignPreview> pending_;
+  // export of the performed sign (BVH, glTF, JSON, pictures, video) beside the window
+  std::future<std::string> export_;
+  std::stop_source export_stop_;
+  std::shared_ptr<std::atomic<int>> export_done_ = std::make_shared<std::atomic<int>>(0), export_total_ = std::make_shared<std::atomic<int>>(0);
+  bool show_export_sign_ = false;
   int preview_width_ = 0, preview_height_ = 0;  // pixels the preview renders at
   ImVec2 preview_panel_{640, 480};
   bool rendered_ = false;  // what the preview texture shows
@@ -384,6 +394,49 @@ void Studio::play_sentence(const std::string& text) {
   }
 }
 
+void Studio::start_export(const std::string& path) {
+  if (export_.valid()) {
+    say("an export is already running");
+    return;
+  }
+  if (notation_error(model_.draft())) {
+    say("not exported: the notation does not parse");
+    return;
+  }
+  app::SignRequest request;
+  request.source.names = model_.draft().names;
+  request.output.output = path;
+  request.avatar = request_.avatar;
+  try {
+    app::validate(request);
+  } catch (const std::exception& e) {
+    say(std::string("not exported: ") + e.what());
+    return;
+  }
+  export_stop_ = std::stop_source();
+  *export_done_ = 0, *export_total_ = 0;
+  app::RunContext context;
+  context.workspace = workspace_;
+  context.stop = export_stop_.get_token();
+  context.progress = [done = export_done_, total = export_total_](const app::ProgressUpdate& p) { *done = p.done, *total = p.total; };
+  export_ = std::async(std::launch::async, [request, context]() -> std::string {
+    try {
+      const app::SignResult r = app::run(request, context);
+      return "exported " + r.written.path + " (" + std::to_string(r.written.frames) + " frames)";
+    } catch (const std::exception& e) {
+      const app::ErrorReport report = app::classify(e);
+      return report.category == app::ErrorCategory::cancelled ? std::string("export cancelled, nothing written")
+                                                               : "export failed, nothing written: " + std::string(e.what());
+    }
+  });
+  say("exporting " + path + " ...");
+}
+
+void Studio::finish_export() {
+  using namespace std::chrono_literals;
+  if (export_.valid() && export_.wait_for(0ms) == std::future_status::ready) say(export_.get());
+}
+
 void Studio::execute(const ScriptStep& step) {
   const std::string& a = step.action;
   const auto arg = [&](std::size_t i) { return i < step.args.size() ? step.args[i] : std::string(); };
@@ -506,6 +559,8 @@ void Studio::execute(const ScriptStep& step) {
     rendered_ = false;
   } else if (a == "speed") {
     controls_->speed = std::clamp(std::stof(arg(0)), 0.25f, 2.0f);
+  } else if (a == "export-sign") {
+    start_export(arg(0));
   } else if (a == "kill") {
     std::fflush(nullptr);
     std::raise(SIGKILL);
@@ -613,6 +668,7 @@ void Studio::draw_menu() {
     ImGui::Separator();
     if (ImGui::MenuItem("Import SiGML or JSONL...", nullptr, false, model_.writable())) show_import_ = true;
     if (ImGui::MenuItem("Export SiGML or JSONL...")) show_export_ = true;
+    if (ImGui::MenuItem("Export the sign as motion or video...", nullptr, false, !export_.valid())) show_export_sign_ = true;
     ImGui::Separator();
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) quit_ = true;
     ImGui::EndMenu();
@@ -1017,6 +1073,13 @@ void Studio::draw_status(const ImVec2& pos, const ImVec2& size) {
   ImGui::Begin("##status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  if (export_.valid()) {
+    const int total = *export_total_, done = *export_done_;
+    ImGui::ProgressBar(total > 0 ? static_cast<float>(done) / static_cast<float>(total) : 0.0f, ImVec2(160, 0));
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Cancel export")) export_stop_.request_stop();
+    ImGui::SameLine();
+  }
   ImGui::Text("%s", status().c_str());
   ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 20.0f, size.x - 330.0f));
   ImGui::TextDisabled("%s%s | %s", model_.writable() ? "" : "READ-ONLY ", std::filesystem::path(setup_.user_db).filename().c_str(),
@@ -1051,6 +1114,15 @@ void Studio::draw_popups() {
       if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
       ImGui::EndPopup();
     }
+  }
+  if (show_export_sign_) ImGui::OpenPopup("Export sign"), show_export_sign_ = false;
+  if (ImGui::BeginPopupModal("Export sign", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("The sign as performed: .bvh, .glb, .gltf, .json (joint positions), .png, .gif, .mp4, .webm");
+    ImGui::InputText("file", &io_path_);
+    if (ImGui::Button("Export")) start_export(io_path_), ImGui::CloseCurrentPopup();
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
   }
   if (show_help_) ImGui::OpenPopup("Keys"), show_help_ = false;
   if (ImGui::BeginPopupModal("Keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
@@ -1232,6 +1304,7 @@ int Studio::run() {
         exit_status_ = 1;
       }
     }
+    finish_export();
     const std::size_t syntheses = synthesis_ms_.size();
     update_preview(start);
     controls_->advance(static_cast<float>(std::chrono::duration<double>(start - last).count()), animator_->duration());

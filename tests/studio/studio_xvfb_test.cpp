@@ -227,6 +227,32 @@ TEST(StudioUnderXvfb, BrowsesTheBuiltInLexiconByHandshapeAndShowsEveryPanel) {
   EXPECT_GT(differing, 10);
 }
 
+TEST(StudioUnderXvfb, ExportsTheSignAsPerformedAndRefusesAnUnknownFormat) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
+  TempDir dir;
+  const std::string db = dir.file("user.sqlite"), j = dir.file("");
+  const auto r = run_studio(dir, db, "export.txt",
+                            "new\n"
+                            "set names hamfinger2,hamextfingeru,hampalml,hamchin,hammoveo\n"
+                            "export-sign " + j + "sign.bvh\n"
+                            "dump " + j + "exported.json\n"
+                            "export-sign " + j + "sign.xyz\n"
+                            "dump " + j + "refused.json\n"
+                            "quit\n");
+  ASSERT_EQ(0, r.status) << r.output;
+  const auto exported = read_json(j + "exported.json"), refused = read_json(j + "refused.json");
+  ASSERT_TRUE(exported.is_object() && refused.is_object());
+  EXPECT_NE(std::string::npos, exported["status"].get<std::string>().find("exported")) << exported["status"];
+  std::ifstream bvh(j + "sign.bvh");
+  std::string text((std::istreambuf_iterator<char>(bvh)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(0u, text.find("HIERARCHY"));
+  const auto frames_at = text.find("Frames:");
+  ASSERT_NE(std::string::npos, frames_at);
+  EXPECT_GT(std::stoi(text.substr(frames_at + 7)), 10);
+  EXPECT_NE(std::string::npos, refused["status"].get<std::string>().find("not exported")) << refused["status"];
+  EXPECT_FALSE(fs::exists(j + "sign.xyz"));
+}
+
 TEST(StudioUnderXvfb, LearningModePlaysWordsAndSentencesAndScoresTheSelfTest) {
   if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
   TempDir dir;

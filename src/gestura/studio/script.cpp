@@ -25,7 +25,7 @@ const std::map<std::string, Arity>& actions() {
       {"discard-recovery", {0, 0}}, {"screenshot", {1, 1}}, {"dump", {1, 1}},          {"kill", {0, 0}},
       {"quit", {0, 0}},          {"mode", {1, 1}},          {"topic", {1, 1}},         {"word", {1, 1}},
       {"sentence", {1, 1, true}}, {"quiz", {1, 1}},         {"answer", {1, 1}},        {"next-question", {0, 0}},
-      {"views", {1, 1}},         {"speed", {1, 1}}};
+      {"views", {1, 1}},         {"speed", {1, 1}},         {"export-sign", {1, 1}}};
   return table;
 }
 

@@ -11,6 +11,8 @@
 //   panel NAME                    camera front|side|three-quarter|top
 //   time SECONDS   play   pause   wait FRAMES
 //   import FILE   export FILE     recover   discard-recovery
+//   export-sign FILE (.bvh .glb .gltf .json .png .gif .mp4 .webm: the sign as performed; the next
+//   step waits until it is written)
 //   screenshot FILE.png           dump FILE.json (the studio's state, for tests)
 //   kill (the process kills itself with SIGKILL, as a crash would)   quit
 //   learning mode: mode learn|edit   topic NAME   word GLOSS   sentence TEXT...   quiz SEED
