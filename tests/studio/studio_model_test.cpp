@@ -294,3 +294,73 @@ TEST(StudioLearning, TheQuizAsksWordsOfTheTopicAndCountsRightAnswers) {
 
 }  // namespace
 }  // namespace gestura::studio
+
+#include "gestura/studio/pose_editor.hpp"
+
+namespace gestura::studio {
+namespace {
+
+Skeleton two_arms() {
+  Skeleton s;
+  const int root = s.add_joint("humanoid_root", -1, vec3(0.0f));
+  for (const char* side : {"l", "r"}) {
+    const float x = side[0] == 'l' ? 0.2f : -0.2f;
+    const int shoulder = s.add_joint(std::string(side) + "_shoulder", root, vec3(x, 1.4f, 0.0f));
+    const int elbow = s.add_joint(std::string(side) + "_elbow", shoulder, vec3(0.0f, -0.3f, 0.0f));
+    s.add_joint(std::string(side) + "_wrist", elbow, vec3(0.0f, -0.25f, 0.0f));
+    s.dofs[shoulder] = JointDofs{RotationOrder::XYZ, 7, vec3(deg(-90.0f)), vec3(deg(90.0f))};
+    s.dofs[elbow] = JointDofs{RotationOrder::XYZ, 3, vec3(deg(-150.0f), deg(-90.0f), 0.0f), vec3(0.0f, deg(90.0f), 0.0f)};
+  }
+  return s;
+}
+
+TEST(StudioPoseEditor, AnglesStayInsideTheJointLimitsAndUndoRestores) {
+  const Skeleton s = two_arms();
+  PoseEditor editor(s, {"smile_l", "smile_r"});
+  const int elbow = s.find("r_elbow");
+  ASSERT_TRUE(editor.set_angles_degrees(elbow, vec3(-60.0f, 30.0f, 45.0f)));
+  EXPECT_NEAR(-60.0f, editor.angles_degrees(elbow).x, 0.01f);
+  EXPECT_NEAR(30.0f, editor.angles_degrees(elbow).y, 0.01f);
+  EXPECT_NEAR(0.0f, editor.angles_degrees(elbow).z, 0.01f);  // a locked axis stays at 0
+  ASSERT_TRUE(editor.set_angles_degrees(elbow, vec3(-200.0f, 0.0f, 0.0f)));
+  EXPECT_NEAR(-150.0f, editor.angles_degrees(elbow).x, 0.01f);  // clamped to the limit
+  EXPECT_EQ(1, editor.pivot_axis(elbow));  // the forearm lies along y
+  EXPECT_EQ(0, editor.bend_axis(elbow));
+  EXPECT_FALSE(editor.set_angles_degrees(s.find("r_wrist"), vec3(10.0f)));  // no free axis
+  ASSERT_TRUE(editor.undo());
+  EXPECT_NEAR(-60.0f, editor.angles_degrees(elbow).x, 0.01f);
+  ASSERT_TRUE(editor.undo());
+  EXPECT_NEAR(0.0f, editor.angles_degrees(elbow).x, 0.01f);
+  EXPECT_FALSE(editor.undo());
+  ASSERT_TRUE(editor.redo());
+  EXPECT_NEAR(-60.0f, editor.angles_degrees(elbow).x, 0.01f);
+}
+
+TEST(StudioPoseEditor, MirroringMovesTheRightArmsPoseToTheLeftReflected) {
+  const Skeleton s = two_arms();
+  PoseEditor editor(s, {"smile_l", "smile_r"});
+  editor.set_angles_degrees(s.find("r_shoulder"), vec3(-40.0f, 20.0f, 30.0f));
+  editor.set_morph(1, 0.8f);
+  editor.mirror();
+  std::vector<mat4> model(s.size());
+  editor.model(model);
+  const vec3 left_wrist = vec3(model[s.find("l_wrist")][3]), right_wrist = vec3(model[s.find("r_wrist")][3]);
+  // The left wrist is where the right one was, reflected in x = 0; the right arm is at rest.
+  PoseEditor reference(s, {});
+  reference.set_angles_degrees(s.find("r_shoulder"), vec3(-40.0f, 20.0f, 30.0f));
+  std::vector<mat4> ref(s.size());
+  reference.model(ref);
+  const vec3 was = vec3(ref[s.find("r_wrist")][3]);
+  EXPECT_NEAR(-was.x, left_wrist.x, 1e-4f);
+  EXPECT_NEAR(was.y, left_wrist.y, 1e-4f);
+  EXPECT_NEAR(was.z, left_wrist.z, 1e-4f);
+  EXPECT_NEAR(-0.2f, right_wrist.x, 1e-4f);
+  EXPECT_NEAR(0.8f, editor.morph_weights()[0], 1e-6f);
+  EXPECT_NEAR(0.0f, editor.morph_weights()[1], 1e-6f);
+  EXPECT_TRUE(is_hand_joint("r_index2", 'r'));
+  EXPECT_FALSE(is_hand_joint("r_index2", 'l'));
+  EXPECT_FALSE(is_hand_joint("r_wrist", 'r'));
+}
+
+}  // namespace
+}  // namespace gestura::studio
