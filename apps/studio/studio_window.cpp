@@ -43,6 +43,7 @@
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/studio/learning.hpp"
 #include "gestura/studio/palette.hpp"
+#include "gestura/studio/pose_editor.hpp"
 #include "gestura/studio/recovery.hpp"
 #include "gestura/studio/script.hpp"
 #include "gestura/studio/sign_preview.hpp"
@@ -84,6 +85,14 @@ class Studio {
     renderer_.upload(subject_.mesh);
     renderer_.set_occluders(find_occluders(subject_.skeleton, subject_.mesh));
     controls_.emplace(framing_box(subject_.mesh, subject_.skeleton), CameraPreset::Front, 1.0f);
+    std::vector<std::string> morph_names;
+    for (const MorphTarget& m : subject_.mesh.morphs) morph_names.push_back(m.name);
+    pose_editor_.emplace(subject_.skeleton, morph_names);
+    pose_model_.resize(subject_.skeleton.size());
+    pose_skinning_.resize(subject_.skeleton.size());
+    inverse_bind_.resize(subject_.skeleton.size());
+    local_to_model(subject_.skeleton, rest_pose(subject_.skeleton), inverse_bind_);
+    for (mat4& m : inverse_bind_) m = glm::inverse(m);
     controls_->loop = true;
 
     IMGUI_CHECKVERSION();
@@ -129,6 +138,11 @@ class Studio {
   void palette_click(sign::Symbol symbol);
   void set_field(const std::string& field, const std::string& value);
   void set_learning(bool on);
+  void set_posing(bool on);
+  void pose_hand(char side, sign::Symbol handshape);
+  void draw_skeleton(const ImVec2& pos, const ImVec2& size);
+  void draw_joint(const ImVec2& pos, const ImVec2& size);
+  void draw_skeleton_node(int joint, const std::vector<std::vector<int>>& children);
   void select_topic(const std::string& name);
   void play_word(const LessonWord& word, bool reveal);
   void play_sentence(const std::string& text);
@@ -230,6 +244,11 @@ class Studio {
   std::vector<PerformedGloss> learn_glosses_;  // a sentence's signs, as bars on the timeline
   std::optional<Quiz> quiz_;
   bool two_views_ = true;
+  // pose mode
+  bool posing_ = false;
+  std::optional<PoseEditor> pose_editor_;
+  int pose_joint_ = -1;
+  std::vector<mat4> pose_model_, pose_skinning_, inverse_bind_;
   bool orbited_ = false;  // the learner moved the left view's camera
   CameraPreset second_view_ = CameraPreset::Side;
   std::uint64_t frame_ = 0;
@@ -331,6 +350,7 @@ void Studio::show_clip(const Clip& clip) {
 }
 
 void Studio::set_learning(bool on) {
+  if (on && posing_) posing_ = false, rendered_ = false;
   if (on == learning_) return;
   learning_ = on;
   rendered_ = false;
@@ -344,6 +364,45 @@ void Studio::set_learning(bool on) {
   } else {
     say(topics_.empty() ? "learning mode: no topics (no built-in lexicon)" : "learning mode: pick a topic, a word or a sentence");
   }
+}
+
+void Studio::set_posing(bool on) {
+  if (on == posing_) return;
+  if (on) set_learning(false);
+  posing_ = on;
+  rendered_ = false;
+  say(on ? "pose editor: pick a joint in the tree or click it in the view" : "sign editor");
+}
+
+void Studio::pose_hand(char side, sign::Symbol handshape) {
+  // The handshape as the sign pipeline forms it: a short sign performed, the hand read at its middle.
+  SignDraft d;
+  d.names = std::string(sign::symbol_name(handshape)) + ",hamextfingeru,hampalml,hamneutralspace";
+  const SignPreview p = preview_sign(d, *rig_);
+  if (!p.clip) {
+    say("cannot form " + std::string(sign::symbol_name(handshape)));
+    return;
+  }
+  RenderSubject hand{subject_.skeleton, Mesh{}, *p.clip};
+  Animator animator(hand);
+  animator.pose_at(0.5f * (p.sign_start + p.sign_end));
+  const auto model = animator.model();
+  Pose source = pose_editor_->pose();
+  for (std::size_t j = 0; j < hand.skeleton.size(); ++j) {
+    const int parent = hand.skeleton.parents[j];
+    const mat4 local = parent < 0 ? model[j] : glm::inverse(model[parent]) * model[j];
+    const mat3 r(glm::normalize(vec3(local[0])), glm::normalize(vec3(local[1])), glm::normalize(vec3(local[2])));
+    source.rotations[j] = glm::normalize(glm::quat_cast(r));
+  }
+  // The non-dominant hand of a one-handed sign rests: form the left hand by mirroring the right's.
+  if (side == 'l') {
+    PoseEditor mirrored(subject_.skeleton, {});
+    mirrored.set_hand('r', source);
+    mirrored.mirror();
+    source = mirrored.pose();
+  }
+  pose_editor_->set_hand(side, source);
+  say(std::string(side == 'r' ? "right" : "left") + " hand: " + std::string(short_name(handshape)));
 }
 
 void Studio::select_topic(const std::string& name) {
@@ -461,6 +520,28 @@ void Studio::execute(const ScriptStep& step) {
     if (model_.save()) refresh_browse();
   } else if (a == "delete") {
     if (model_.remove()) refresh_browse();
+  } else if (a == "undo" && posing_) {
+    say(pose_editor_->undo() ? "undid the pose edit" : "nothing to undo");
+  } else if (a == "redo" && posing_) {
+    say(pose_editor_->redo() ? "redid the pose edit" : "nothing to redo");
+  } else if (a == "pose-joint") {
+    set_posing(true);
+    pose_joint_ = subject_.skeleton.find(arg(0));
+    if (pose_joint_ < 0) say("no joint " + arg(0));
+  } else if (a == "pose-angles") {
+    const vec3 d(std::stof(arg(0)), std::stof(arg(1)), std::stof(arg(2)));
+    if (!pose_editor_->set_angles_degrees(pose_joint_, d)) say("joint cannot turn (none selected, or no free axis)");
+  } else if (a == "pose-hand") {
+    const auto symbol = sign::symbol_from_name(arg(1));
+    if (!symbol || sign::symbol_class(*symbol) != sign::SymbolClass::handshape) say("'" + arg(1) + "' is not a handshape");
+    else pose_hand(arg(0) == "l" ? 'l' : 'r', *symbol);
+  } else if (a == "pose-mirror") {
+    pose_editor_->mirror();
+  } else if (a == "pose-morph") {
+    const auto& names = pose_editor_->morph_names();
+    const auto it = std::find(names.begin(), names.end(), arg(0));
+    if (it == names.end()) say("no face channel " + arg(0));
+    else pose_editor_->set_morph(static_cast<std::size_t>(it - names.begin()), std::stof(arg(1)));
   } else if (a == "undo") {
     model_.undo();
     refresh_browse();
@@ -525,7 +606,8 @@ void Studio::execute(const ScriptStep& step) {
     write_dump(arg(0));
   } else if (a == "mode") {
     if (arg(0) == "learn") set_learning(true);
-    else if (arg(0) == "edit") set_learning(false);
+    else if (arg(0) == "edit") set_learning(false), set_posing(false);
+    else if (arg(0) == "pose") set_posing(true);
     else say("no mode '" + arg(0) + "' (learn, edit)");
   } else if (a == "topic") {
     set_learning(true);
@@ -618,6 +700,7 @@ void Studio::render_preview() {
     preview_width_ = width, preview_height_ = height;
   }
   const bool two = learning_ && two_views_;
+  if (posing_) rendered_ = false;  // the pose changes under the sliders: draw every frame
   const int left_width = two ? width / 2 : width;
   controls_->aspect = static_cast<float>(left_width) / static_cast<float>(height);
   // Two narrow views: the left one is the front framing fitted to its width until the learner orbits.
@@ -643,6 +726,12 @@ void Studio::render_preview() {
   rendered_layout_ = two ? 1 + static_cast<int>(second_view_) : 0;
   rendered_ = true, rendered_clip_ = shown_clip_, rendered_time_ = controls_->time;
   rendered_view_ = view.camera.view, rendered_projection_ = view.camera.projection, rendered_size_ = glm::ivec2(width, height);
+  if (posing_) {
+    pose_editor_->model(pose_model_);
+    for (std::size_t j = 0; j < pose_model_.size(); ++j) pose_skinning_[j] = pose_model_[j] * inverse_bind_[j];
+    renderer_.render(views, pose_skinning_, pose_editor_->morph_weights());
+    return;
+  }
   animator_->pose_at(controls_->time);
   renderer_.render(views, animator_->skinning(), animator_->morph_weights());
 }
@@ -686,8 +775,9 @@ void Studio::draw_menu() {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Mode")) {
-    if (ImGui::MenuItem("Sign editor", "F9", !learning_)) set_learning(false);
+    if (ImGui::MenuItem("Sign editor", "F9", !learning_ && !posing_)) set_learning(false), set_posing(false);
     if (ImGui::MenuItem("Learning", "F10", learning_)) set_learning(true);
+    if (ImGui::MenuItem("Pose editor", "F11", posing_)) set_posing(true);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
@@ -889,6 +979,19 @@ void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(renderer_.resolved_texture())), avail,
                  ImVec2(0, static_cast<float>(preview_height_) / static_cast<float>(std::max(1, renderer_.height()))),
                  ImVec2(static_cast<float>(preview_width_) / static_cast<float>(std::max(1, renderer_.width())), 0));
+    if (posing_ && ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
+      // Pick the joint nearest to the click, as the camera projects it.
+      const ImVec2 origin = ImGui::GetItemRectMin(), m = ImGui::GetIO().MousePos;
+      const Camera camera = controls_->camera(controls_->aspect);
+      float best = 400.0f;  // 20 px
+      for (std::size_t j = 0; j < pose_model_.size(); ++j) {
+        const vec4 clip = camera.projection * camera.view * vec4(vec3(pose_model_[j][3]), 1.0f);
+        if (clip.w <= 0.0f) continue;
+        const float x = origin.x + (clip.x / clip.w * 0.5f + 0.5f) * avail.x, y = origin.y + (0.5f - clip.y / clip.w * 0.5f) * avail.y;
+        const float d = (x - m.x) * (x - m.x) + (y - m.y) * (y - m.y);
+        if (d < best) best = d, pose_joint_ = static_cast<int>(j);
+      }
+    }
     if (ImGui::IsItemHovered()) {
       const ImGuiIO& io = ImGui::GetIO();
       if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) controls_->orbit_drag(io.MouseDelta.x, io.MouseDelta.y), orbited_ = true;
@@ -1067,6 +1170,90 @@ void Studio::draw_word(const ImVec2& pos, const ImVec2& size) {
   ImGui::End();
 }
 
+void Studio::draw_skeleton_node(int joint, const std::vector<std::vector<int>>& children) {
+  const auto& kids = children[static_cast<std::size_t>(joint)];
+  ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_DefaultOpen;
+  if (kids.empty()) flags |= ImGuiTreeNodeFlags_Leaf;
+  if (joint == pose_joint_) flags |= ImGuiTreeNodeFlags_Selected;
+  const bool open = ImGui::TreeNodeEx(reinterpret_cast<void*>(static_cast<std::intptr_t>(joint)), flags, "%s",
+                                      subject_.skeleton.names[joint].c_str());
+  if (ImGui::IsItemClicked()) pose_joint_ = joint;
+  if (open) {
+    for (const int c : kids) draw_skeleton_node(c, children);
+    ImGui::TreePop();
+  }
+}
+
+void Studio::draw_skeleton(const ImVec2& pos, const ImVec2& size) {
+  if (begin_panel("Skeleton", pos, size)) {
+    const Skeleton& s = subject_.skeleton;
+    std::vector<std::vector<int>> children(s.size());
+    for (std::size_t j = 0; j < s.size(); ++j)
+      if (s.parents[j] >= 0) children[static_cast<std::size_t>(s.parents[j])].push_back(static_cast<int>(j));
+    ImGui::PushStyleVar(ImGuiStyleVar_IndentSpacing, 7.0f);  // a deep tree (root to fingertip) stays readable
+    for (std::size_t j = 0; j < s.size(); ++j)
+      if (s.parents[j] < 0) draw_skeleton_node(static_cast<int>(j), children);
+    ImGui::PopStyleVar();
+  }
+  ImGui::End();
+}
+
+void Studio::draw_joint(const ImVec2& pos, const ImVec2& size) {
+  if (begin_panel("Joint", pos, size)) {
+    const Skeleton& s = subject_.skeleton;
+    if (pose_joint_ >= 0 && pose_joint_ < static_cast<int>(s.size())) {
+      const JointDofs& dofs = s.dofs[pose_joint_];
+      ImGui::Text("%s  (%d degrees of freedom, order %s)", s.names[pose_joint_].c_str(), dofs.count(),
+                  std::string(to_string(dofs.order)).c_str());
+      vec3 angles = pose_editor_->angles_degrees(pose_joint_);
+      const int bend = pose_editor_->bend_axis(pose_joint_), pivot = pose_editor_->pivot_axis(pose_joint_);
+      bool changed = false;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (!dofs.free(axis)) continue;
+        char label[48];
+        std::snprintf(label, sizeof label, "%s (%c)", axis == bend ? "bend" : axis == pivot ? "pivot" : "turn", "xyz"[axis]);
+        changed |= ImGui::SliderFloat(label, &angles[axis], glm::degrees(dofs.min_angle[axis]), glm::degrees(dofs.max_angle[axis]), "%.1f deg");
+        if (ImGui::IsItemDeactivatedAfterEdit()) pose_editor_->seal();
+      }
+      if (changed) pose_editor_->set_angles_degrees(pose_joint_, angles, "joint:" + std::to_string(pose_joint_));
+      if (dofs.count() == 0) ImGui::TextDisabled("this joint does not turn (no free axis)");
+    } else {
+      ImGui::TextDisabled("pick a joint in the tree or click it in the view");
+    }
+    ImGui::Separator();
+    if (ImGui::Button("Mirror left/right")) pose_editor_->mirror();
+    ImGui::SameLine();
+    if (ImGui::Button("Reset")) pose_editor_->reset();
+    ImGui::SameLine();
+    if (ImGui::Button("Undo")) pose_editor_->undo();
+    ImGui::SameLine();
+    if (ImGui::Button("Redo")) pose_editor_->redo();
+    if (ImGui::CollapsingHeader("Handshape presets", ImGuiTreeNodeFlags_DefaultOpen)) {
+      for (const char side : {'r', 'l'}) {
+        ImGui::TextDisabled("%s hand", side == 'r' ? "right" : "left");
+        const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+        bool first = true;
+        for (const sign::Symbol h : palette_groups()[0].symbols) {
+          const std::string label = std::string(short_name(h)) + "##" + side;
+          const float w = ImGui::CalcTextSize(label.c_str(), nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
+          if (!first && ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + w < right) ImGui::SameLine();
+          first = false;
+          if (ImGui::SmallButton(label.c_str())) pose_hand(side, h);
+        }
+      }
+    }
+    if (ImGui::CollapsingHeader("Face channels")) {
+      const auto& names = pose_editor_->morph_names();
+      for (std::size_t i = 0; i < names.size(); ++i) {
+        float w = pose_editor_->morph_weights()[i];
+        if (ImGui::SliderFloat(names[i].c_str(), &w, 0.0f, 1.0f)) pose_editor_->set_morph(i, w, "morph:" + names[i]);
+        if (ImGui::IsItemDeactivatedAfterEdit()) pose_editor_->seal();
+      }
+    }
+  }
+  ImGui::End();
+}
+
 void Studio::draw_status(const ImVec2& pos, const ImVec2& size) {
   ImGui::SetNextWindowPos(pos, ImGuiCond_Always);
   ImGui::SetNextWindowSize(size, ImGuiCond_Always);
@@ -1138,6 +1325,11 @@ void Studio::shortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
   const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
   if (io.KeyCtrl) {
+    if (posing_) {
+      if (pressed(GLFW_KEY_Z) && !io.KeyShift) pose_editor_->undo();
+      if (pressed(GLFW_KEY_Y) || (pressed(GLFW_KEY_Z) && io.KeyShift)) pose_editor_->redo();
+      return;
+    }
     if (pressed(GLFW_KEY_Z) && !io.KeyShift) model_.undo(), message_.clear(), refresh_browse();
     if (pressed(GLFW_KEY_Y) || (pressed(GLFW_KEY_Z) && io.KeyShift)) model_.redo(), message_.clear(), refresh_browse();
     if (pressed(GLFW_KEY_S)) {
@@ -1157,7 +1349,8 @@ void Studio::shortcuts() {
   if (pressed(GLFW_KEY_F2)) controls_->apply(ViewerCommand::Side);
   if (pressed(GLFW_KEY_F3)) controls_->apply(ViewerCommand::ThreeQuarter);
   if (pressed(GLFW_KEY_F4)) controls_->apply(ViewerCommand::Top);
-  if (pressed(GLFW_KEY_F9)) set_learning(false);
+  if (pressed(GLFW_KEY_F9)) set_learning(false), set_posing(false);
+  if (pressed(GLFW_KEY_F11)) set_posing(true);
   if (pressed(GLFW_KEY_F10)) set_learning(true);
   if (pressed(GLFW_KEY_R) && learning_) controls_->time = 0.0f, controls_->playing = true;
   if (pressed(GLFW_KEY_DELETE) && selected_symbol_ >= 0) model_.remove_symbol(selected_symbol_), selected_symbol_ = -1;
@@ -1170,6 +1363,15 @@ void Studio::draw_ui() {
   const float w = vp->WorkSize.x, h = vp->WorkSize.y - status_h;
   const float left = std::round(w * 0.2f), right = std::round(w * 0.3f), centre = w - left - right;
   const float problems_h = std::round(h * 0.2f), meta_h = std::round(h * 0.36f), notation_h = std::round(h * 0.26f);
+  if (posing_) {
+    draw_skeleton({0, top}, {left, h});
+    draw_preview({left, top}, {centre, h});
+    draw_joint({left + centre, top}, {right, h});
+    draw_status({0, top + h}, {w, status_h});
+    draw_popups();
+    shortcuts();
+    return;
+  }
   if (learning_) {
     draw_learn({0, top}, {left, h});
     draw_preview({left, top}, {centre, h});
@@ -1260,6 +1462,18 @@ void Studio::write_dump(const std::string& path) {
                      {"word", quiz_->word().gloss}};
   }
   j["learning"] = learn;
+  if (posing_) {
+    std::vector<mat4> model(subject_.skeleton.size());
+    pose_editor_->model(model);
+    nlohmann::json pose{{"joint", pose_joint_ >= 0 ? subject_.skeleton.names[pose_joint_] : std::string()},
+                        {"flexion_right", finger_flexion_degrees(subject_.skeleton, model, 'r')},
+                        {"flexion_left", finger_flexion_degrees(subject_.skeleton, model, 'l')}};
+    if (pose_joint_ >= 0) {
+      const vec3 a = pose_editor_->angles_degrees(pose_joint_);
+      pose["angles"] = {a.x, a.y, a.z};
+    }
+    j["pose"] = pose;
+  }
   std::ofstream out(path, std::ios::binary);
   out << j.dump(1) << '\n';
   if (!out) say("cannot write " + path);

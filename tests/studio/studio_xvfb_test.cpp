@@ -253,6 +253,45 @@ TEST(StudioUnderXvfb, ExportsTheSignAsPerformedAndRefusesAnUnknownFormat) {
   EXPECT_FALSE(fs::exists(j + "sign.xyz"));
 }
 
+TEST(StudioUnderXvfb, ThePoseEditorKeepsJointsInTheirLimitsFormsHandsAndMirrors) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
+  TempDir dir;
+  const std::string db = dir.file("user.sqlite"), shots = shot_dir(dir), j = dir.file("");
+  const auto r = run_studio(dir, db, "pose.txt",
+                            "mode pose\n"
+                            "pose-joint r_elbow\n"
+                            "pose-angles -300 0 0\n"
+                            "dump " + j + "limit.json\n"
+                            "pose-joint r_shoulder\n"
+                            "pose-angles -60 0 40\n"
+                            "pose-hand r hamfist\n"
+                            "dump " + j + "fist.json\n"
+                            "pose-mirror\n"
+                            "wait 1\n"
+                            "screenshot " + shots + "/studio-pose.png\n"
+                            "dump " + j + "mirrored.json\n"
+                            "undo\n"
+                            "dump " + j + "undone.json\n"
+                            "quit\n");
+  ASSERT_EQ(0, r.status) << r.output;
+  const auto limit = read_json(j + "limit.json"), fist = read_json(j + "fist.json"), mirrored = read_json(j + "mirrored.json"),
+             undone = read_json(j + "undone.json");
+  ASSERT_TRUE(limit.is_object() && fist.is_object() && mirrored.is_object() && undone.is_object());
+  // The elbow asked to bend 300 degrees stops at its limit (a real elbow bends less than 160).
+  const float elbow = limit["pose"]["angles"][0];
+  EXPECT_GT(elbow, -160.0f);
+  EXPECT_LT(elbow, -90.0f);
+  // A fist preset bends the right fingers; mirroring moves pose and hand to the left.
+  const float right = fist["pose"]["flexion_right"], left = fist["pose"]["flexion_left"];
+  EXPECT_GT(right, left + 150.0f);
+  EXPECT_NEAR(right, mirrored["pose"]["flexion_left"].get<float>(), 1.0f);
+  EXPECT_NEAR(left, mirrored["pose"]["flexion_right"].get<float>(), 1.0f);
+  EXPECT_NEAR(0.0f, mirrored["pose"]["angles"][0].get<float>(), 0.01f);  // the right shoulder is at rest now
+  // Undo brings the pose before the mirror back.
+  EXPECT_NEAR(right, undone["pose"]["flexion_right"].get<float>(), 1.0f);
+  EXPECT_NEAR(-60.0f, undone["pose"]["angles"][0].get<float>(), 0.01f);
+}
+
 TEST(StudioUnderXvfb, LearningModePlaysWordsAndSentencesAndScoresTheSelfTest) {
   if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
   TempDir dir;

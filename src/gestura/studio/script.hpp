@@ -17,6 +17,8 @@
 //   kill (the process kills itself with SIGKILL, as a crash would)   quit
 //   learning mode: mode learn|edit   topic NAME   word GLOSS   sentence TEXT...   quiz SEED
 //   answer GLOSS   next-question   views one|side|three-quarter|top   speed X
+//   pose editor: mode pose   pose-joint NAME   pose-angles X Y Z (degrees)   pose-hand r|l HANDSHAPE
+//   pose-mirror   pose-morph NAME WEIGHT   (undo / redo act on the pose in pose mode)
 #include <string>
 #include <vector>
 
