@@ -233,6 +233,7 @@ class Studio {
   int wait_frames_ = 0;
   std::string pending_screenshot_;
   bool quit_ = false;
+  bool screenshot_then_quit_ = false;  // --screenshot with a script: taken after the script's last step
   int exit_status_ = 0;
   std::string message_;  // overrides the model's status until the next model action
   // learning mode
@@ -1569,8 +1570,13 @@ int Studio::run() {
                    synthesis_ms_.size() > syntheses ? synthesis_ms_.back() : 0.0, latency, preview_width_, preview_height_);
     ++frame_;
     if (last_frame) break;
-    if (script_next_ >= script_.size() && !script_.empty() && request_.frames == 0 && wait_frames_ == 0 && pending_screenshot_.empty())
-      break;  // a script without quit ends the run when it is done
+    if (script_next_ >= script_.size() && !script_.empty() && request_.frames == 0 && wait_frames_ == 0 &&
+        pending_screenshot_.empty() && !preview_busy()) {
+      // A script without quit ends the run when it is done (with --screenshot: after one more frame, taken then).
+      if (request_.screenshot.empty() || screenshot_then_quit_) break;
+      pending_screenshot_ = request_.screenshot;
+      screenshot_then_quit_ = true;
+    }
   }
   if (log) std::fclose(log);
   if (!request_.frame_log.empty() && !frame_ms.empty()) {
