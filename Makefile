@@ -14,7 +14,7 @@ FUZZ_SECONDS ?= 60
 SANITIZER_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
                  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
 
-.PHONY: run test build build-cli deps bench bench-anchors legibility coverage clean fuzz fuzz-smoke test-asan
+.PHONY: run test build build-cli deps bench bench-studio bench-anchors legibility coverage clean fuzz fuzz-smoke test-asan
 
 deps:
 	@scripts/setup-deps.sh
@@ -55,6 +55,11 @@ bench: build
 coverage: build-cli
 	@python3 tools/coverage.py --gestura $(BIN)/gestura
 	@python3 tools/coverage.py --gestura $(BIN)/gestura --sentences data/eval/heldout-sentences.txt --quiet
+
+# The studio's frame time and edit-to-preview latency at 1280x800 under Xvfb (docs/benchmarks.md, "Studio").
+bench-studio: build-cli
+	@db=$$(mktemp -d)/bench.sqlite; xvfb-run -a -s '-screen 0 1400x900x24' $(BIN)/gestura studio $$db --size 1280x800 \
+	  --script bench/studio/frame-time.script --frame-log $$(dirname $$db)/frames.tsv $(ARGS); rm -rf $$(dirname $$db)
 
 # MediaPipe Holistic on rendered signs (minutes: ~5-10 s per frame); not part of make test.
 # LEGIBILITY_ARGS passes options, e.g. LEGIBILITY_ARGS="--size 640x360 --step 3 house".

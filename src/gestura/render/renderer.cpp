@@ -662,6 +662,8 @@ PixelRect Renderer::covered_rect(std::span<const View> views, std::span<const ma
   return all;
 }
 
+unsigned Renderer::resolved_texture() const { return gl_->resolve_color; }
+
 void Renderer::read_pixels(Image& out) { read_framebuffer(gl_->resolve_fbo, width_, height_, out); }
 
 void Renderer::read_window_pixels(Image& out, int framebuffer_width, int framebuffer_height) {
