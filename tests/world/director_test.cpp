@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "gestura/anim/sampler.hpp"
+#include "gestura/body/skinning.hpp"
 #include "gestura/render/scene_render_job.hpp"
 #include "gestura/world/director.hpp"
 #include "gestura/world/scene_json.hpp"
@@ -158,6 +159,73 @@ TEST(Director, PerformsTheIssuesScriptOpensTheDoorWarnsOfNoPathAndRenders) {
       if (px[0] < 70 && px[1] < 70 && px[2] < 90) ++dark;
     }
   EXPECT_GT(dark, 80) << "no figure in the frame";
+}
+
+}  // namespace
+
+namespace {
+
+// A cup in the middle of a table's near half: out of the arm's reach from where she can stand, so
+// she bends over the table, and her hand closes on the cup without a "stops short" warning.
+TEST(Director, TakesACupFromATableByBendingOverIt) {
+  Scene scene = parse_scene(R"({
+    "objects": [
+      {"name": "floor", "shape": "box", "size": [6, 0.1, 6], "position": [0, -0.05, 0]},
+      {"name": "table", "parts": [
+        {"shape": "box", "size": [1.3, 0.05, 0.8], "position": [0, 0.735, 0]},
+        {"shape": "box", "size": [0.06, 0.71, 0.06], "position": [0.58, 0.355, 0.33]},
+        {"shape": "box", "size": [0.06, 0.71, 0.06], "position": [-0.58, 0.355, 0.33]},
+        {"shape": "box", "size": [0.06, 0.71, 0.06], "position": [0.58, 0.355, -0.33]},
+        {"shape": "box", "size": [0.06, 0.71, 0.06], "position": [-0.58, 0.355, -0.33]}], "position": [0, 0, 0]},
+      {"name": "cup", "shape": "cylinder", "radius": 0.035, "height": 0.1, "position": [0.1, 0.81, 0.2]}
+    ],
+    "characters": [{"name": "anna", "sex": "female", "height": 1.65, "position": [0.2, 2.0], "facing": 180}]
+  })", "table.json");
+  const SceneGeometry geometry = build_scene_geometry(scene);
+  const ScenePerformance performance = perform_scene(scene, geometry, parse_script("anna takes the cup", "script.txt"));
+  float reach = -1.0f;
+  const char* hand = "r_middle2";
+  for (const LogEntry& e : performance.log) {
+    if (e.text.find("cup with the left") != std::string::npos) hand = "l_middle2";
+    std::printf("%6.2f %s%s\n", e.time, e.warning ? "warning: " : "", e.text.c_str());
+    EXPECT_FALSE(e.warning) << e.text;
+    if (e.text.find("cup with the") != std::string::npos) reach = e.time;
+  }
+  ASSERT_GT(reach, 0.0f);
+  const PerformedCharacter& anna = performance.characters.at(0);
+  const auto before = posed(anna, reach), holding = posed(anna, reach + PerformOptions{}.reach_seconds + 0.05f);
+  EXPECT_LT(glm::length(joint(anna, holding, hand) - vec3(0.1f, 0.81f, 0.2f)), 0.08f) << "the hand is not at the cup";
+  // She bent over: her head came down and forward, toward the table.
+  const vec3 head_up = joint(anna, before, "skullbase"), head_down = joint(anna, holding, "skullbase");
+  EXPECT_LT(head_down.y, head_up.y - 0.05f);
+  // Her feet stayed on the floor.
+  EXPECT_LT(std::abs(joint(anna, holding, "l_ankle").y - joint(anna, before, "l_ankle").y), 0.01f);
+
+  // Bending over it, no skin goes more than 1 cm into the table (the fingers meet the cup).
+  const Avatar& a = *anna.avatar;
+  std::vector<mat4> inverse_bind(a.skeleton.size()), skinning(a.skeleton.size());
+  {
+    std::vector<mat4> bind(a.skeleton.size());
+    local_to_model(a.skeleton, rest_pose(a.skeleton), bind);
+    for (std::size_t j = 0; j < bind.size(); ++j) inverse_bind[j] = glm::inverse(bind[j]);
+  }
+  Environment table = build_environment(geometry);
+  std::erase_if(table.primitives, [&](const WorldPrimitive& w) { return w.object != geometry.find_object("table"); });
+  std::vector<vec3> skin(a.mesh.vertex_count());
+  float deepest = 0.0f, when = 0.0f;
+  vec3 where(0.0f);
+  std::string bone;
+  for (float t = reach; t <= reach + 2.5f; t += 0.1f) {
+    skinning_matrices(posed(anna, t), inverse_bind, skinning);
+    skin_positions(skinning, a.mesh.joints, a.mesh.weights, a.mesh.positions, skin);
+    for (std::size_t k = 0; k < skin.size(); ++k) {
+      const float d = -primitive_signed_distance(table, skin[k]);
+      if (d > deepest) deepest = d, where = skin[k], when = t, bone = a.skeleton.names[a.mesh.joints[k][0]];
+    }
+  }
+  std::printf("taking the cup: deepest skin point %.1f mm into the table at (%.2f %.2f %.2f), t=%.2f, %s\n", deepest * 1000.0f,
+              where.x, where.y, where.z, when, bone.c_str());
+  EXPECT_LT(deepest, 0.01f);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "support/build_paths.hpp"
 #include "support/cli.hpp"
@@ -55,6 +56,35 @@ TEST(SceneCli, RefusesBadScenesScriptsAndFlagsWithTheirPlace) {
   r = run_cli("scene /no/such/scene.json --check");
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("no such file"), std::string::npos) << r.output;
+}
+
+TEST(SceneCli, ViewRefusesSceneFlagsThatDoNotGoTogetherBeforeOpeningAWindow) {
+  auto r = run_cli("view --do 'anna walks to chair'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("need --scene"), std::string::npos) << r.output;
+  r = run_cli("view --scene " + example() + " --rest");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("--scene plays a scene"), std::string::npos) << r.output;
+  r = run_cli("view --scene " + example() + " --camera ceiling");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("unknown camera 'ceiling'"), std::string::npos) << r.output;
+  r = run_cli("view --scene /no/such/room.json");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("--scene"), std::string::npos) << r.output;
+}
+
+TEST(SceneCli, JsonResultCarriesTheLog) {
+  const auto r = run_cli("scene " + example() + " --do 'anna walks to the middle; ben walks to the attic' --json");
+  EXPECT_EQ(r.status, 1) << "the attic is no place: a located error";
+  const auto ok = run_cli("scene " + example() + " --do 'anna walks to the middle' --json");
+  ASSERT_EQ(ok.status, 0) << ok.output;
+  const std::size_t brace = ok.output.find('{');
+  ASSERT_NE(brace, std::string::npos) << ok.output;
+  const nlohmann::json j = nlohmann::json::parse(ok.output.substr(brace, ok.output.rfind('}') - brace + 1));
+  EXPECT_EQ(j["warnings"], 0);
+  ASSERT_FALSE(j["log"].empty());
+  EXPECT_EQ(j["log"][0]["text"].get<std::string>().rfind("anna walks to middle", 0), 0u) << j.dump(2);
+  EXPECT_GT(j["duration"].get<double>(), 1.0);
 }
 
 TEST(SceneCli, PerformsAScriptAndRendersAStill) {

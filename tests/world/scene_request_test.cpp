@@ -83,6 +83,14 @@ TEST(SceneRequest, MissingFilesAreNotFoundAtTheirField) {
   EXPECT_EQ(e.category, ErrorCategory::not_found);
   EXPECT_EQ(e.place.field, "script");
 
+  // An output whose folder is missing fails before the performance, as an output error.
+  r = checked(example());
+  r.check = false;
+  r.output = "/no/such/folder/scene.png";
+  e = error_of([&] { run(r); });
+  EXPECT_EQ(e.category, ErrorCategory::output);
+  EXPECT_EQ(e.place.field, "output");
+
   r = checked("");
   e = error_of([&] { run(r); });
   EXPECT_EQ(e.category, ErrorCategory::usage);
@@ -100,7 +108,21 @@ TEST(SceneRequest, MalformedScenesAndScriptsAreInputErrorsAtTheirPlace) {
   EXPECT_EQ(e.category, ErrorCategory::input);
   EXPECT_EQ(e.place.source.to_string().rfind(bad.string() + ":3:", 0), 0u) << e.place.source.to_string() << " " << e.message;
 
+  // A binary script file: refused as text that is not UTF-8, naming the byte.
+  const fs::path binary = fs::temp_directory_path() / ("gestura_scene_request_" + std::to_string(::getpid()) + ".txt");
+  {
+    std::ofstream out(binary, std::ios::binary);
+    out << "anna walks to chair\n" << '\xff' << '\xfe' << '\0' << "x";
+  }
   SceneRequest r = checked(example());
+  r.source.script = binary.string();
+  e = error_of([&] { run(r); });
+  fs::remove(binary);
+  EXPECT_EQ(e.category, ErrorCategory::input);
+  EXPECT_EQ(e.place.field, "script");
+  EXPECT_NE(e.message.find("UTF-8"), std::string::npos) << e.message;
+
+  r = checked(example());
   r.source.do_text = "anna walks to the attic";
   e = error_of([&] { run(r); });
   EXPECT_EQ(e.category, ErrorCategory::input);

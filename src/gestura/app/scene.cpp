@@ -1,5 +1,6 @@
 #include "gestura/app/scene.hpp"
 
+#include <filesystem>
 #include <sstream>
 
 #include "gestura/app/input_file.hpp"
@@ -44,7 +45,8 @@ LoadedScene load(const SceneSource& source) {
   LoadedScene out;
   out.scene = read_scene(source.scene);
   if (!source.do_text.empty()) out.script = parse_script(source.do_text, "--do");
-  else if (!source.script.empty()) out.script = read_script(source.script);
+  else if (!source.script.empty())  // text only: a binary or non-UTF-8 file is refused naming the byte
+    out.script = parse_script(read_text_input("script", source.script, kMaxScriptBytes), source.script);
   else if (!out.scene.script.empty()) out.script = parse_script(out.scene.script, source.scene + " (its script)");
   check_script(out.script, out.scene);
   return out;
@@ -88,6 +90,10 @@ void validate(const SceneRequest& request) {
 
 SceneResult run(const SceneRequest& request, const RunContext& context) {
   validate(request);
+  // Before the performance (seconds of work): the file's folder must be there to write into.
+  if (const std::filesystem::path folder = std::filesystem::path(request.output).parent_path();
+      !request.output.empty() && !request.check && !folder.empty() && !std::filesystem::is_directory(folder))
+    throw AppError(ErrorCategory::output, Place{"output", {}}, "cannot write " + request.output + ": no folder " + folder.string());
   LoadedScene loaded = load(request.source);
   const std::vector<std::string> cameras = camera_names(request.camera);
   as_field_error(ErrorCategory::usage, "camera", [&] { expand_scene_cameras(cameras, loaded.scene); });

@@ -436,9 +436,18 @@ class Director {
       SimActor& me = sim_->actor(r.actor);
       const Aabb box = object_box(object);
       const vec3 half = (box.max - box.min) * 0.5f;
-      const vec3 goal(point.x, box.min.y, point.z);
-      const PlannedPath path = sim_->walk_to(r.actor, goal, true, std::nullopt,
-                                             vec3(half.x + me.spec.radius + 0.3f, 0.6f, half.z + me.spec.radius + 0.3f));
+      // The floor to stand on: where the object rests (a ball on the floor), or failing that each
+      // surface further down under it (a cup on a table: the floor under the table).
+      const vec3 extent(half.x + me.spec.radius + 0.3f, 0.6f, half.z + me.spec.radius + 0.3f);
+      vec3 goal(point.x, box.min.y, point.z);
+      PlannedPath path = sim_->walk_to(r.actor, goal, true, std::nullopt, extent);
+      for (int below = 0; below < 4 && path.status != PathStatus::Found; ++below) {
+        const auto ground = ground_below(sim_->environment(), vec3(goal.x, goal.y - 0.02f, goal.z));
+        if (!ground) break;
+        goal.y = ground->height;
+        PlannedPath lower = sim_->walk_to(r.actor, goal, true, std::nullopt, extent);
+        if (lower.status == PathStatus::Found) path = std::move(lower);
+      }
       if (path.status != PathStatus::Found) {
         warn(&a, path.reason);
         r.done = true;
