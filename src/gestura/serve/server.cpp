@@ -9,6 +9,8 @@
 #include <boost/beast/websocket.hpp>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <thread>
 #include <vector>
@@ -16,6 +18,7 @@
 #include "gestura/app/error.hpp"
 #include "gestura/serve/api.hpp"
 #include "gestura/serve/api_error.hpp"
+#include "gestura/serve/gzip.hpp"
 #include "gestura/serve/url.hpp"
 
 namespace gestura::serve {
@@ -108,6 +111,35 @@ struct Server::Impl {
     stream.expires_after(kWriteTimeout);
     co_await http::async_write(stream, res, asio::redirect_error(asio::use_awaitable, ec));
     co_return !ec;
+  }
+
+  GzipCache gzip_cache;
+
+  // The response with its body compressed when the client accepts gzip and it is worth it; a
+  // file becomes a body then (compressed once per file version).
+  ApiResponse compress(ApiResponse r) {
+    if (!compressible(r.content_type) || r.status != 200) return r;
+    std::string etag;
+    for (const auto& [k, v] : r.headers)
+      if (k == "ETag") etag = v;
+    try {
+      if (!r.file.empty()) {
+        std::error_code ec;
+        const auto size = std::filesystem::file_size(r.file, ec);
+        if (ec || size > (8u << 20)) return r;
+        std::ifstream in(r.file, std::ios::binary);
+        std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        r.body = etag.empty() ? gzip(data) : gzip_cache.get(r.file + etag, data);
+        r.file.clear();
+      } else {
+        if (r.body.size() < 1024) return r;
+        r.body = etag.empty() ? gzip(r.body) : gzip_cache.get("body" + etag, r.body);
+      }
+    } catch (const std::exception&) {
+      return r;  // zlib failed: send it plain
+    }
+    r.headers.emplace_back("Content-Encoding", "gzip");
+    return r;
   }
 
   // Writes an API response; false when the connection is gone.
@@ -205,6 +237,9 @@ struct Server::Impl {
         co_await job_events(std::move(stream), std::move(req), job_id);
         co_return;
       }
+      if (accepts_gzip(std::string_view(req[http::field::accept_encoding].data(), req[http::field::accept_encoding].size())))
+        response = compress(std::move(response));
+      response.headers.emplace_back("Vary", "Accept-Encoding");
       if (!co_await write(stream, response, head, req.keep_alive(), version) || !req.keep_alive()) break;
     }
     boost::system::error_code ec;
