@@ -13,7 +13,8 @@ ApiResponse error_response(const app::ErrorReport& report) {
   if (s.line > 0) e["line"] = s.line;
   if (s.column > 0) e["column"] = s.column;
   if (s.index >= 0) e["symbol"] = s.index;
-  return ApiResponse::json(report.http_status(), nlohmann::json{{"error", e}}.dump());
+  // A message may quote the client's bytes (a parse error's token): invalid UTF-8 is replaced.
+  return ApiResponse::json(report.http_status(), nlohmann::json{{"error", e}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 
 ApiResponse current_error_response() { return error_response(app::classify_current()); }
@@ -21,7 +22,7 @@ ApiResponse current_error_response() { return error_response(app::classify_curre
 ApiResponse error_response(int status, const std::string& category, const std::string& message, const std::string& field) {
   nlohmann::json e{{"code", status}, {"category", category}, {"message", message}};
   if (!field.empty()) e["field"] = field;
-  return ApiResponse::json(status, nlohmann::json{{"error", e}}.dump());
+  return ApiResponse::json(status, nlohmann::json{{"error", e}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 
 }  // namespace gestura::serve

@@ -28,7 +28,10 @@ Router::Match Router::match(ApiRequest& request) const {
   Match result;
   result.name = "unmatched";
   std::string allowed;
+  // Exact patterns first: a path they know with another method is 405, not a static file.
+  for (int pass = 0; pass < 2; ++pass)
   for (const Route& r : routes_) {
+    if (r.rest != (pass == 1) || (pass == 1 && !allowed.empty())) continue;
     if (r.rest ? parts.size() < r.segments.size() : parts.size() != r.segments.size()) continue;
     std::map<std::string, std::string> params;
     bool same = true;
