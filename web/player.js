@@ -8,10 +8,10 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 
 // Camera presets: position and the point looked at, in metres (+Y up, the avatar faces +Z).
 export const CAMERAS = {
-  front: { position: [0, 1.45, 2.1], target: [0, 1.3, 0] },
-  'three-quarter': { position: [1.35, 1.5, 1.65], target: [0, 1.3, 0] },
-  side: { position: [2.1, 1.45, 0.15], target: [0, 1.3, 0] },
-  hands: { position: [0, 1.35, 1.1], target: [0, 1.25, 0.15] },
+  front: { position: [0, 1.4, 2.7], target: [0, 1.32, 0] },
+  'three-quarter': { position: [1.75, 1.45, 2.05], target: [0, 1.32, 0] },
+  side: { position: [2.7, 1.4, 0.2], target: [0, 1.32, 0] },
+  hands: { position: [0, 1.3, 1.55], target: [0, 1.28, 0.2] },
   face: { position: [0, 1.62, 0.75], target: [0, 1.6, 0] },
 };
 

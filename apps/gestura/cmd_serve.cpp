@@ -1,6 +1,7 @@
 // gestura serve: the HTTP/WebSocket API, the web page and the embeddable player (src/gestura/serve).
 #include <cstdio>
 #include <memory>
+#include <thread>
 
 #include "command.hpp"
 #include "gestura/serve/api.hpp"
@@ -19,6 +20,7 @@ Invocation prepare() {
     std::printf("gestura serve: listening on http://%s:%d/  (data: %s%s%s)\n", used.host.c_str(), server.port(), used.data.c_str(),
                 used.web.empty() ? "" : ", page: ", used.web.c_str());
     std::fflush(stdout);
+    std::jthread warm([&server] { server.api().warm_up(); });
     server.run();
     std::printf("gestura serve: stopped\n");
     return 0;

@@ -36,16 +36,17 @@ try {
   const startMs = Date.now() - pressed;
   console.log(`first motion ${startMs} ms after Enter; clip ${await page.evaluate(() => window.gestura.lastClipBytes)} bytes`);
 
-  // Sample the wrist while it signs.
+  // Sample the wrist while it signs, from where it is when the clip starts.
+  const start = await page.evaluate(() => window.gestura.jointPosition('r_wrist'));
   let farthest = 0;
   const frames = [];
   for (let i = 0; i < 40; ++i) {
     const p = await page.evaluate(() => window.gestura.jointPosition('r_wrist'));
-    farthest = Math.max(farthest, Math.hypot(p[0] - rest[0], p[1] - rest[1], p[2] - rest[2]));
+    farthest = Math.max(farthest, Math.hypot(p[0] - start[0], p[1] - start[1], p[2] - start[2]));
     if (i % 10 === 5) frames.push(await page.evaluate(() => document.querySelector('#view canvas').toDataURL()));
     await new Promise((r) => setTimeout(r, 100));
   }
-  console.log(`right wrist moved up to ${(farthest * 100).toFixed(1)} cm from rest`);
+  console.log(`right wrist moved up to ${(farthest * 100).toFixed(1)} cm from where the clip started`);
   check(farthest > 0.10, 'the right wrist moves by more than 10 cm');
   check(frames.some((f) => f !== before) && new Set(frames).size > 1, 'the canvas changes over time');
   const glosses = await page.$$eval('#glosses li', (lis) => lis.map((li) => li.textContent));

@@ -224,6 +224,16 @@ ApiResponse Api::handle(ApiRequest& request) {
   return response;
 }
 
+void Api::warm_up() {
+  try {
+    workspace_.signer(app::AvatarChoice{});
+    ApiRequest request;
+    avatar(request);
+  } catch (...) {
+    // The first request meets the same problem and reports it.
+  }
+}
+
 ApiResponse Api::health() {
   return ApiResponse::json(200, json{{"status", "ok"},
                                      {"version", GESTURA_VERSION},

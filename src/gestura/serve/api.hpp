@@ -23,6 +23,10 @@ class Api {
   explicit Api(ServeOptions options);
   ~Api();
 
+  // Builds what the first requests need (the avatar, its signer, the avatar's .glb) so that the
+  // first sentence does not wait for them; safe to call beside requests. Never throws.
+  void warm_up();
+
   // Answers one request; never throws (every failure is an error response).
   ApiResponse handle(ApiRequest& request);
   // The route label of a request for /metrics, and whether it is a job's progress WebSocket
