@@ -152,6 +152,7 @@ Api::Api(ServeOptions options) : options_(std::move(options)) {
     web_ = fs::canonical(options_.web);
   }
   if (!options_.lexicon.empty()) setenv("GESTURA_LEXICON", options_.lexicon.c_str(), 1);  // the workspace's user lexicon
+  workspaces_ = std::make_unique<WorkspacePool>(options_.threads + options_.jobs);
   jobs_ = std::make_unique<JobQueue>((data_ / "jobs").string(), options_.jobs, static_cast<std::size_t>(options_.queue));
   add_routes();
 }
@@ -210,8 +211,7 @@ ApiResponse Api::handle(ApiRequest& request) {
   } else {
     Deadlines::Guard deadline(deadlines_, std::chrono::seconds(options_.timeout));
     app::RunContext context;
-    context.stop = deadline.token();
-    context.workspace = &workspace_;
+    context.stop = deadline.token();  // handlers that compute lease a workspace into their own context
     try {
       response = (*match.handler)(request, context);
     } catch (...) {
@@ -226,9 +226,10 @@ ApiResponse Api::handle(ApiRequest& request) {
 
 void Api::warm_up() {
   try {
-    workspace_.signer(app::AvatarChoice{});
     ApiRequest request;
     avatar(request);
+    // Every workspace in turn (the pool hands them out first in, first out).
+    for (int i = 0; i < workspaces_->size(); ++i) workspaces_->acquire()->signer(app::AvatarChoice{});
   } catch (...) {
     // The first request meets the same problem and reports it.
   }
@@ -244,8 +245,11 @@ ApiResponse Api::health() {
 ApiResponse Api::say(ApiRequest& request, const app::RunContext& context) {
   app::SayRequest say = read_public<Public<app::SayRequest, SayFields>>(body_json(request)).request;
   check_text(say.text, options_.max_text);
-  const app::SayResult result = app::run(say, context);
-  const Avatar& avatar = workspace_.avatar(say.avatar);
+  const WorkspacePool::Lease workspace = workspaces_->acquire();
+  app::RunContext leased = context;
+  leased.workspace = workspace.get();
+  const app::SayResult result = app::run(say, leased);
+  const Avatar& avatar = workspace->avatar(say.avatar);
   return performance_response(request, app::to_json(result), avatar.skeleton, result.performance.clip, avatar.mesh);
 }
 
@@ -274,10 +278,13 @@ ApiResponse Api::sign(ApiRequest& request, const app::RunContext& context) {
     std::ofstream(temporary.path, std::ios::binary) << sigml_text;
     sign.source.sigml = temporary.path.string();
   }
-  const app::SignResult result = app::perform(sign, context);
+  const WorkspacePool::Lease workspace = workspaces_->acquire();
+  app::RunContext leased = context;
+  leased.workspace = workspace.get();
+  const app::SignResult result = app::perform(sign, leased);
   json timeline = app::to_json(result);
   timeline.erase("written");
-  const Avatar& avatar = workspace_.avatar(sign.avatar);
+  const Avatar& avatar = workspace->avatar(sign.avatar);
   return performance_response(request, timeline, avatar.skeleton, result.synthesis.clip, avatar.mesh);
 }
 
@@ -286,7 +293,10 @@ ApiResponse Api::gloss(ApiRequest& request, const app::RunContext& context) {
   app::GlossRequest gloss = request.method == "GET" ? read_public_query<R>(request, {}).request : read_public<R>(body_json(request)).request;
   check_text(gloss.text, options_.max_text);
   gloss.db = options_.lexicon;
-  return ApiResponse::json(200, app::to_json(app::run(gloss, context)).dump());
+  const WorkspacePool::Lease workspace = workspaces_->acquire();
+  app::RunContext leased = context;
+  leased.workspace = workspace.get();
+  return ApiResponse::json(200, app::to_json(app::run(gloss, leased)).dump());
 }
 
 ApiResponse Api::lexicon_search(ApiRequest& request, const app::RunContext& context) {
@@ -303,7 +313,10 @@ ApiResponse Api::lexicon_search(ApiRequest& request, const app::RunContext& cont
   int limit = 100;
   if (const std::string l = get("limit"); !l.empty())
     limit = app::parse_number<int>(l, app::FieldInfo{.name = "limit", .min = 1, .max = kMaxLexiconLimit});
-  app::LexiconQueryResult result = app::run(query, context);
+  const WorkspacePool::Lease workspace = workspaces_->acquire();
+  app::RunContext leased = context;
+  leased.workspace = workspace.get();
+  app::LexiconQueryResult result = app::run(query, leased);
   const std::size_t total = result.entries.size();
   if (result.entries.size() > static_cast<std::size_t>(limit)) result.entries.resize(static_cast<std::size_t>(limit));
   json out = app::to_json(result);
@@ -319,14 +332,18 @@ ApiResponse Api::lexicon_entry(ApiRequest& request, const app::RunContext& conte
     if (key != "lang") app::usage_error(key, "unknown parameter (known: lang)");
   if (const auto it = request.query.find("lang"); it != request.query.end()) query.lang = it->second;
   query.db = options_.lexicon;
-  return ApiResponse::json(200, app::to_json(app::run(query, context)).dump());
+  const WorkspacePool::Lease workspace = workspaces_->acquire();
+  app::RunContext leased = context;
+  leased.workspace = workspace.get();
+  return ApiResponse::json(200, app::to_json(app::run(query, leased)).dump());
 }
 
 ApiResponse Api::avatar(ApiRequest& request) {
   {
     std::lock_guard lock(avatar_mutex_);
     if (avatar_glb_.empty()) {
-      const Avatar& a = workspace_.avatar(app::AvatarChoice{});
+      const WorkspacePool::Lease workspace = workspaces_->acquire();
+      const Avatar& a = workspace->avatar(app::AvatarChoice{});
       const std::vector<std::uint8_t> bytes = encode_glb(a.skeleton, a.mesh, "gestura");
       avatar_glb_.assign(bytes.begin(), bytes.end());
       avatar_etag_ = quoted_hash(avatar_glb_);
@@ -363,8 +380,9 @@ ApiResponse Api::video(ApiRequest& request) {
       [this, say](const std::string& file, const app::RunContext& context) {
         app::SayRequest r = say;
         r.output.output = file;
+        const WorkspacePool::Lease workspace = workspaces_->acquire();
         app::RunContext c = context;
-        c.workspace = &workspace_;
+        c.workspace = workspace.get();
         app::run(r, c);
       },
       "." + format, format == "mp4" ? "video/mp4" : "video/webm");

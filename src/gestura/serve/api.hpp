@@ -14,6 +14,7 @@
 #include "gestura/serve/metrics.hpp"
 #include "gestura/serve/router.hpp"
 #include "gestura/serve/serve_options.hpp"
+#include "gestura/serve/workspace_pool.hpp"
 
 namespace gestura::serve {
 
@@ -55,7 +56,7 @@ class Api {
 
   ServeOptions options_;
   std::filesystem::path data_, web_;
-  app::Workspace workspace_;
+  std::unique_ptr<WorkspacePool> workspaces_;  // one per request thread and render job
   Metrics metrics_;
   Deadlines deadlines_;
   std::unique_ptr<JobQueue> jobs_;
