@@ -7,7 +7,7 @@ PRESET := $(if $(filter true,$(CI)),ci,release)
 JOBS   ?= $(shell nproc)
 BIN    := build/bin
 
-.PHONY: run test build build-cli deps bench bench-anchors legibility clean
+.PHONY: run test build build-cli deps bench bench-anchors legibility serve load clean
 
 deps:
 	@scripts/setup-deps.sh
@@ -29,6 +29,16 @@ test: build
 
 bench: build
 	@$(BIN)/gestura-bench
+
+# The web service and page at http://127.0.0.1:$(PORT)/ (Ctrl-C stops it).
+PORT ?= 8080
+serve: build-cli
+	@$(BIN)/gestura serve --port $(PORT) --web web
+
+# A bounded load run of the server on the loopback (docs/benchmarks.md, "Server"); not part of make test.
+# LOAD_ARGS="--clients 200 --seconds 60 --threads 2" are the defaults.
+load: build-cli
+	@node tools/serve-load.mjs --gestura $(BIN)/gestura $(LOAD_ARGS)
 
 # MediaPipe Holistic on rendered signs (minutes: ~5-10 s per frame); not part of make test.
 # LEGIBILITY_ARGS passes options, e.g. LEGIBILITY_ARGS="--size 640x360 --step 3 house".

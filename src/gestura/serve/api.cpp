@@ -198,6 +198,12 @@ bool Api::job_events(const ApiRequest& request, std::string& job_id) const {
   return true;
 }
 
+bool Api::quick(ApiRequest& request) const {
+  const std::string name = router_.match(request).name;
+  return name == "health" || name == "metrics" || name == "job" || name == "job_cancel" || name == "static" ||
+         name == "unmatched" || name == "job_events";
+}
+
 std::string Api::route_name(ApiRequest& request) const { return router_.match(request).name; }
 
 ApiResponse Api::handle(ApiRequest& request) {

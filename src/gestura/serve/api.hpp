@@ -37,6 +37,10 @@ class Api {
   const ServeOptions& options() const { return options_; }
   Metrics& metrics() { return metrics_; }
   JobQueue& jobs() { return *jobs_; }
+  // Whether a request only reads state (health, metrics, job status, static files): the server
+  // answers those at once instead of queueing them behind signing.
+  bool quick(ApiRequest& request) const;
+
   // The route label handle() used for the last match (for the access log and metrics).
   std::string route_name(ApiRequest& request) const;
 

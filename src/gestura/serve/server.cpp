@@ -220,6 +220,8 @@ struct Server::Impl {
           response.headers = {{"Access-Control-Allow-Methods", "GET, POST, DELETE, OPTIONS"},
                               {"Access-Control-Allow-Headers", "Content-Type, Accept"},
                               {"Access-Control-Max-Age", "86400"}};
+        } else if (api->quick(request)) {
+          response = api->handle(request);  // reads state only: never queued behind signing
         } else if (computing.load() >= options.threads * 64) {
           response = error_response(503, "busy", "too many requests are waiting; try again shortly");
           response.headers.emplace_back("Retry-After", "1");
