@@ -222,7 +222,7 @@ struct Server::Impl {
                               {"Access-Control-Max-Age", "86400"}};
         } else if (api->quick(request)) {
           response = api->handle(request);  // reads state only: never queued behind signing
-        } else if (computing.load() >= options.threads * 64) {
+        } else if (computing.load() >= options.max_connections) {  // every connection may wait for one; more is a bug's flood
           response = error_response(503, "busy", "too many requests are waiting; try again shortly");
           response.headers.emplace_back("Retry-After", "1");
           api->metrics().record("busy", 503, 0.0);
