@@ -84,12 +84,15 @@ $('dict-form').addEventListener('submit', async (e) => {
       play.type = 'button';
       play.textContent = `▶ ${entry.gloss}`;
       play.setAttribute('aria-label', `Play the sign ${entry.gloss}`);
-      play.addEventListener('click', () => player.sign(entry.hamnosys ? { hamnosys: entry.hamnosys } : { names: entry.names })
-        .then(() => setStatus(`Signing ${entry.gloss}.`)).catch((err) => setStatus(err.message, true)));
+      // HamNoSys and SiGML entries are played from their notation; others by their word through say.
+      const word = entry.keywords?.[0]?.word ?? entry.gloss.toLowerCase();
+      const source = entry.notation_kind === 'hamnosys' ? () => player.sign({ hamnosys: entry.notation })
+        : entry.notation_kind === 'sigml' ? () => player.sign({ sigml: entry.notation }) : () => player.say(word);
+      play.addEventListener('click', () => source().then(() => setStatus(`Signing ${entry.gloss}.`)).catch((err) => setStatus(err.message, true)));
       const notation = document.createElement('code');
-      notation.textContent = ` ${entry.hamnosys ?? ''} `;
+      notation.textContent = entry.notation_kind === 'hamnosys' ? ` ${entry.notation} ` : ' ';
       const about = document.createElement('span');
-      about.textContent = [entry.lang, entry.keywords?.join?.(', ') ?? entry.keywords].filter(Boolean).join(' · ');
+      about.textContent = [entry.language, (entry.keywords ?? []).map((k) => k.word).join(', '), entry.source].filter(Boolean).join(' · ');
       li.append(play, notation, about);
       return li;
     }));

@@ -65,6 +65,19 @@ try {
     await page.screenshot({ path: join(options.out, 'page-hands.png') });
   }
 
+  // The dictionary: search, play a sign.
+  await page.click('#dictionary summary');
+  await page.type('#dict-query', 'house');
+  await page.keyboard.press('Enter');
+  await page.waitForSelector('#dict-results li button', { timeout: 30000 });
+  const found = await page.$$eval('#dict-results li button', (bs) => bs.map((b) => b.textContent));
+  console.log(`dictionary: ${found.slice(0, 5).join(', ')}`);
+  check(found.some((b) => b.includes('HOUSE')), 'the dictionary finds HOUSE');
+  await page.evaluate(() => { window.gestura.timeline = null; });
+  await page.click('#dict-results li button');
+  await page.waitForFunction(() => window.gestura.timeline !== null, { timeout: 30000 });
+  check(true, 'a dictionary sign plays');
+
   // A bad request shows the server's message, and the page keeps working.
   await page.evaluate(() => { document.getElementById('text').value = 'a'.repeat(2500); });
   await page.click('#sign-button');

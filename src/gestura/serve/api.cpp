@@ -1,6 +1,7 @@
 #include "gestura/serve/api.hpp"
 
 #include <array>
+#include <optional>
 #include <chrono>
 #include <fstream>
 #include <functional>
@@ -232,10 +233,15 @@ ApiResponse Api::handle(ApiRequest& request) {
 
 void Api::warm_up() {
   try {
-    ApiRequest request;
-    avatar(request);
-    // Every workspace in turn (the pool hands them out first in, first out).
-    for (int i = 0; i < workspaces_->size(); ++i) workspaces_->acquire()->signer(app::AvatarChoice{});
+    // Lease every workspace, then build and hand back one at a time: a request arriving meanwhile
+    // gets the one just built (the pool hands out the last returned first).
+    std::vector<std::optional<WorkspacePool::Lease>> all;
+    for (int i = 0; i < workspaces_->size(); ++i) all.emplace_back(workspaces_->acquire());
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      (*all[i])->signer(app::AvatarChoice{});
+      if (i == 0) avatar_bytes(**all[i]);
+      all[i].reset();
+    }
   } catch (...) {
     // The first request meets the same problem and reports it.
   }
@@ -344,16 +350,24 @@ ApiResponse Api::lexicon_entry(ApiRequest& request, const app::RunContext& conte
   return ApiResponse::json(200, app::to_json(app::run(query, leased)).dump());
 }
 
+void Api::avatar_bytes(app::Workspace& workspace) {
+  std::lock_guard lock(avatar_mutex_);
+  if (!avatar_glb_.empty()) return;
+  const Avatar& a = workspace.avatar(app::AvatarChoice{});
+  const std::vector<std::uint8_t> bytes = encode_glb(a.skeleton, a.mesh, "gestura");
+  avatar_glb_.assign(bytes.begin(), bytes.end());
+  avatar_etag_ = quoted_hash(avatar_glb_);
+}
+
 ApiResponse Api::avatar(ApiRequest& request) {
+  bool built = false;  // else built here with a leased workspace (not under the lock: leasing may wait)
   {
     std::lock_guard lock(avatar_mutex_);
-    if (avatar_glb_.empty()) {
-      const WorkspacePool::Lease workspace = workspaces_->acquire();
-      const Avatar& a = workspace->avatar(app::AvatarChoice{});
-      const std::vector<std::uint8_t> bytes = encode_glb(a.skeleton, a.mesh, "gestura");
-      avatar_glb_.assign(bytes.begin(), bytes.end());
-      avatar_etag_ = quoted_hash(avatar_glb_);
-    }
+    built = !avatar_glb_.empty();
+  }
+  if (!built) {
+    const WorkspacePool::Lease workspace = workspaces_->acquire();
+    avatar_bytes(*workspace);
   }
   ApiResponse r;
   r.headers.emplace_back("ETag", avatar_etag_);

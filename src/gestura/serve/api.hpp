@@ -52,6 +52,7 @@ class Api {
   ApiResponse lexicon_search(ApiRequest& request, const app::RunContext& context);
   ApiResponse lexicon_entry(ApiRequest& request, const app::RunContext& context);
   ApiResponse avatar(ApiRequest& request);
+  void avatar_bytes(app::Workspace& workspace);  // builds avatar_glb_ once
   ApiResponse video(ApiRequest& request);
   ApiResponse job(ApiRequest& request);
   ApiResponse job_download(ApiRequest& request);

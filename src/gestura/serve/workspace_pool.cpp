@@ -12,8 +12,8 @@ WorkspacePool::WorkspacePool(int size) {
 WorkspacePool::Lease WorkspacePool::acquire() {
   std::unique_lock lock(mutex_);
   returned_.wait(lock, [&] { return !free_.empty(); });
-  app::Workspace* w = free_.front();
-  free_.pop_front();
+  app::Workspace* w = free_.back();
+  free_.pop_back();
   return Lease(*this, w);
 }
 

@@ -3,7 +3,6 @@
 // a SQLite connection with its prepared statements and its signer keeps caches, so two requests
 // never share one; each request leases a workspace for its length (blocking while all are busy).
 #include <condition_variable>
-#include <deque>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -41,7 +40,7 @@ class WorkspacePool {
  private:
   void give_back(app::Workspace* workspace);
   std::vector<std::unique_ptr<app::Workspace>> all_;
-  std::deque<app::Workspace*> free_;  // first in, first out: warming up visits each in turn
+  std::vector<app::Workspace*> free_;  // last in, first out: the most recently used (warm) one first
   std::mutex mutex_;
   std::condition_variable returned_;
 };
