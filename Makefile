@@ -14,7 +14,7 @@ FUZZ_SECONDS ?= 60
 SANITIZER_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
                  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
 
-.PHONY: run test build build-cli deps bench bench-studio bench-anchors legibility coverage clean fuzz fuzz-smoke test-asan
+.PHONY: run test build build-cli deps bench bench-studio bench-anchors legibility coverage serve load clean fuzz fuzz-smoke test-asan
 
 deps:
 	@scripts/setup-deps.sh
@@ -60,6 +60,16 @@ coverage: build-cli
 bench-studio: build-cli
 	@db=$$(mktemp -d)/bench.sqlite; xvfb-run -a -s '-screen 0 1400x900x24' $(BIN)/gestura studio $$db --size 1280x800 \
 	  --script bench/studio/frame-time.script --frame-log $$(dirname $$db)/frames.tsv $(ARGS); rm -rf $$(dirname $$db)
+
+# The web service and page at http://127.0.0.1:$(PORT)/ (Ctrl-C stops it).
+PORT ?= 8080
+serve: build-cli
+	@$(BIN)/gestura serve --port $(PORT) --web web
+
+# A bounded load run of the server on the loopback (docs/benchmarks.md, "Server"); not part of make test.
+# LOAD_ARGS="--clients 200 --seconds 60 --threads 2" are the defaults.
+load: build-cli
+	@node tools/serve-load.mjs --gestura $(BIN)/gestura $(LOAD_ARGS)
 
 # MediaPipe Holistic on rendered signs (minutes: ~5-10 s per frame); not part of make test.
 # LEGIBILITY_ARGS passes options, e.g. LEGIBILITY_ARGS="--size 640x360 --step 3 house".
