@@ -265,7 +265,10 @@ ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const 
       if (is_one_of(lw, {"do", "does", "did"})) left->do_support = true;
       else if (is_one_of(lw, {"can", "could", "will", "would", "shall", "should", "may", "might", "must"})) left->modal = true;
     } else if (t == "PP") {
-      if (is_one_of(lw, {"have", "has", "had", "having"})) left->perfect = true;
+      if (is_one_of(lw, {"have", "has", "had", "having"})) {
+        left->perfect = true;
+        left->participle = to_input[static_cast<std::size_t>(l.right)];
+      }
     } else if (t == "P") {
       // Pg (is going), Pv (was taken): 'be' is an auxiliary here, not the copula.
       left->auxiliary_be = true;

@@ -417,6 +417,18 @@ class SentenceTranslator {
            (i_ > 0 && w_[i_ - 1].kind == TokenKind::word && english::is_wh_word(w_[i_ - 1].lower));
   }
 
+  // A perfect that reports a completed action (have eaten) is FINISH; one of duration or experience
+  // (have been waiting, have lived here for years, has never seen, haven't seen) is not.
+  bool completed_action() const {
+    const english::ParsedWord* p = parsed(i_);
+    if (p && p->participle >= 0 && w_[static_cast<std::size_t>(p->participle)].lower == "been") return false;
+    return std::none_of(w_.begin(), w_.end(), [](const Word& w) {
+      return w.kind == TokenKind::word && (w.lower == "for" || w.lower == "since" || w.lower == "never" ||
+                                           w.lower == "not" || w.lower == "long" || w.lower == "ever" ||
+                                           w.lower == "yet");
+    });
+  }
+
   bool next_is_content_word() const {
     const Word* next = at(i_ + 1);
     if (!next || next->kind != TokenKind::word) return false;
@@ -486,6 +498,12 @@ class SentenceTranslator {
       ++i_;
       return;
     }
+    if ((l == "have" || l == "has" || l == "had") && parsed(i_) && parsed(i_)->perfect && !completed_action()) {
+      drop(w, "auxiliary 'have' of a perfect that lasts up to now or is an experience (been, for, since, never, "
+              "not), no completed action (parse: PP link to the participle)");
+      ++i_;
+      return;
+    }
     if ((l == "have" || l == "has" || l == "had") && (parsed(i_) ? parsed(i_)->perfect : next_is_participle())) {
       const std::string reason = quoted(w.text) + " → FINISH: perfect 'have', a completed action" +
                                  (parsed(i_) ? " (parse: PP link to the participle)" : "");
@@ -547,16 +565,23 @@ class SentenceTranslator {
     const english::ParsedWord* p = parsed(i_ - 1);
     const english::PartOfSpeech pos = p ? p->pos : english::PartOfSpeech::unknown;
     const std::string as = p && pos != english::PartOfSpeech::unknown ? std::string(english::to_string(pos)) + ", " : "";
-    const std::vector<std::string> wn_lemmas = wordnet::lemmas(l, pos);
-    if (!inventory_.open_vocabulary())
+    // Modals (might, may) keep the lexicon's own sign (MAYBE), not a verb lemma's.
+    const std::vector<std::string> wn_lemmas = p && p->modal ? std::vector<std::string>{} : wordnet::lemmas(l, pos);
+    const auto by_wordnet = [&]() -> std::optional<std::pair<std::string, std::string>> {
+      if (inventory_.open_vocabulary()) return std::nullopt;
       for (const std::string& lemma : wn_lemmas)
         if (const auto gloss = inventory_.gloss_for(lemma))
-          return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": " + as +
-                                     (lemma == l ? "a WordNet lemma" : "WordNet lemma " + quoted(lemma)));
-    // A form the lexicon lists as written ("glasses", "hearing", "news") keeps its own sign; other
-    // forms are looked up by their lemma.
+          return std::pair{*gloss, lemma == l ? std::string("a WordNet lemma") : "WordNet lemma " + quoted(lemma)};
+      return std::nullopt;
+    };
+    // A verb takes its WordNet lemma first (left → LEAVE, leaves → LEAVE, not LEFT or LEAF).
+    if (pos == english::PartOfSpeech::verb)
+      if (const auto found = by_wordnet()) return sign(w, found->first, quoted(w.text) + " → " + found->first + ": " + as + found->second);
+    // A form the lexicon lists as written ("glasses", "hearing", "news", "oranges") keeps its own
+    // sign; other forms are looked up by their lemma.
     if (!inventory_.open_vocabulary())
       if (const auto gloss = inventory_.gloss_for(l)) return sign(w, *gloss, quoted(w.text) + " → " + *gloss);
+    if (const auto found = by_wordnet()) return sign(w, found->first, quoted(w.text) + " → " + found->first + ": " + as + found->second);
     for (const LemmaCandidate& c : candidates)
       if (const auto gloss = inventory_.gloss_for(c.lemma))
         return sign(w, *gloss, quoted(w.text) + " → " + *gloss + (c.rule.empty() ? "" : ": " + std::string(c.rule)));
@@ -564,13 +589,14 @@ class SentenceTranslator {
       if (const auto other = english::synonym(c.lemma))
         if (const auto gloss = inventory_.gloss_for(*other))
           return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": synonym " + quoted(*other));
-    // Synonyms from WordNet, in the word's part of speech and its most frequent senses only, so that
-    // a noun never takes a verb's sign.
+    // Synonyms from WordNet, in the word's part of speech and its most frequent sense only, so that a
+    // noun never takes a verb's sign and "picnic" never becomes a breeze (its third sense).
     if (!inventory_.open_vocabulary() && pos != english::PartOfSpeech::unknown)
       for (const std::string& lemma : wn_lemmas)
-        for (const std::string& other : wordnet::synonyms(lemma, pos))
+        for (const std::string& other : wordnet::synonyms(lemma, pos, 1))
           if (const auto gloss = inventory_.gloss_for(other))
-            return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": " + as + "WordNet synonym " + quoted(other));
+            return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": " + as + "WordNet synonym " + quoted(other) +
+                                       " (its most frequent sense)");
     fingerspell(w, "no sign in the lexicon");
   }
 
