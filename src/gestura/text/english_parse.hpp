@@ -33,6 +33,9 @@ struct ParsedWord {
 struct ParsedSentence {
   bool parsed = false;
   std::vector<ParsedWord> words;  // one per input word, in order
+  // Parts link-grammar split off an input word ("I'm" → I + 'm): parts[k] are the parts of input
+  // word k after its first, in order.
+  std::vector<std::vector<ParsedWord>> parts;
   std::string tree;               // constituent tree on one line: (S (NP my head) (VP hurts))
   std::string roles;              // "subject 'head' → verb 'hurts'; verb 'gave' → object 'book'"
   std::size_t clauses = 0;        // S and SBAR constituents in the tree

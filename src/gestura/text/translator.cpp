@@ -638,15 +638,18 @@ std::vector<Word> words_of(const std::vector<Token>& tokens, std::size_t from, s
   return out;
 }
 
-// Parses one sentence's words with link-grammar: words and numbers as written (an expanded
-// contraction as its parts: "don't" → do not), pauses as their punctuation, then the terminator.
+// Parses one sentence's words with link-grammar: words and numbers as written, pauses as their
+// punctuation, then the terminator.
 english::ParsedSentence parse_words(const std::vector<Word>& words, std::string_view terminator) {
   std::vector<std::string> text;
   std::vector<std::size_t> index;  // words[index[k]] is text[k]
   for (std::size_t k = 0; k < words.size(); ++k) {
     const Word& w = words[k];
     if (w.kind == TokenKind::word || w.kind == TokenKind::number) {
-      text.push_back(utf8::lower(w.text) == w.lower ? w.text : w.lower);
+      // A contraction goes to the parser as written ("didn't", "I'm"): link-grammar knows them, and
+      // "why did not you come" would not parse. Its later parts share its span and are left out.
+      if (k > 0 && words[k - 1].kind == TokenKind::word && words[k - 1].begin == w.begin) continue;
+      text.push_back(w.text);
       index.push_back(k);
     } else if (w.kind == TokenKind::pause && (w.text == "," || w.text == ";" || w.text == ":")) {
       text.push_back(w.text);
@@ -662,7 +665,20 @@ english::ParsedSentence parse_words(const std::vector<Word>& words, std::string_
   out.roles = std::move(parsed.roles);
   out.clauses = parsed.clauses;
   out.words.resize(words.size());
-  for (std::size_t k = 0; k < index.size(); ++k) out.words[index[k]] = parsed.words[k];
+  // The parser's word indices (participle) → this sentence's word indices.
+  for (auto& w : parsed.words)
+    if (w.participle >= 0) w.participle = static_cast<int>(index[static_cast<std::size_t>(w.participle)]);
+  for (auto& parts : parsed.parts)
+    for (auto& w : parts)
+      if (w.participle >= 0) w.participle = static_cast<int>(index[static_cast<std::size_t>(w.participle)]);
+  for (std::size_t k = 0; k < index.size(); ++k) {
+    out.words[index[k]] = parsed.words[k];
+    // The later words of an expanded contraction ("I'm" → I am) take the parts link-grammar split off.
+    for (std::size_t j = 0; j < parsed.parts[k].size(); ++j) {
+      const std::size_t at = index[k] + 1 + j;
+      if (at < words.size() && words[at].begin == words[index[k]].begin) out.words[at] = parsed.parts[k][j];
+    }
+  }
   return out;
 }
 
