@@ -249,7 +249,13 @@ ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const 
   }
 
   const auto input = [&](int w) -> ParsedWord* { return w >= 0 && w < n ? slot[static_cast<std::size_t>(w)] : nullptr; };
-  const auto quoted_word = [&](int w) { return "'" + split_tag(linkage_get_word(linkage, static_cast<WordIdx>(w))).first + "'"; };
+  // A word as the user wrote it, or the part link-grammar split off ('m, 've) as link-grammar has it.
+  const auto quoted_word = [&](int w) {
+    const int k = to_input[static_cast<std::size_t>(w)];
+    const bool whole = k >= 0 && slot[static_cast<std::size_t>(w)] == &out.words[static_cast<std::size_t>(k)] &&
+                       out.parts[static_cast<std::size_t>(k)].empty();
+    return "'" + (whole ? words[static_cast<std::size_t>(k)] : split_tag(linkage_get_word(linkage, static_cast<WordIdx>(w))).first) + "'";
+  };
   for (const Link& l : links_of(linkage)) {
     ParsedWord* left = input(l.left);
     ParsedWord* right = input(l.right);
