@@ -163,6 +163,7 @@ ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const 
 ParsedSentence parse_sentence(std::span<const std::string> words) {
   ParsedSentence out;
   out.words.resize(words.size());
+  out.parts.resize(words.size());
   Parser& p = parser();
   if (!p.dictionary || words.empty() || words.size() > kMaxWords) return out;
 

@@ -672,8 +672,9 @@ english::ParsedSentence parse_words(const std::vector<Word>& words, std::string_
     for (auto& w : parts)
       if (w.participle >= 0) w.participle = static_cast<int>(index[static_cast<std::size_t>(w.participle)]);
   for (std::size_t k = 0; k < index.size(); ++k) {
-    out.words[index[k]] = parsed.words[k];
+    if (k < parsed.words.size()) out.words[index[k]] = parsed.words[k];
     // The later words of an expanded contraction ("I'm" → I am) take the parts link-grammar split off.
+    if (k >= parsed.parts.size()) continue;  // not parsed: no parts
     for (std::size_t j = 0; j < parsed.parts[k].size(); ++j) {
       const std::size_t at = index[k] + 1 + j;
       if (at < words.size() && words[at].begin == words[index[k]].begin) out.words[at] = parsed.parts[k][j];
