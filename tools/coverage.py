@@ -97,7 +97,8 @@ def main():
         reason = n["reason"]
         spelled = " fingerspelled: " in reason or "(fingerspelled)" in reason or ", fingerspelled" in reason
         signed = not spelled and any(b <= n["begin"] and n["end"] <= e for b, e in covered)
-        if word in function_words:
+        # An auxiliary the parse dropped ("have" of "have been waiting") is a function word here.
+        if word in function_words or " dropped: auxiliary" in reason:
             if spelled:
                 function_spelled[word] += 1
             continue

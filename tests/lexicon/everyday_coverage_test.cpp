@@ -79,7 +79,8 @@ Coverage measure() {
     for (const WordNote& n : t.notes) {
       const std::string word = lower(n.word);
       if (std::none_of(word.begin(), word.end(), [](unsigned char ch) { return std::isalpha(ch); })) continue;
-      if (function_words.count(word)) continue;
+      // An auxiliary the parse dropped ("have" of "have been waiting") is a function word here.
+      if (function_words.count(word) || n.reason.find(" dropped: auxiliary") != std::string::npos) continue;
       const auto spelled = std::find_if(t.glosses.begin(), t.glosses.end(), [&](const GlossToken& g) {
         return g.kind == GlossKind::fingerspell && covers(g, n);
       });
@@ -118,6 +119,8 @@ TEST(EverydayCoverage, ContentWordsAreSignedNotFingerspelled) {
   for (const auto& [word, count] : c.missed) missed += " " + word;
   std::printf("everyday coverage: %d of %d content words signed (%.1f%%); not signed:%s\n", c.signed_words,
               c.content, 100.0 * share, missed.c_str());
-  // Ratchet: 68.9% before the vocabulary of issue 15, 99.7% after (tools/coverage.py prints the same figure).
+  // Ratchet: 68.9% before the vocabulary of issue 15, 99.7% after (tools/coverage.py prints the same
+  // figure); the held-out sentences (data/eval/heldout-sentences.txt, not used to choose signs) reach
+  // 97.5% with the rule tables and 99.0% with link-grammar and WordNet.
   EXPECT_GE(share, 0.995);
 }

@@ -91,7 +91,7 @@ struct LexiconImportRequest {
     visit(self.licence, FieldInfo{.name = "licence", .help = "licence of entries that name none", .value = "L"});
     visit(self.source, FieldInfo{.name = "source", .help = "source of entries that name none (default: the file name)", .value = "S"});
     visit(self.db, FieldInfo{.name = "db", .help = "the user lexicon (SQLite file)", .value = "PATH"});
-    visit(self.skip_bad, FieldInfo{.name = "skip-bad", .help = "skip lines that are bad (bad JSON, missing fields, notation that does not parse), reporting each; import the rest"});
+    visit(self.skip_bad, FieldInfo{.name = "skip_bad", .help = "skip lines that are bad (bad JSON, missing fields, notation that does not parse), reporting each; import the rest"});
   }
 };
 // Entries whose notation does not parse are refused (by add and import), naming the symbol where

@@ -116,7 +116,7 @@ double weigh(Linkage linkage, const std::vector<Link>& links) {
   const int n = static_cast<int>(linkage_get_num_words(linkage));
   for (int w = 0; w < n; ++w) {
     const std::string word = lower(split_tag(linkage_get_word(linkage, static_cast<WordIdx>(w))).first);
-    if (!is_one_of(word, {"do", "does", "did"})) continue;
+    if (!is_one_of(word, {"do", "does", "did", "don't", "doesn't", "didn't"})) continue;
     const bool used = std::any_of(links.begin(), links.end(), [&](const Link& l) {
       return l.left == w && (l.type == "I" || l.type == "O" || l.type == "MV" || l.type == "N");
     });
@@ -163,6 +163,7 @@ ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const 
 ParsedSentence parse_sentence(std::span<const std::string> words) {
   ParsedSentence out;
   out.words.resize(words.size());
+  out.parts.resize(words.size());
   Parser& p = parser();
   if (!p.dictionary || words.empty() || words.size() > kMaxWords) return out;
 
@@ -189,6 +190,7 @@ ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const 
                             const std::vector<std::size_t>& starts) {
   ParsedSentence out;
   out.words.resize(words.size());
+  out.parts.resize(words.size());
   const auto word_at = [&](std::size_t byte) -> int {
     const auto it = std::upper_bound(starts.begin(), starts.end(), byte);
     return it == starts.begin() ? -1 : static_cast<int>(it - starts.begin()) - 1;
@@ -219,6 +221,7 @@ ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const 
   // Link-grammar words → input words (the walls and split-off parts map to none or to their word).
   const int n = static_cast<int>(linkage_get_num_words(linkage));
   std::vector<int> to_input(static_cast<std::size_t>(n), -1);
+  std::vector<ParsedWord*> slot(static_cast<std::size_t>(n), nullptr);  // where each word's findings go
   std::vector<std::string> base(static_cast<std::size_t>(n));
   for (int w = 0; w < n; ++w) {
     const auto [word, subscript] = split_tag(linkage_get_word(linkage, static_cast<WordIdx>(w)));
@@ -227,19 +230,32 @@ ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const 
     const int k = word_at(linkage_get_word_byte_start(linkage, static_cast<WordIdx>(w)));
     if (k < 0) continue;
     to_input[static_cast<std::size_t>(w)] = k;
-    ParsedWord& pw = out.words[static_cast<std::size_t>(k)];
-    if (!pw.tag.empty()) continue;  // the first part of a word split by link-grammar speaks for it
-    pw.tag = linkage_get_word(linkage, static_cast<WordIdx>(w));
-    pw.pos = pos_of(word, subscript);
+    ParsedWord part;
+    part.tag = linkage_get_word(linkage, static_cast<WordIdx>(w));
+    part.pos = pos_of(word, subscript);
+    if (out.words[static_cast<std::size_t>(k)].tag.empty()) out.words[static_cast<std::size_t>(k)] = std::move(part);
+    else out.parts[static_cast<std::size_t>(k)].push_back(std::move(part));
+  }
+  // Pointers once the part lists no longer grow.
+  {
+    std::vector<std::size_t> seen(words.size(), 0);
+    for (int w = 0; w < n; ++w) {
+      const int k = to_input[static_cast<std::size_t>(w)];
+      if (k < 0) continue;
+      std::size_t& m = seen[static_cast<std::size_t>(k)];
+      slot[static_cast<std::size_t>(w)] = m == 0 ? &out.words[static_cast<std::size_t>(k)]
+                                                 : &out.parts[static_cast<std::size_t>(k)][m - 1];
+      ++m;
+    }
   }
 
-  const auto input = [&](int w) -> ParsedWord* {
-    const int k = w >= 0 && w < n ? to_input[static_cast<std::size_t>(w)] : -1;
-    return k < 0 ? nullptr : &out.words[static_cast<std::size_t>(k)];
-  };
+  const auto input = [&](int w) -> ParsedWord* { return w >= 0 && w < n ? slot[static_cast<std::size_t>(w)] : nullptr; };
+  // A word as the user wrote it, or the part link-grammar split off ('m, 've) as link-grammar has it.
   const auto quoted_word = [&](int w) {
     const int k = to_input[static_cast<std::size_t>(w)];
-    return "'" + (k < 0 ? base[static_cast<std::size_t>(w)] : words[static_cast<std::size_t>(k)]) + "'";
+    const bool whole = k >= 0 && slot[static_cast<std::size_t>(w)] == &out.words[static_cast<std::size_t>(k)] &&
+                       out.parts[static_cast<std::size_t>(k)].empty();
+    return "'" + (whole ? words[static_cast<std::size_t>(k)] : split_tag(linkage_get_word(linkage, static_cast<WordIdx>(w))).first) + "'";
   };
   for (const Link& l : links_of(linkage)) {
     ParsedWord* left = input(l.left);
@@ -262,10 +278,15 @@ ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const 
       out.roles += (out.roles.empty() ? "" : "; ") + std::string("verb ") + quoted_word(l.left) + " → object " +
                    quoted_word(l.right);
     } else if (t == "I") {
-      if (is_one_of(lw, {"do", "does", "did"})) left->do_support = true;
-      else if (is_one_of(lw, {"can", "could", "will", "would", "shall", "should", "may", "might", "must"})) left->modal = true;
+      if (is_one_of(lw, {"do", "does", "did", "don't", "doesn't", "didn't"})) left->do_support = true;
+      else if (is_one_of(lw, {"can", "could", "will", "would", "shall", "should", "may", "might", "must", "can't",
+                              "won't", "couldn't", "wouldn't", "shouldn't", "mustn't", "'ll", "'d"}))
+        left->modal = true;
     } else if (t == "PP") {
-      if (is_one_of(lw, {"have", "has", "had", "having"})) left->perfect = true;
+      if (is_one_of(lw, {"have", "has", "had", "having", "'ve", "haven't", "hasn't", "hadn't"})) {
+        left->perfect = true;
+        left->participle = to_input[static_cast<std::size_t>(l.right)];
+      }
     } else if (t == "P") {
       // Pg (is going), Pv (was taken): 'be' is an auxiliary here, not the copula.
       left->auxiliary_be = true;

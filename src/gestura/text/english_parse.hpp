@@ -25,6 +25,7 @@ struct ParsedWord {
   Role role = Role::none;   // subject (left end of an S link), object (right end of O), verb (head of either)
   bool do_support = false;  // 'do' linked to a following verb by I (does she know, do not go)
   bool perfect = false;     // 'have' linked to a participle by PP (have eaten)
+  int participle = -1;      // perfect 'have': the input index of its participle
   bool auxiliary_be = false;  // 'be' linked to -ing/participle by Pg/Pv (is going, was taken)
   bool modal = false;       // can, will, must... linked to a verb by I
 };
@@ -32,6 +33,9 @@ struct ParsedWord {
 struct ParsedSentence {
   bool parsed = false;
   std::vector<ParsedWord> words;  // one per input word, in order
+  // Parts link-grammar split off an input word ("I'm" → I + 'm): parts[k] are the parts of input
+  // word k after its first, in order.
+  std::vector<std::vector<ParsedWord>> parts;
   std::string tree;               // constituent tree on one line: (S (NP my head) (VP hurts))
   std::string roles;              // "subject 'head' → verb 'hurts'; verb 'gave' → object 'book'"
   std::size_t clauses = 0;        // S and SBAR constituents in the tree

@@ -417,6 +417,18 @@ class SentenceTranslator {
            (i_ > 0 && w_[i_ - 1].kind == TokenKind::word && english::is_wh_word(w_[i_ - 1].lower));
   }
 
+  // A perfect that reports a completed action (have eaten) is FINISH; one of duration or experience
+  // (have been waiting, have lived here for years, has never seen, haven't seen) is not.
+  bool completed_action() const {
+    const english::ParsedWord* p = parsed(i_);
+    if (p && p->participle >= 0 && w_[static_cast<std::size_t>(p->participle)].lower == "been") return false;
+    return std::none_of(w_.begin(), w_.end(), [](const Word& w) {
+      return w.kind == TokenKind::word && (w.lower == "for" || w.lower == "since" || w.lower == "never" ||
+                                           w.lower == "not" || w.lower == "long" || w.lower == "ever" ||
+                                           w.lower == "yet");
+    });
+  }
+
   bool next_is_content_word() const {
     const Word* next = at(i_ + 1);
     if (!next || next->kind != TokenKind::word) return false;
@@ -486,6 +498,12 @@ class SentenceTranslator {
       ++i_;
       return;
     }
+    if ((l == "have" || l == "has" || l == "had") && parsed(i_) && parsed(i_)->perfect && !completed_action()) {
+      drop(w, "auxiliary 'have' of a perfect that lasts up to now or is an experience (been, for, since, never, "
+              "not), no completed action (parse: PP link to the participle)");
+      ++i_;
+      return;
+    }
     if ((l == "have" || l == "has" || l == "had") && (parsed(i_) ? parsed(i_)->perfect : next_is_participle())) {
       const std::string reason = quoted(w.text) + " → FINISH: perfect 'have', a completed action" +
                                  (parsed(i_) ? " (parse: PP link to the participle)" : "");
@@ -547,16 +565,23 @@ class SentenceTranslator {
     const english::ParsedWord* p = parsed(i_ - 1);
     const english::PartOfSpeech pos = p ? p->pos : english::PartOfSpeech::unknown;
     const std::string as = p && pos != english::PartOfSpeech::unknown ? std::string(english::to_string(pos)) + ", " : "";
-    const std::vector<std::string> wn_lemmas = wordnet::lemmas(l, pos);
-    if (!inventory_.open_vocabulary())
+    // Modals (might, may) keep the lexicon's own sign (MAYBE), not a verb lemma's.
+    const std::vector<std::string> wn_lemmas = p && p->modal ? std::vector<std::string>{} : wordnet::lemmas(l, pos);
+    const auto by_wordnet = [&]() -> std::optional<std::pair<std::string, std::string>> {
+      if (inventory_.open_vocabulary()) return std::nullopt;
       for (const std::string& lemma : wn_lemmas)
         if (const auto gloss = inventory_.gloss_for(lemma))
-          return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": " + as +
-                                     (lemma == l ? "a WordNet lemma" : "WordNet lemma " + quoted(lemma)));
-    // A form the lexicon lists as written ("glasses", "hearing", "news") keeps its own sign; other
-    // forms are looked up by their lemma.
+          return std::pair{*gloss, lemma == l ? std::string("a WordNet lemma") : "WordNet lemma " + quoted(lemma)};
+      return std::nullopt;
+    };
+    // A verb takes its WordNet lemma first (left → LEAVE, leaves → LEAVE, not LEFT or LEAF).
+    if (pos == english::PartOfSpeech::verb)
+      if (const auto found = by_wordnet()) return sign(w, found->first, quoted(w.text) + " → " + found->first + ": " + as + found->second);
+    // A form the lexicon lists as written ("glasses", "hearing", "news", "oranges") keeps its own
+    // sign; other forms are looked up by their lemma.
     if (!inventory_.open_vocabulary())
       if (const auto gloss = inventory_.gloss_for(l)) return sign(w, *gloss, quoted(w.text) + " → " + *gloss);
+    if (const auto found = by_wordnet()) return sign(w, found->first, quoted(w.text) + " → " + found->first + ": " + as + found->second);
     for (const LemmaCandidate& c : candidates)
       if (const auto gloss = inventory_.gloss_for(c.lemma))
         return sign(w, *gloss, quoted(w.text) + " → " + *gloss + (c.rule.empty() ? "" : ": " + std::string(c.rule)));
@@ -564,13 +589,14 @@ class SentenceTranslator {
       if (const auto other = english::synonym(c.lemma))
         if (const auto gloss = inventory_.gloss_for(*other))
           return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": synonym " + quoted(*other));
-    // Synonyms from WordNet, in the word's part of speech and its most frequent senses only, so that
-    // a noun never takes a verb's sign.
+    // Synonyms from WordNet, in the word's part of speech and its most frequent sense only, so that a
+    // noun never takes a verb's sign and "picnic" never becomes a breeze (its third sense).
     if (!inventory_.open_vocabulary() && pos != english::PartOfSpeech::unknown)
       for (const std::string& lemma : wn_lemmas)
-        for (const std::string& other : wordnet::synonyms(lemma, pos))
+        for (const std::string& other : wordnet::synonyms(lemma, pos, 1))
           if (const auto gloss = inventory_.gloss_for(other))
-            return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": " + as + "WordNet synonym " + quoted(other));
+            return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": " + as + "WordNet synonym " + quoted(other) +
+                                       " (its most frequent sense)");
     fingerspell(w, "no sign in the lexicon");
   }
 
@@ -612,15 +638,18 @@ std::vector<Word> words_of(const std::vector<Token>& tokens, std::size_t from, s
   return out;
 }
 
-// Parses one sentence's words with link-grammar: words and numbers as written (an expanded
-// contraction as its parts: "don't" → do not), pauses as their punctuation, then the terminator.
+// Parses one sentence's words with link-grammar: words and numbers as written, pauses as their
+// punctuation, then the terminator.
 english::ParsedSentence parse_words(const std::vector<Word>& words, std::string_view terminator) {
   std::vector<std::string> text;
   std::vector<std::size_t> index;  // words[index[k]] is text[k]
   for (std::size_t k = 0; k < words.size(); ++k) {
     const Word& w = words[k];
     if (w.kind == TokenKind::word || w.kind == TokenKind::number) {
-      text.push_back(utf8::lower(w.text) == w.lower ? w.text : w.lower);
+      // A contraction goes to the parser as written ("didn't", "I'm"): link-grammar knows them, and
+      // "why did not you come" would not parse. Its later parts share its span and are left out.
+      if (k > 0 && words[k - 1].kind == TokenKind::word && words[k - 1].begin == w.begin) continue;
+      text.push_back(w.text);
       index.push_back(k);
     } else if (w.kind == TokenKind::pause && (w.text == "," || w.text == ";" || w.text == ":")) {
       text.push_back(w.text);
@@ -636,7 +665,21 @@ english::ParsedSentence parse_words(const std::vector<Word>& words, std::string_
   out.roles = std::move(parsed.roles);
   out.clauses = parsed.clauses;
   out.words.resize(words.size());
-  for (std::size_t k = 0; k < index.size(); ++k) out.words[index[k]] = parsed.words[k];
+  // The parser's word indices (participle) → this sentence's word indices.
+  for (auto& w : parsed.words)
+    if (w.participle >= 0) w.participle = static_cast<int>(index[static_cast<std::size_t>(w.participle)]);
+  for (auto& parts : parsed.parts)
+    for (auto& w : parts)
+      if (w.participle >= 0) w.participle = static_cast<int>(index[static_cast<std::size_t>(w.participle)]);
+  for (std::size_t k = 0; k < index.size(); ++k) {
+    if (k < parsed.words.size()) out.words[index[k]] = parsed.words[k];
+    // The later words of an expanded contraction ("I'm" → I am) take the parts link-grammar split off.
+    if (k >= parsed.parts.size()) continue;  // not parsed: no parts
+    for (std::size_t j = 0; j < parsed.parts[k].size(); ++j) {
+      const std::size_t at = index[k] + 1 + j;
+      if (at < words.size() && words[at].begin == words[index[k]].begin) out.words[at] = parsed.parts[k][j];
+    }
+  }
   return out;
 }
 
