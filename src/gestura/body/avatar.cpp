@@ -50,6 +50,14 @@ const HeadSculpt* find_head(const ImplicitBody& body) {
   return nullptr;
 }
 
+// How far below the hairline (metres at 1.70 m) hair standing off the scalp can still be: the
+// hair's shell ends 4 mm below the line, rounded over 2 mm. A bob's curtain is exempt: its line is
+// taken on the scalp under it, well above its hanging edge.
+constexpr float kLooseHairBelowLine = 0.006f;
+bool loose_hair_reaches(HairStyle style, const vec3& p, float k) {
+  return style == HairStyle::Bob || hair_field(p, k, style) < kLooseHairBelowLine * k;
+}
+
 // Material of each vertex: that of the nearest union primitive (a sculpt's own regions: the lips'
 // vermilion and the mouth's lining on the head), with hair, brows and lashes drawn by their fields
 // instead (avatar_material_borders.hpp), so their edges follow smooth curves.
@@ -70,9 +78,12 @@ std::vector<std::uint8_t> surface_materials(const ImplicitBody& body, const Mesh
     if (m == MaterialId::Cloth && p.y < params.hem * params.height &&
         below_the_waist[static_cast<std::size_t>(body.primitives[best].joint)])
       m = MaterialId::Trousers;
-    // Hair that stands off the scalp (a bob's curtain, its underside) is hair wherever it hangs.
+    // Hair that stands off the scalp (a bob's curtain, its underside) is hair wherever it hangs,
+    // though never below the hairline, where the hair's shell is cut off (HairSculpt): there the
+    // skin stands off the head's sculpt where the neck blends into it, and the shell's cut, nearest
+    // by a few millimetres, had left specks of hair on the nape.
     const bool loose_hair = m == MaterialId::Hair && body.primitives[best].shape == PrimitiveShape::Sculpt && head &&
-                            head->distance(p) > 0.002f * k;
+                            head->distance(p) > 0.002f * k && loose_hair_reaches(params.hair, p, k);
     if (!loose_hair && (m == MaterialId::Skin || m == MaterialId::Hair || m == MaterialId::Nail)) {
       m = hair_field(p, k, params.hair) < 0.0f                                          ? MaterialId::Hair
           : eyebrow_field(p, k) < 0.0f                                                  ? MaterialId::Brow
@@ -223,7 +234,7 @@ Avatar build_avatar(const AvatarParams& params, const AvatarOptions& options) {
   for (MaterialBorder& border : borders)
     if (border.below == MaterialId::Hair && head)
       border.field = [head, k, style = params.hair](const vec3& p) {
-        return head->distance(p) > 0.002f * k ? -0.01f : hair_field(p, k, style);
+        return head->distance(p) > 0.002f * k && loose_hair_reaches(style, p, k) ? -0.01f : hair_field(p, k, style);
       };
   borders.push_back({MaterialId::Nail, MaterialId::Skin, [&nails](const vec3& p) { return nails.field(p); }});
   const float hem = params.hem * params.height;

@@ -89,6 +89,10 @@ std::vector<TrunkSection> trunk_sections(const AvatarParams& p) {
       {1.230f, 0.150f, 0.116f, 0.098f, -0.002f, chest, g},        // chest (0.174 H, Drillis & Contini)
       {1.310f, 0.146f, 0.110f, 0.098f, -0.008f, chest, g},        // armpits
       {1.350f, 0.138f, 0.090f, 0.088f, -0.016f, chest, g},        // under the shoulder girdle
+      // The upper chest slopes back to the clavicles and the base of the neck (ending the loft at
+      // the armpits left a shelf across the chest under the girdle).
+      {1.385f, 0.118f, 0.066f, 0.080f, -0.024f, chest, g},        // the clavicles' front
+      {1.415f, 0.082f, 0.050f, 0.062f, -0.030f, 1.0f, 0.5f * (1.0f + g)},  // the base of the neck
   };
   std::vector<TrunkSection> out;
   for (const Row& r : rows)
