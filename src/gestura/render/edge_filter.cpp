@@ -91,23 +91,30 @@ void smooth_edges(Image& image, ImageRect rect, EdgeFilterScratch& scratch) {
       l[x] = (0.299f * p[4 * x] + 0.587f * p[4 * x + 1] + 0.114f * p[4 * x + 2]) * (1.0f / 255.0f);
     float* lo = &scratch.row_min[static_cast<std::size_t>(y) * w];
     float* hi = &scratch.row_max[static_cast<std::size_t>(y) * w];
-    for (int x = 0; x < w; ++x) {
-      const float a = l[std::max(x - 1, 0)], b = l[x], c = l[std::min(x + 1, w - 1)];
-      lo[x] = std::min({a, b, c}), hi[x] = std::max({a, b, c});
+    lo[0] = std::min(l[0], l[std::min(1, w - 1)]), hi[0] = std::max(l[0], l[std::min(1, w - 1)]);
+    for (int x = 1; x + 1 < w; ++x) {  // no clamping inside: the compiler vectorises this
+      lo[x] = std::min(std::min(l[x - 1], l[x]), l[x + 1]);
+      hi[x] = std::max(std::max(l[x - 1], l[x]), l[x + 1]);
     }
+    if (w > 1) lo[w - 1] = std::min(l[w - 2], l[w - 1]), hi[w - 1] = std::max(l[w - 2], l[w - 1]);
   }
   const Region region{scratch.source.data(), scratch.luma.data(), gx0, gy0, w, h};
+  scratch.range.resize(static_cast<std::size_t>(w));
+  float* range = scratch.range.data();
   for (int y = rect.y0; y < rect.y1; ++y) {
     const int ry = y - gy0;
-    const std::size_t above = static_cast<std::size_t>(std::max(ry - 1, 0)) * w, here = static_cast<std::size_t>(ry) * w,
-                      below = static_cast<std::size_t>(std::min(ry + 1, h - 1)) * w;
+    const float* lo_above = &scratch.row_min[static_cast<std::size_t>(std::max(ry - 1, 0)) * w];
+    const float* lo_here = &scratch.row_min[static_cast<std::size_t>(ry) * w];
+    const float* lo_below = &scratch.row_min[static_cast<std::size_t>(std::min(ry + 1, h - 1)) * w];
+    const float* hi_above = &scratch.row_max[static_cast<std::size_t>(std::max(ry - 1, 0)) * w];
+    const float* hi_here = &scratch.row_max[static_cast<std::size_t>(ry) * w];
+    const float* hi_below = &scratch.row_max[static_cast<std::size_t>(std::min(ry + 1, h - 1)) * w];
+    // The 3×3 luma range bounds that of the centre and the four block means: below the threshold
+    // nothing can be an edge (most pixels stop here). A whole row at a time, vectorised.
+    for (int x = 0; x < w; ++x)
+      range[x] = std::max(std::max(hi_above[x], hi_here[x]), hi_below[x]) - std::min(std::min(lo_above[x], lo_here[x]), lo_below[x]);
     for (int x = rect.x0; x < rect.x1; ++x) {
-      // The 3×3 luma range bounds that of the centre and the four block means: below the
-      // threshold nothing can be an edge (most pixels stop here).
-      const std::size_t rx = static_cast<std::size_t>(x - gx0);
-      const float lo = std::min({scratch.row_min[above + rx], scratch.row_min[here + rx], scratch.row_min[below + rx]});
-      const float hi = std::max({scratch.row_max[above + rx], scratch.row_max[here + rx], scratch.row_max[below + rx]});
-      if (hi - lo < kContrastMin) continue;
+      if (range[x - gx0] < kContrastMin) continue;
       bool changed = false;
       const Rgb c = filter_pixel(region, x, y, changed);
       if (!changed) continue;

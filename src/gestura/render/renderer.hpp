@@ -10,8 +10,9 @@
 //         of (delta, morph index) entries per vertex, weights in another texture buffer).
 //   Cpu — morphs and linear blend skinning on the CPU (body/morph, body/skinning), the result
 //         streamed to the GPU every frame (comparison and fallback beyond max_gpu_joints()).
-// Frames go to a 4× MSAA offscreen target, resolved to a texture; read_pixels() reads it back,
-// present() blits it into the window.
+// Frames go to an offscreen target (4× MSAA by default, or one sample; see Antialiasing), resolved
+// to a texture; read_pixels() reads it back (and runs the edge filter if asked), present() blits
+// it into the window.
 #include <cstdint>
 #include <memory>
 #include <span>
