@@ -37,7 +37,7 @@
 #include "gestura/render/occluders.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/renderer.hpp"
-#include "gestura/render/staged_file.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/render/subject.hpp"
 #include "gestura/render/viewer_controls.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
