@@ -187,12 +187,24 @@ class Planner {
   }
 
   // The collision body is a few capsules and misses what stands out of them (the chin, nose,
-  // lips): a hand this near one of the body's sites is at the body too.
+  // lips): a hand this near one of the body's sites is at the body too. A finger counts along its
+  // length (knuckle to tip), not at its ends alone: an index held up with its middle close to the
+  // nose has both ends 5 cm from the nose and from the face's capsule (the nose stands 2.3 cm out
+  // of it), and was taken for a hand out in space and moved 4 cm aside.
   bool near_a_body_site(const std::array<vec3, 11>& pts, const vec3& at) const {
-    for (const vec3& site : body_site_points_)
+    for (const vec3& site : body_site_points_) {
       for (const vec3& p : pts)
         if (glm::distance(at + p, site) < kAtBody) return true;
+      for (std::size_t f = 0; f < 4; ++f)  // hand_points: tips of thumb..pinky at 2..6, knuckles of index..pinky at 7..10
+        if (distance_to_segment(site, at + pts[7 + f], at + pts[3 + f]) < kAtBody) return true;
+    }
     return false;
+  }
+  static float distance_to_segment(const vec3& p, const vec3& a, const vec3& b) {
+    const vec3 ab = b - a;
+    const float len2 = glm::dot(ab, ab);
+    const float t = len2 > 0.0f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+    return glm::distance(p, a + t * ab);
   }
 
   // How far the hand's nearest point (hand_points) is from the body with its palm centre at `at`.
