@@ -113,6 +113,21 @@ void PoseEditor::mirror() {
   }
 }
 
+void PoseEditor::set_pose(const Pose& pose, const std::string& merge_key) {
+  if (pose.size() != pose_.size()) return;
+  record(merge_key);
+  pose_ = pose;
+  clamp_to_limits(*skeleton_, pose_);
+}
+
+void PoseEditor::set_pose_and_morphs(const Pose& pose, std::span<const float> morphs, const std::string& merge_key) {
+  if (pose.size() != pose_.size() || morphs.size() != morphs_.size()) return;
+  record(merge_key);
+  pose_ = pose;
+  clamp_to_limits(*skeleton_, pose_);
+  std::copy(morphs.begin(), morphs.end(), morphs_.begin());
+}
+
 void PoseEditor::reset() {
   record({});
   pose_ = rest_pose(*skeleton_);

@@ -39,6 +39,10 @@ class PoseEditor {
   // Left and right exchanged and reflected in the body's mid-plane (x = 0).
   void mirror();
   void reset();
+  // Replaces the pose (an IK drag, a key read from the timeline), clamped into the limits.
+  void set_pose(const Pose& pose, const std::string& merge_key = {});
+  // Replaces pose and face weights together (sizes must match the editor's).
+  void set_pose_and_morphs(const Pose& pose, std::span<const float> morphs, const std::string& merge_key = {});
 
   bool undo();
   bool redo();
