@@ -38,6 +38,14 @@ void PoseEditor::record(const std::string& merge_key) {
   if (undo_.size() > 500) undo_.erase(undo_.begin());
   redo_.clear();
   last_key_ = merge_key;
+  ++revision_;
+}
+
+void PoseEditor::assign(const Pose& pose, std::span<const float> morphs) {
+  if (pose.size() != pose_.size() || morphs.size() != morphs_.size()) return;
+  pose_ = pose;
+  std::copy(morphs.begin(), morphs.end(), morphs_.begin());
+  undo_.clear(), redo_.clear(), last_key_.clear();
 }
 
 bool PoseEditor::set_angles_degrees(int joint, const vec3& degrees, const std::string& merge_key) {
@@ -141,6 +149,7 @@ bool PoseEditor::undo() {
   morphs_ = undo_.back().morphs;
   undo_.pop_back();
   last_key_.clear();
+  ++revision_;
   return true;
 }
 
@@ -151,6 +160,7 @@ bool PoseEditor::redo() {
   morphs_ = redo_.back().morphs;
   redo_.pop_back();
   last_key_.clear();
+  ++revision_;
   return true;
 }
 

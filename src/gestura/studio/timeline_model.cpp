@@ -351,8 +351,11 @@ void Timeline::sample(float t, Pose& pose, std::span<float> morph_weights) const
     }
     const int joint = c.joint;
     vec3 angles = joint_angles(*skeleton_, joint, pose.rotations[static_cast<std::size_t>(joint)]);
+    // Keyed angles stay inside the joint's limits (a typed or overshooting spline value stops there).
+    const JointDofs& dofs = skeleton_->dofs[static_cast<std::size_t>(joint)];
     for (; i < channels_.size() && channels_[i].joint == joint; ++i)
-      if (!channels_[i].keys.empty()) angles[channels_[i].axis] = glm::radians(evaluate(channels_[i].keys, t));
+      if (const int axis = channels_[i].axis; !channels_[i].keys.empty())
+        angles[axis] = std::clamp(glm::radians(evaluate(channels_[i].keys, t)), dofs.min_angle[axis], dofs.max_angle[axis]);
     pose.rotations[static_cast<std::size_t>(joint)] = joint_rotation(*skeleton_, joint, angles);
   }
 }
