@@ -1966,6 +1966,15 @@ nlohmann::json Studio::dump_timeline_and_figure() {
   out["figure"] = f;
   // The IK drag: the dragged limb's end where the pose has it now, and the last target.
   nlohmann::json ik{{"joint", pose_joint_ >= 0 ? subject_.skeleton.names[static_cast<std::size_t>(pose_joint_)] : std::string()}};
+  {
+    std::vector<mat4> model(subject_.skeleton.size());
+    pose_editor_->model(model);
+    for (const char* name : {"r_wrist", "l_wrist", "r_ankle", "l_ankle"})
+      if (const int k = subject_.skeleton.find(name); k >= 0) {
+        const vec3 p(model[static_cast<std::size_t>(k)][3]);
+        ik[name] = {p.x, p.y, p.z};
+      }
+  }
   if (ik_limb_) {
     std::vector<mat4> model(subject_.skeleton.size());
     pose_editor_->model(model);
