@@ -1538,7 +1538,11 @@ void Studio::set_figure_mode(bool on) {
   if (on == figure_mode_) return;
   if (on) set_learning(false), set_timeline_mode(false), posing_ = false;
   // The figure is seen whole (a sign frames the upper body); the sign's framing comes back after.
-  if (on) sign_box_ = controls_->box, controls_->box = framing_box(subject_.mesh, subject_.skeleton);
+  if (on) {
+    sign_box_ = controls_->box;
+    controls_->box = framing_box(subject_.mesh, subject_.skeleton);
+    controls_->box.hips_y = controls_->box.min.y;  // the cut at the feet: the whole figure
+  }
   else controls_->box = sign_box_;
   controls_->select(CameraPreset::Front);
   figure_mode_ = on;
