@@ -93,6 +93,11 @@ class Studio {
     animator_.emplace(subject_);
     renderer_.upload(subject_.mesh);
     renderer_.set_occluders(find_occluders(subject_.skeleton, subject_.mesh));
+    // While the preview plays it is drawn with one sample per pixel (on a CPU renderer a 4-sample
+    // frame costs about twice as much); a still picture is drawn again with 4 samples.
+    moving_renderer_.emplace(Look{}, Antialiasing::None);
+    moving_renderer_->upload(subject_.mesh);
+    moving_renderer_->set_occluders(find_occluders(subject_.skeleton, subject_.mesh));
     controls_.emplace(framing_box(subject_.mesh, subject_.skeleton), CameraPreset::Front, 1.0f);
     std::vector<std::string> morph_names;
     for (const MorphTarget& m : subject_.mesh.morphs) morph_names.push_back(m.name);
@@ -211,7 +216,10 @@ class Studio {
   StudioModel model_;
   std::string recovery_file_;
   WindowGlContext window_;
-  Renderer renderer_;
+  Renderer renderer_;                       // still pictures (4x MSAA)
+  std::optional<Renderer> moving_renderer_;  // while playing (one sample)
+  Renderer* shown_renderer_ = &renderer_;    // the one whose picture the preview shows
+  bool rendered_moving_ = false;
   app::Workspace* workspace_ = nullptr;
   std::unique_ptr<app::Workspace> own_workspace_;
   const SigningRig* rig_ = nullptr;
@@ -748,8 +756,11 @@ float Studio::flexion_at(float t, char side) {
 void Studio::render_preview() {
   const int width = std::max(16, static_cast<int>(preview_panel_.x * request_.preview_scale));
   const int height = std::max(16, static_cast<int>(preview_panel_.y * request_.preview_scale));
+  const bool moving = timeline_mode_ ? tl_view_.playing : controls_->playing && !posing_ && !figure_mode_;
+  Renderer& renderer = moving ? *moving_renderer_ : renderer_;
   if (width != preview_width_ || height != preview_height_) {
     renderer_.resize(width, height);
+    moving_renderer_->resize(width, height);
     preview_width_ = width, preview_height_ = height;
   }
   const bool two = learning_ && two_views_;
@@ -785,25 +796,28 @@ void Studio::render_preview() {
   // A still picture is not drawn again: paused, same camera, same clip, same size.
   const bool same = rendered_ && rendered_clip_ == shown_clip_ && rendered_time_ == controls_->time &&
                     rendered_view_ == view.camera.view && rendered_projection_ == view.camera.projection &&
-                    rendered_size_ == glm::ivec2(width, height) && rendered_layout_ == (two ? 1 + static_cast<int>(second_view_) : 0);
+                    rendered_size_ == glm::ivec2(width, height) && rendered_layout_ == (two ? 1 + static_cast<int>(second_view_) : 0) &&
+                    rendered_moving_ == moving;
   if (same) return;
+  rendered_moving_ = moving;
+  shown_renderer_ = &renderer;
   rendered_layout_ = two ? 1 + static_cast<int>(second_view_) : 0;
   rendered_ = true, rendered_clip_ = shown_clip_, rendered_time_ = controls_->time;
   rendered_view_ = view.camera.view, rendered_projection_ = view.camera.projection, rendered_size_ = glm::ivec2(width, height);
   if (figure_mode_) {
     figure_skinning(pose_model_, pose_skinning_);
     const std::vector<float> no_morphs(subject_.mesh.morphs.size(), 0.0f);
-    renderer_.render(views, pose_skinning_, no_morphs);
+    renderer.render(views, pose_skinning_, no_morphs);
     return;
   }
   if (posing_ || timeline_mode_) {
     pose_editor_->model(pose_model_);
     for (std::size_t j = 0; j < pose_model_.size(); ++j) pose_skinning_[j] = pose_model_[j] * inverse_bind_[j];
-    renderer_.render(views, pose_skinning_, pose_editor_->morph_weights());
+    renderer.render(views, pose_skinning_, pose_editor_->morph_weights());
     return;
   }
   animator_->pose_at(controls_->time);
-  renderer_.render(views, animator_->skinning(), animator_->morph_weights());
+  renderer.render(views, animator_->skinning(), animator_->morph_weights());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1051,9 +1065,10 @@ void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
     ImVec2 avail = ImGui::GetContentRegionAvail();
     avail.y = std::max(32.0f, avail.y - bar);
     preview_panel_ = avail;
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(renderer_.resolved_texture())), avail,
-                 ImVec2(0, static_cast<float>(preview_height_) / static_cast<float>(std::max(1, renderer_.height()))),
-                 ImVec2(static_cast<float>(preview_width_) / static_cast<float>(std::max(1, renderer_.width())), 0));
+    const Renderer& shown = *shown_renderer_;
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(shown.resolved_texture())), avail,
+                 ImVec2(0, static_cast<float>(preview_height_) / static_cast<float>(std::max(1, shown.height()))),
+                 ImVec2(static_cast<float>(preview_width_) / static_cast<float>(std::max(1, shown.width())), 0));
     draw_preview_overlay(ImGui::GetItemRectMin(), avail);
     if ((posing_ || timeline_mode_) && !ik_tool_ && ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
       // Pick the joint nearest to the click, as the camera projects it.
@@ -1424,6 +1439,8 @@ void Studio::draw_popups() {
     ImGui::Text("Ctrl+N new   Ctrl+S save   Ctrl+Z undo   Ctrl+Y / Ctrl+Shift+Z redo   Ctrl+D duplicate   Ctrl+Q quit");
     ImGui::Text("Del remove the selected symbol   Space play/pause   , . step a frame   F1..F4 front, side, 3/4, top");
     ImGui::Text("Preview: left drag orbit, right drag pan, wheel zoom; click the timeline to scrub");
+    ImGui::Text("F7 figure editor   F8 timeline editor   F9 sign editor   F10 learning   F11 pose editor   K key the pose (timeline)");
+    ImGui::Text("Pose/timeline: tick 'drag hand/foot (IK)' under the view, then drag an arm or leg");
     if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }
