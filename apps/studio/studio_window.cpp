@@ -1071,16 +1071,23 @@ void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
                  ImVec2(static_cast<float>(preview_width_) / static_cast<float>(std::max(1, shown.width())), 0));
     draw_preview_overlay(ImGui::GetItemRectMin(), avail);
     if ((posing_ || timeline_mode_) && !ik_tool_ && ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
-      // Pick the joint nearest to the click, as the camera projects it.
+      // Pick the bone under the click (the mouse ray against the bones' capsules), else the joint
+      // nearest to the click as the camera projects it.
       const ImVec2 origin = ImGui::GetItemRectMin(), m = ImGui::GetIO().MousePos;
-      const Camera camera = controls_->camera(controls_->aspect);
-      float best = 400.0f;  // 20 px
-      for (std::size_t j = 0; j < pose_model_.size(); ++j) {
-        const vec4 clip = camera.projection * camera.view * vec4(vec3(pose_model_[j][3]), 1.0f);
-        if (clip.w <= 0.0f) continue;
-        const float x = origin.x + (clip.x / clip.w * 0.5f + 0.5f) * avail.x, y = origin.y + (0.5f - clip.y / clip.w * 0.5f) * avail.y;
-        const float d = (x - m.x) * (x - m.x) + (y - m.y) * (y - m.y);
-        if (d < best) best = d, pose_joint_ = static_cast<int>(j);
+      const int before = pose_joint_;
+      pose_joint_ = -1;
+      pick_limb((m.x - origin.x) / avail.x, (m.y - origin.y) / avail.y, vec2(avail.x, avail.y));
+      if (pose_joint_ < 0) {
+        pose_joint_ = before;
+        const Camera camera = controls_->camera(controls_->aspect);
+        float best = 400.0f;  // 20 px
+        for (std::size_t j = 0; j < pose_model_.size(); ++j) {
+          const vec4 clip = camera.projection * camera.view * vec4(vec3(pose_model_[j][3]), 1.0f);
+          if (clip.w <= 0.0f) continue;
+          const float x = origin.x + (clip.x / clip.w * 0.5f + 0.5f) * avail.x, y = origin.y + (0.5f - clip.y / clip.w * 0.5f) * avail.y;
+          const float d = (x - m.x) * (x - m.x) + (y - m.y) * (y - m.y);
+          if (d < best) best = d, pose_joint_ = static_cast<int>(j);
+        }
       }
     }
     if (ImGui::IsItemHovered()) {
@@ -1333,6 +1340,12 @@ void Studio::draw_joint(const ImVec2& pos, const ImVec2& size) {
     if (ImGui::Button("Undo")) pose_editor_->undo();
     ImGui::SameLine();
     if (ImGui::Button("Redo")) pose_editor_->redo();
+    if (posing_) {
+      // Key the pose into the timeline at its playhead (Mode -> Timeline editor shows it there).
+      char label[48];
+      std::snprintf(label, sizeof label, "Key pose into the timeline at %.2f s", tl_view_.time);
+      if (ImGui::Button(label)) key_pose_now(tl_view_.time);
+    }
     if (ImGui::CollapsingHeader("Handshape presets", ImGuiTreeNodeFlags_DefaultOpen)) {
       for (const char side : {'r', 'l'}) {
         ImGui::TextDisabled("%s hand", side == 'r' ? "right" : "left");
