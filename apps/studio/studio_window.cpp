@@ -1061,7 +1061,8 @@ void Studio::draw_palette(const ImVec2& pos, const ImVec2& size) {
 
 void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
   if (begin_panel("Preview", pos, size)) {
-    const float bar = ImGui::GetFrameHeightWithSpacing() * 2 + 30;
+    // Room below the picture: the clip's timeline and transport, or one row of camera buttons.
+    const float bar = figure_or_timeline() || posing_ ? ImGui::GetFrameHeightWithSpacing() + 4 : ImGui::GetFrameHeightWithSpacing() * 2 + 30;
     ImVec2 avail = ImGui::GetContentRegionAvail();
     avail.y = std::max(32.0f, avail.y - bar);
     preview_panel_ = avail;
@@ -1582,6 +1583,10 @@ void Studio::set_figure_mode(bool on) {
 
 void Studio::sync_timeline_pose() {
   if (tl_view_.key_requested) tl_view_.key_requested = false, key_pose_now(tl_view_.time);
+  if (tl_view_.say_requested && !tl_view_.say_text.empty()) timeline_source_from_say(tl_view_.say_text);
+  if (tl_view_.sign_requested) timeline_source_from_sign();
+  if (tl_view_.clear_requested) timeline_->set_source(Clip{}, {}, {}), say("timeline: no source motion");
+  tl_view_.say_requested = tl_view_.sign_requested = tl_view_.clear_requested = false;
   if (tl_view_.time == tl_synced_time_ && timeline_->revision() == tl_synced_revision_) return;
   // The pose at the playhead replaces an unkeyed edit, as in every key-frame editor.
   Pose pose;
@@ -1880,7 +1885,7 @@ bool Studio::execute_timeline_or_figure(const ScriptStep& step) {
                                a == "strip-zoom" || a == "loop";
   if (timeline_action && !timeline_mode_) set_timeline_mode(true);
   if (timeline_mode_) {
-    if (a == "timeline-say") timeline_source_from_say(arg(0));
+    if (a == "timeline-say") tl_view_.say_text = arg(0), timeline_source_from_say(arg(0));
     else if (a == "timeline-sign") timeline_source_from_sign();
     else if (a == "timeline-clear") timeline_->set_source(Clip{}, {}, {});
     else if (a == "key-pose") key_pose_now(step.args.empty() ? tl_view_.time : number(0));
@@ -1900,6 +1905,7 @@ bool Studio::execute_timeline_or_figure(const ScriptStep& step) {
                                                         Tcb{step.args.size() > 3 ? number(3) : 0.0f, step.args.size() > 4 ? number(4) : 0.0f,
                                                             step.args.size() > 5 ? number(5) : 0.0f}))
         say("no key " + arg(1) + " on " + arg(0));
+      else tl_view_.channel = c, tl_view_.key = static_cast<int>(number(1)), tl_view_.follow_selection = true;
     } else if (a == "bar-duration") {
       if (!timeline_->set_bar_duration(static_cast<int>(number(0)), number(1))) say("no bar " + arg(0));
     } else if (a == "export-timeline") start_timeline_export(arg(0));

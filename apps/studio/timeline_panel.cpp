@@ -84,6 +84,14 @@ void advance(TimelineView& view, float seconds, float duration) {
 
 void draw_timeline_channels(Timeline& timeline, TimelineView& view) {
   ImGui::TextDisabled("%s", timeline.has_source() ? timeline.title().c_str() : "no source motion: keys over the rest pose");
+  // The motion the keys sit on: English signed as `gestura say` does, or the sign being edited.
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::InputTextWithHint("##say", "English to sign, Enter", &view.say_text, ImGuiInputTextFlags_EnterReturnsTrue)) view.say_requested = true;
+  if (ImGui::SmallButton("Sign it")) view.say_requested = true;
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Use the draft")) view.sign_requested = true;
+  ImGui::SameLine();
+  if (ImGui::SmallButton("No source")) view.clear_requested = true;
   if (ImGui::Button("Key pose")) view.key_requested = true;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("key the pose editor's pose at the playhead (every joint that differs)");
   ImGui::SameLine();

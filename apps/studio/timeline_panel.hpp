@@ -23,6 +23,10 @@ struct TimelineView {
   bool follow_selection = true;  // scroll the rows to the selected channel once
   std::string clip_gloss;   // "save as clip sign" field
   bool key_requested = false;  // the Key pose button was pressed (the studio keys the pose editor's pose)
+  std::string say_text;        // English to sign as the source motion
+  bool say_requested = false;  // "Sign it" was pressed
+  bool sign_requested = false; // "Use the draft" was pressed (the sign being edited)
+  bool clear_requested = false;
 };
 
 // Moves the playhead when playing (wrapping when looping, stopping at the end otherwise).

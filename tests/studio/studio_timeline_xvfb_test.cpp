@@ -95,7 +95,9 @@ TEST(StudioTimelineUnderXvfb, RetimingAKeyMovesItInTheExportedBvhAndABarRetimesT
                             "undo\n"  // the move
                             "export-timeline " + j + "c.bvh\n"
                             "save-clip-sign TESTWAVE\n"
+                            "timeline-say hello my name is\n"  // the keys over an utterance, for the screenshot
                             "key l_elbow.x 0.6 -80\n"
+                            "key-interp r_elbow.x 1 kb 0.5 0 0\n"
                             "time 0.7\n"
                             "wait 2\n"
                             "screenshot " + shots + "/studio-timeline.png\n"
