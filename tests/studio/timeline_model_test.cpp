@@ -150,3 +150,30 @@ TEST_F(TimelineFixture, KeysStayInOrderWhenDraggedAndUnknownChannelsAreRefused) 
 
 }  // namespace
 }  // namespace gestura::studio
+
+namespace gestura::studio {
+namespace {
+
+TEST(TimelineSource, UndoingANewSourceBringsBackTheOldMotionWithItsBars) {
+  const Skeleton skeleton = build_avatar_skeleton();
+  Timeline timeline(skeleton, {});
+  Clip a, b;
+  a.duration = 2.0f, b.duration = 5.0f;
+  a.resize_joints(skeleton.size()), b.resize_joints(skeleton.size());
+  const std::vector<SourceSign> two{{"ONE", 0.0f, 1.0f}, {"TWO", 1.0f, 2.0f}}, one{{"LONG", 0.0f, 5.0f}};
+  timeline.set_source(a, two, "one two");
+  timeline.set_source(b, one, "long");
+  EXPECT_NEAR(5.0f, timeline.duration(), 1e-5f);
+  ASSERT_TRUE(timeline.undo());
+  EXPECT_EQ("one two", timeline.title());
+  ASSERT_EQ(2u, timeline.bars().size());
+  EXPECT_NEAR(2.0f, timeline.duration(), 1e-5f);
+  EXPECT_NEAR(1.5f, timeline.source_time(1.5f), 1e-5f);
+  ASSERT_TRUE(timeline.undo());
+  EXPECT_FALSE(timeline.has_source());
+  ASSERT_TRUE(timeline.redo() && timeline.redo());
+  EXPECT_EQ("long", timeline.title());
+}
+
+}  // namespace
+}  // namespace gestura::studio

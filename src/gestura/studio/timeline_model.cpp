@@ -93,42 +93,46 @@ Timeline::Timeline(const Skeleton& skeleton, std::vector<std::string> morph_name
     : skeleton_(&skeleton), morph_names_(std::move(morph_names)), source_morph_channel_(morph_names_.size(), -1) {}
 
 void Timeline::record(const std::string& merge_key) {
-  if (merge_key.empty() || merge_key != last_key_ || undo_.empty()) undo_.push_back({channels_, bars_});
+  if (merge_key.empty() || merge_key != last_key_ || undo_.empty()) undo_.push_back(snapshot());
   if (undo_.size() > 500) undo_.erase(undo_.begin());
   redo_.clear();
   last_key_ = merge_key;
   ++revision_;
 }
 
-bool Timeline::undo() {
-  if (undo_.empty()) return false;
-  redo_.push_back({channels_, bars_});
-  channels_ = std::move(undo_.back().channels);
-  bars_ = std::move(undo_.back().bars);
-  undo_.pop_back();
+void Timeline::restore(Snapshot snapshot) {
+  channels_ = std::move(snapshot.channels);
+  bars_ = std::move(snapshot.bars);
+  source_ = std::move(snapshot.source);
+  title_ = std::move(snapshot.title);
+  for (std::size_t m = 0; m < morph_names_.size(); ++m) source_morph_channel_[m] = source_ ? source_->find_channel(morph_names_[m]) : -1;
   last_key_.clear();
   ++revision_;
+}
+
+bool Timeline::undo() {
+  if (undo_.empty()) return false;
+  redo_.push_back(snapshot());
+  restore(std::move(undo_.back()));
+  undo_.pop_back();
   return true;
 }
 
 bool Timeline::redo() {
   if (redo_.empty()) return false;
-  undo_.push_back({channels_, bars_});
-  channels_ = std::move(redo_.back().channels);
-  bars_ = std::move(redo_.back().bars);
+  undo_.push_back(snapshot());
+  restore(std::move(redo_.back()));
   redo_.pop_back();
-  last_key_.clear();
-  ++revision_;
   return true;
 }
 
 void Timeline::set_source(Clip clip, std::span<const SourceSign> signs, std::string title) {
   record({});
-  source_ = std::move(clip);
-  source_.resize_joints(skeleton_->size());
+  clip.resize_joints(skeleton_->size());
+  source_ = std::make_shared<const Clip>(std::move(clip));
   title_ = std::move(title);
-  bars_ = has_source() ? bars_from_signs(signs, source_.duration) : std::vector<TimelineBar>{};
-  for (std::size_t m = 0; m < morph_names_.size(); ++m) source_morph_channel_[m] = source_.find_channel(morph_names_[m]);
+  bars_ = has_source() ? bars_from_signs(signs, source_->duration) : std::vector<TimelineBar>{};
+  for (std::size_t m = 0; m < morph_names_.size(); ++m) source_morph_channel_[m] = source_->find_channel(morph_names_[m]);
 }
 
 float Timeline::bar_start(int bar) const {
@@ -327,15 +331,16 @@ void Timeline::sample_source(float t, Pose& pose, std::span<float> morph_weights
   pose = rest;
   std::fill(morph_weights.begin(), morph_weights.end(), 0.0f);
   if (!has_source()) return;
-  const float s = std::clamp(source_time(t), 0.0f, source_.duration);
+  const Clip& source = *source_;
+  const float s = std::clamp(source_time(t), 0.0f, source.duration);
   for (std::size_t j = 0; j < skeleton_->size(); ++j) {
-    if (!source_.rotations[j].empty()) pose.rotations[j] = sample_track(source_.rotations[j], s);
-    if (!source_.translations[j].empty()) pose.translations[j] = sample_track(source_.translations[j], s);
-    if (!source_.scales[j].empty()) pose.scales[j] = sample_track(source_.scales[j], s);
+    if (!source.rotations[j].empty()) pose.rotations[j] = sample_track(source.rotations[j], s);
+    if (!source.translations[j].empty()) pose.translations[j] = sample_track(source.translations[j], s);
+    if (!source.scales[j].empty()) pose.scales[j] = sample_track(source.scales[j], s);
   }
   for (std::size_t m = 0; m < morph_weights.size() && m < source_morph_channel_.size(); ++m)
-    if (const int c = source_morph_channel_[m]; c >= 0 && !source_.channels[static_cast<std::size_t>(c)].empty())
-      morph_weights[m] = sample_track(source_.channels[static_cast<std::size_t>(c)], s);
+    if (const int c = source_morph_channel_[m]; c >= 0 && !source.channels[static_cast<std::size_t>(c)].empty())
+      morph_weights[m] = sample_track(source.channels[static_cast<std::size_t>(c)], s);
 }
 
 void Timeline::sample(float t, Pose& pose, std::span<float> morph_weights) const {
@@ -370,7 +375,7 @@ Clip Timeline::bake(float fps) const {
   clip.duration = static_cast<float>(frames - 1) * step;
   std::vector<bool> moves_translation(skeleton_->size(), false);
   for (std::size_t j = 0; j < skeleton_->size(); ++j)
-    moves_translation[j] = skeleton_->parents[j] < 0 || (has_source() && !source_.translations[j].empty());
+    moves_translation[j] = skeleton_->parents[j] < 0 || (has_source() && !source_->translations[j].empty());
   for (std::size_t m = 0; m < morph_names_.size(); ++m) clip.channel(morph_names_[m]);
   Pose pose;
   pose.resize(skeleton_->size());

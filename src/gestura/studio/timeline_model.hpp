@@ -11,6 +11,7 @@
 //     step, linear, Catmull-Rom or Kochanek–Bartels with its own tension, continuity and bias.
 // Every edit is undoable. The whole is baked into a Clip (sampled frames) for export.
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -80,7 +81,7 @@ class Timeline {
   // ---- the source motion ----
   // Replaces the source (and its bars); keys stay. An empty clip removes the source.
   void set_source(Clip clip, std::span<const SourceSign> signs, std::string title);
-  bool has_source() const { return source_.duration > 0.0f; }
+  bool has_source() const { return source_ && source_->duration > 0.0f; }
   const std::string& title() const { return title_; }
   const std::vector<TimelineBar>& bars() const { return bars_; }
   float bar_start(int bar) const;  // where it begins on the timeline
@@ -130,16 +131,21 @@ class Timeline {
   std::uint64_t revision() const { return revision_; }
 
  private:
+  // An undo step holds the source too (shared, so a step costs no copy of the motion).
   struct Snapshot {
     std::vector<TimelineChannel> channels;
     std::vector<TimelineBar> bars;
+    std::shared_ptr<const Clip> source;
+    std::string title;
   };
+  Snapshot snapshot() const { return {channels_, bars_, source_, title_}; }
+  void restore(Snapshot snapshot);
   void record(const std::string& merge_key);
   void sample_source(float t, Pose& pose, std::span<float> morph_weights) const;
 
   const Skeleton* skeleton_;
   std::vector<std::string> morph_names_;
-  Clip source_;
+  std::shared_ptr<const Clip> source_;
   std::vector<int> source_morph_channel_;  // per morph: the source clip's channel, or -1
   std::string title_;
   std::vector<TimelineBar> bars_;
