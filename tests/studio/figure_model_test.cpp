@@ -4,6 +4,7 @@
 // picking a bone with a ray, dragging a wrist to a target.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "gestura/body/avatar_skeleton.hpp"
@@ -144,6 +145,11 @@ TEST(LimbDrag, ARayThroughTheForearmPicksItAndDraggingTheWristReachesTheTarget) 
   EXPECT_LT(glm::length(vec3(model[static_cast<std::size_t>(wrist)][3]) - target), 0.01f);
   EXPECT_NEAR(left, glm::length(vec3(model[static_cast<std::size_t>(wrist)][3]) - target), 1e-4f);
   for (std::size_t j = 0; j < s.size(); ++j) EXPECT_TRUE(within_limits(s, static_cast<int>(j), pose.rotations[j])) << s.names[j];
+  // A target far out of reach (or not a point) leaves a valid pose, pointing the arm at it.
+  Pose far = rest_pose(s);
+  EXPECT_GT(drag_limb(s, far, *limb, vec3(1e30f, 0.0f, 0.0f)), 1.0f);
+  EXPECT_TRUE(std::isinf(drag_limb(s, far, *limb, vec3(NAN, 0.0f, 0.0f))));
+  for (std::size_t j = 0; j < s.size(); ++j) EXPECT_TRUE(std::isfinite(far.rotations[j].w)) << s.names[j];
   // A foot.
   const auto leg = limb_of(s, s.find("l_knee"));
   ASSERT_TRUE(leg);

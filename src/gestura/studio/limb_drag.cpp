@@ -81,16 +81,25 @@ std::optional<DragLimb> limb_of(const Skeleton& skeleton, int joint) {
   return std::nullopt;
 }
 
-float drag_limb(const Skeleton& skeleton, Pose& pose, const DragLimb& limb, const vec3& target) {
+float drag_limb(const Skeleton& skeleton, Pose& pose, const DragLimb& limb, const vec3& wanted) {
   std::vector<mat4> model(skeleton.size());
   local_to_model(skeleton, pose, model);
   const vec3 start(model[static_cast<std::size_t>(limb.start)][3]), mid(model[static_cast<std::size_t>(limb.mid)][3]);
+  const vec3 end(model[static_cast<std::size_t>(limb.end)][3]);
+  // A target far beyond reach (a typed 1e30, a ray nearly parallel to the drag plane) is brought
+  // within twice the limb's length: the limb points at it all the same, and the solvers see sane numbers.
+  vec3 target = wanted;
+  const float reach = 2.0f * (glm::length(mid - start) + glm::length(end - mid));
+  const bool finite = std::isfinite(target.x) && std::isfinite(target.y) && std::isfinite(target.z);
+  if (!finite) target = end;
+  else if (glm::length(target - start) > reach) target = start + glm::normalize(target - start) * reach;
   // The elbow bends out, down and back; the knee forward (the avatar faces +Z, its left is +X).
   const float out = limb.side == 'l' ? 1.0f : -1.0f;
   const vec3 pole = limb.arm ? start + vec3(0.4f * out, -0.5f, -0.6f) : mid + vec3(0.0f, 0.0f, 0.8f);
   const vec3 axis = limb.arm ? vec3(-1, 0, 0) : vec3(1, 0, 0);
   const LimbIkResult r = solve_limb(skeleton, pose, limb.start, limb.mid, limb.end, axis, target, pole);
-  if (r.position_error < 2e-3f) return r.position_error;
+  if (r.position_error < 2e-3f && target == wanted) return r.position_error;
+  if (r.position_error < 2e-3f) return finite ? end_error(skeleton, pose, limb.end, wanted) : std::numeric_limits<float>::infinity();
   // A limit stopped the analytic solution (or the target is out of reach): let CCD use every free
   // axis of the chain, from where the two-bone solve left it, and keep the better of the two.
   const Pose analytic = pose;
@@ -99,9 +108,10 @@ float drag_limb(const Skeleton& skeleton, Pose& pose, const DragLimb& limb, cons
   const mat4 base = parent_model_matrix(skeleton, pose, limb.start);
   solve_ccd(skeleton, chain, base, IkTarget{target}, IkSettings{}, ws, pose);
   const float ccd = end_error(skeleton, pose, limb.end, target);
-  if (ccd <= r.position_error) return ccd;
-  pose = analytic;
-  return r.position_error;
+  if (ccd > r.position_error) pose = analytic;
+  if (target == wanted) return std::min(ccd, r.position_error);
+  // The distance left to what was asked for (infinite when that was not a point).
+  return finite ? end_error(skeleton, pose, limb.end, wanted) : std::numeric_limits<float>::infinity();
 }
 
 }  // namespace gestura::studio
