@@ -1558,6 +1558,7 @@ void Studio::set_timeline_mode(bool on) {
   if (on) {
     set_learning(false), set_figure_mode(false);
     posing_ = false;
+    controls_->playing = false;  // the sign editor's clip does not play behind the timeline
     tl_synced_time_ = -1.0f;  // show the timeline's pose at the playhead
   }
   timeline_mode_ = on;
@@ -1567,7 +1568,7 @@ void Studio::set_timeline_mode(bool on) {
 
 void Studio::set_figure_mode(bool on) {
   if (on == figure_mode_) return;
-  if (on) set_learning(false), set_timeline_mode(false), posing_ = false;
+  if (on) set_learning(false), set_timeline_mode(false), posing_ = false, controls_->playing = false;
   // The figure is seen whole (a sign frames the upper body); the sign's framing comes back after.
   if (on) {
     sign_box_ = controls_->box;
