@@ -1,7 +1,9 @@
 // gestura check FILE: parse every sign of a lexicon (.jsonl) or SiGML file and report failures.
 #include <cstdio>
+#include <optional>
 
 #include "command.hpp"
+#include "gestura/body/avatar.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/sign/sign_check.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
@@ -21,7 +23,14 @@ int run_check(const std::vector<std::string>& args) {
     else throw gestura::Error("check takes one FILE, got also " + a);
   }
   if (path.empty()) throw gestura::Error("check needs a FILE (.jsonl or .sigml)");
-  if (synthesize) gestura::connect_synthesis_to_check();
+  // One avatar and rig for the whole run, when signs are synthesized.
+  std::optional<gestura::Avatar> avatar;
+  std::optional<gestura::SigningRig> rig;
+  if (synthesize) {
+    avatar.emplace(gestura::build_avatar());
+    rig.emplace(gestura::make_signing_rig(*avatar));
+    options.synthesize = gestura::synthesis_check(*rig);
+  }
   const gestura::sign::CheckReport r = gestura::sign::check_file(path, options);
   for (const std::string& d : r.descriptions) std::printf("%s\n", d.c_str());
   for (const std::string& f : r.failures) std::printf("%s\n", f.c_str());

@@ -9,18 +9,13 @@
 namespace gestura::sign {
 namespace {
 
-SynthesisHook& hook_slot() {
-  static SynthesisHook hook;
-  return hook;
-}
-
 // Counts a parsed sign and runs synthesis when connected.
 void after_parse(CheckReport& report, const HamSign& sign, std::span<const NonManual> nonmanual,
                  const std::string& place, const CheckOptions& options) {
   ++report.parsed;
   if (options.describe_parsed) report.descriptions.push_back(place + ": " + describe(sign));
-  if (!report.synthesis_connected) return;
-  if (const auto why = synthesis_hook()(sign, nonmanual)) {
+  if (!options.synthesize) return;
+  if (const auto why = options.synthesize(sign, nonmanual)) {
     ++report.failed;
     report.failures.push_back(place + ": synthesis failed: " + *why);
   } else {
@@ -42,12 +37,9 @@ std::string_view extension(std::string_view path) {
 
 }  // namespace
 
-void set_synthesis_hook(SynthesisHook hook) { hook_slot() = std::move(hook); }
-const SynthesisHook& synthesis_hook() { return hook_slot(); }
-
 CheckReport check_jsonl(std::string_view text, std::string_view file_name, const CheckOptions& options) {
   CheckReport report;
-  report.synthesis_connected = static_cast<bool>(synthesis_hook());
+  report.synthesis_connected = static_cast<bool>(options.synthesize);
   std::size_t start = 0;
   int line_number = 0;
   while (start < text.size()) {
@@ -86,7 +78,7 @@ CheckReport check_jsonl(std::string_view text, std::string_view file_name, const
 
 CheckReport check_sigml(std::string_view text, std::string_view file_name, const CheckOptions& options) {
   CheckReport report;
-  report.synthesis_connected = static_cast<bool>(synthesis_hook());
+  report.synthesis_connected = static_cast<bool>(options.synthesize);
   for (const SigmlEntry& entry : read_sigml_entries(text, file_name, options.parse)) {
     ++report.signs;
     const std::string place = std::string(file_name) + ":" + std::to_string(entry.line) + ": " + entry.gloss;

@@ -1,6 +1,6 @@
 #pragma once
 // Batch check of sign files (.jsonl lexicons with a `hamnosys` field, .sigml documents): parse
-// every sign and, once synthesis is connected, synthesize it. Backs `gestura check`.
+// every sign and, when the caller passes a synthesis step, synthesize it. Backs `gestura check`.
 #include <functional>
 #include <optional>
 #include <span>
@@ -15,16 +15,14 @@
 namespace gestura::sign {
 
 // The synthesis step: the manual sign and its non-manual tiers (empty outside SiGML). Returns
-// nullopt when the sign was synthesized, else the reason it was not.
-// Nothing is connected yet: while synthesis_hook() is empty, check reports 0 synthesized signs.
-// The synthesis module connects itself with set_synthesis_hook().
-using SynthesisHook = std::function<std::optional<std::string>(const HamSign&, std::span<const NonManual>)>;
-void set_synthesis_hook(SynthesisHook hook);
-const SynthesisHook& synthesis_hook();
+// nullopt when the sign was synthesized, else the reason it was not. sign_synthesis.hpp makes one
+// for an avatar (synthesis_check); a check without one parses only.
+using SynthesisCheck = std::function<std::optional<std::string>(const HamSign&, std::span<const NonManual>)>;
 
 struct CheckOptions {
   ParseOptions parse;
   bool describe_parsed = false;  // fill CheckReport::descriptions (gestura check --show)
+  SynthesisCheck synthesize;     // empty: parse only (CheckReport::synthesized stays 0)
 };
 
 struct CheckReport {
@@ -34,7 +32,7 @@ struct CheckReport {
   int failed = 0;                     // not parsed, or parsed but synthesis failed
   std::vector<std::string> failures;  // one line per failing sign: "file:line: gloss: reason"
   std::vector<std::string> descriptions;  // "file:line: gloss: <describe(sign)>" when asked for
-  bool synthesis_connected = false;
+  bool synthesis_connected = false;  // a synthesis step was given
 };
 
 // One object per line with a `hamnosys` string (Unicode) or, failing that, a `names` string.
