@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "command.hpp"
-#include "gestura/body/avatar_source.hpp"
+#include "gestura/io/avatar_source.hpp"
 #include "gestura/body/face_morphs.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/body/body_sites.hpp"

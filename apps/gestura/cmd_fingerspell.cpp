@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "command.hpp"
-#include "gestura/body/avatar_source.hpp"
+#include "gestura/io/avatar_source.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/sentence/fingerspelling_performance.hpp"
 #include "gestura/sign/fingerspelling_asl.hpp"

@@ -10,7 +10,7 @@
 #include "gestura/anim/retarget.hpp"
 #include "gestura/body/avatar.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
-#include "gestura/body/avatar_source.hpp"
+#include "gestura/io/avatar_source.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
 #include "motion_output.hpp"

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "command.hpp"
-#include "gestura/body/avatar_source.hpp"
+#include "gestura/io/avatar_source.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
 #include "motion_output.hpp"

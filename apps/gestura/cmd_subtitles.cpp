@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "command.hpp"
-#include "gestura/body/avatar_source.hpp"
+#include "gestura/io/avatar_source.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/subtitles.hpp"
 #include "gestura/lexicon/default_lexicon.hpp"

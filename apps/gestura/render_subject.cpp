@@ -9,7 +9,7 @@
 
 #include "command.hpp"
 #include "gestura/anim/clip_by_name.hpp"
-#include "gestura/body/avatar_source.hpp"
+#include "gestura/io/avatar_source.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/lexicon/default_lexicon.hpp"

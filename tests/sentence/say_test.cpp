@@ -12,6 +12,7 @@
 #include "gestura/lexicon/lexicon_files.hpp"
 #include "gestura/render/subject.hpp"
 #include "gestura/sentence/signer.hpp"
+#include "gestura/sign/hand_geometry.hpp"
 #include "gestura/sign/sign_performer.hpp"
 
 namespace gestura {
@@ -240,10 +241,9 @@ TEST(ProsodyRate, GlobalSpeedScalesTheWholeUtterance) {
 // Palm centre of each hand (model space) in the pose the animator holds.
 std::array<vec3, 2> palm_centres(const Animator& animator, const SigningRig& rig) {
   std::array<vec3, 2> out;
-  for (int h = 0; h < 2; ++h) {
-    const HandRig& hand = rig.hands[static_cast<std::size_t>(h)];
-    out[static_cast<std::size_t>(h)] =
-        vec3(animator.model()[static_cast<std::size_t>(hand.wrist)] * vec4(hand.palm_centre_local, 1.0f));
+  for (Hand h : kBothHands) {
+    const HandRig& hand = rig.hand(h);
+    out[hand_index(h)] = vec3(animator.model()[joint_slot(hand.wrist)] * vec4(hand.palm_centre_local, 1.0f));
   }
   return out;
 }
@@ -304,7 +304,7 @@ float deepest_penetration(const Clip& clip, float duration) {
   const SigningRig& rig = world().signer->rig();
   const RenderSubject subject{a.skeleton, a.mesh, clip};
   Animator animator(subject);
-  std::vector<vec3> points;
+  HandPoints points;
   float deepest = -1.0f;
   for (float t = 0.0f; t <= duration; t += 1.0f / 30.0f) {
     animator.pose_at(t);

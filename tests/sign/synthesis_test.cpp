@@ -11,6 +11,7 @@
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sigml.hpp"
 #include "gestura/sign/arm_reach.hpp"
+#include "gestura/sign/hand_geometry.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
 #include "support/shared_data.hpp"
 #include "support/signing_avatar.hpp"
@@ -82,7 +83,7 @@ TEST(Synthesis, TouchingSignsReachTheirSiteWithin3cm) {
   for (const Case& c : cases) {
     const SignSynthesis r = synth(c.names);
     const auto m = held_pose(r);
-    std::vector<vec3> pts;
+    HandPoints pts;
     hand_surface_points(fx().rig, Hand::Right, m, pts);
     const BodySite* site = find_site(fx().rig.sites, c.site);
     ASSERT_NE(site, nullptr) << c.site;
@@ -207,7 +208,7 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
   // The dominant fist's little-finger side on the other hand's palm, in front of the body.
   const SignSynthesis r = synth("hamfist,hamthumboutmod,hamextfingero,hampalml,hamparbegin,hampinkyside,hamplus,hampalm,hamparend,hamtouch");
   const auto m = held_pose(r);
-  std::vector<vec3> right, left;
+  HandPoints right, left;
   hand_surface_points(fx().rig, Hand::Right, m, right);
   hand_surface_points(fx().rig, Hand::Left, m, left);
   float nearest = 1e9f;

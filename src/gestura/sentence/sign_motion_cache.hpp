@@ -20,6 +20,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "gestura/sign/hand_geometry.hpp"
 #include "gestura/sign/sign_planner.hpp"
 
 namespace gestura {
@@ -28,17 +29,13 @@ namespace gestura {
 // wrist), then thumb1..3, index1..3, … pinky1..3.
 std::vector<int> hand_motion_joints(const SigningRig& rig, Hand hand);
 
-// The hand as it is in the rig's relaxed signing posture (rig.neutral: low, in front), active: where
-// a hand waits between signs and where a sign's cached performance is approached from.
-HandState relaxed_hand_state(const SigningRig& rig, Hand hand);
-
 // One hand's joint rotations, in hand_motion_joints order.
 using HandJointPosture = std::vector<quat>;
 
-// A lexicon sign in citation form: planned at speed 1 without holds, time 0 at its first posture,
-// and performed once.
+// A lexicon sign in citation form: planned at speed 1 without holds (plan_citation), time 0 at its
+// first posture, and performed once.
 struct CitationMotion {
-  SignPlan plan;          // sign_start = 0; sign_end = seconds of movement
+  SignPlan plan;          // as the planner made it: sign_start = 0; sign_end = seconds of movement
   float rate = 40.0f;     // samples per second of citation time
   float first_posture = 0.0f;  // sample time of the first posture (the approach from rest comes before)
   int frames = 0;             // at least 2
@@ -78,8 +75,8 @@ class SignMotionCache {
   std::size_t signs_stored() const;
 
  private:
-  SignPlan approached_from_relaxed(const SignPlan& plan) const;
-  std::unique_ptr<CitationMotion> perform_citation(SignPlan plan) const;
+  SignPlan approached_from_relaxed(const SignPlan& citation) const;
+  std::unique_ptr<CitationMotion> perform_citation(const SignPlan& citation, bool approached) const;
   float plan_error(const CitationMotion& motion) const;
 
   const SigningRig* rig_;

@@ -5,6 +5,7 @@
 
 #include "gestura/core/error.hpp"
 #include "gestura/sign/movement_timing.hpp"
+#include "gestura/sign/hand_geometry.hpp"
 #include "gestura/sign/sign_performer.hpp"
 
 namespace gestura {
@@ -228,7 +229,7 @@ class HandPerformer {
   // Scratch for the body checks (the rest of the body stays in the signing rig's neutral pose).
   mutable Pose scratch_pose_ = cache_.rig().neutral;
   mutable std::vector<mat4> scratch_model_ = std::vector<mat4>(cache_.rig().skeleton().size());
-  mutable std::vector<vec3> scratch_points_;
+  mutable HandPoints scratch_points_;
   mutable std::vector<quat> scratch_posture_ = std::vector<quat>(n_);
 };
 

@@ -14,7 +14,7 @@ constexpr float kExtended = 1.2f;  // radians of summed flexion below which a fi
 
 }  // namespace
 
-std::optional<HandPartSite> hand_part_site(const SigningRig& rig, Hand hand, const Pose& pose, const HandPosture& shape,
+std::optional<SurfacePoint> hand_part_site(const SigningRig& rig, Hand hand, const Pose& pose, const HandPosture& shape,
                                            const sign::SitePoint& part) {
   using S = sign::Site;
   const HandRig& h = rig.hand(hand);
@@ -35,13 +35,13 @@ std::optional<HandPartSite> hand_part_site(const SigningRig& rig, Hand hand, con
   const vec3 centre = h.palm_centre_local;
   const float t = h.palm_half_thickness;
   switch (part.site) {
-    case S::palm: return HandPartSite{centre + palm * t, palm};
-    case S::hand_back: return HandPartSite{centre - palm * t, -palm};
-    case S::thumb_side: return HandPartSite{centre + radial * kPalmHalfWidth, radial};
-    case S::pinky_side: return HandPartSite{centre - radial * kPalmHalfWidth, -radial};
-    case S::thumb_ball: return HandPartSite{centre + palm * t - along * 0.03f + radial * 0.02f, palm};
-    case S::wrist_back: return HandPartSite{-palm * t, -palm};
-    case S::wrist_pulse: return HandPartSite{palm * t, palm};
+    case S::palm: return SurfacePoint{centre + palm * t, palm};
+    case S::hand_back: return SurfacePoint{centre - palm * t, -palm};
+    case S::thumb_side: return SurfacePoint{centre + radial * kPalmHalfWidth, radial};
+    case S::pinky_side: return SurfacePoint{centre - radial * kPalmHalfWidth, -radial};
+    case S::thumb_ball: return SurfacePoint{centre + palm * t - along * 0.03f + radial * 0.02f, palm};
+    case S::wrist_back: return SurfacePoint{-palm * t, -palm};
+    case S::wrist_pulse: return SurfacePoint{palm * t, palm};
     case S::fingers: break;
     default: return std::nullopt;
   }
@@ -55,7 +55,7 @@ std::optional<HandPartSite> hand_part_site(const SigningRig& rig, Hand hand, con
     }
     if (fingers == 0) fingers = 1u << 1;  // a closed hand: the index
   }
-  HandPartSite sum{vec3(0.0f), vec3(0.0f)};
+  SurfacePoint sum{vec3(0.0f), vec3(0.0f)};
   int count = 0;
   for (int f = 0; f < 5; ++f) {
     if (!((fingers >> f) & 1u)) continue;
@@ -63,7 +63,7 @@ std::optional<HandPartSite> hand_part_site(const SigningRig& rig, Hand hand, con
     const vec3 tip = at(h.tips[static_cast<std::size_t>(f)]), last = at(j[2]), middle = at(j[1]), base = at(j[0]);
     const vec3 pad_dir = palmar(j[2]);
     const vec3 side = (f == 4 ? -1.0f : 1.0f) * radial;  // the little finger's free side is ulnar
-    HandPartSite p;
+    SurfacePoint p;
     switch (part.finger_part.value_or(sign::FingerPart::pad)) {
       case sign::FingerPart::tip: p = {tip, glm::normalize(tip - last)}; break;
       case sign::FingerPart::pad: p = {0.35f * last + 0.65f * tip + pad_dir * kFingerHalfThickness, pad_dir}; break;

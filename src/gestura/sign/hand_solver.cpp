@@ -6,7 +6,6 @@
 #include "gestura/ik/dls.hpp"
 #include "gestura/ik/residual.hpp"
 #include "gestura/ik/swivel_arm.hpp"
-#include "gestura/sign/sign_performer.hpp"
 
 namespace gestura {
 
@@ -60,7 +59,7 @@ IkResult solve_within_limits(const Skeleton& s, const IkChain& arm, const mat4& 
 
 // How deep the hand's deepest surface point is inside the body plus `margin` (0 when clear).
 float hand_depth(const SigningRig& rig, const HandRig& h, float margin, const Pose& pose, std::vector<mat4>& model,
-                 std::vector<vec3>& points) {
+                 HandPoints& points) {
   local_to_model(rig.skeleton(), pose, model);
   return std::max(0.0f, margin + hand_penetration(rig, h.hand, model, points));
 }
@@ -87,7 +86,7 @@ vec3 planned_contact(const SigningRig& rig, Hand hand, const HandState& state, s
 
 HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
                            bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
-                           std::vector<vec3>& points) {
+                           HandPoints& points) {
   const Skeleton& s = rig.skeleton();
   const HandRig& h = rig.hand(hand);
   const quat wrist_rotation = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), state.orientation},
@@ -216,6 +215,16 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
     r = best_r;
   }
   return HandSolveResult{r.position_error, r.orientation_error};
+}
+
+HandSolveResult pose_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
+                          bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
+                          HandPoints& points) {
+  apply_hand_posture(rig, hand, state.shape, pose);
+  if (state.active) return solve_hand(rig, hand, state, body_margin, search_circle, solver, pose, model, points);
+  for (int j : rig.hand(hand).arm.joints) pose.rotations[joint_slot(j)] = rig.rest.rotations[joint_slot(j)];
+  solver.swivel.reset();
+  return {};
 }
 
 }  // namespace gestura

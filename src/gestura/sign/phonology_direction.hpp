@@ -9,10 +9,12 @@
 #include <string_view>
 
 #include "gestura/core/math.hpp"
+#include "gestura/sign/hand.hpp"
 
 namespace gestura {
 
-// The 26 directions (same order as the HamNoSys model's Direction): 6 axes, 12 two-axis diagonals, 8 three-axis diagonals. The letter order in
+// The 26 directions of HamNoSys (the parsed notation uses them as they are): 6 axes, 12 two-axis
+// diagonals, 8 three-axis diagonals. The letter order in
 // the names is HamNoSys's: vertical (u/d) first, then depth (o/i), then side (l/r).
 enum class Direction : std::uint8_t {
   U, D, L, R, O, I,
@@ -54,8 +56,6 @@ PalmOrientation mirror_left_right(PalmOrientation palm);
 // The palm orientation a frontal-plane direction names (u, ur, r, dr, d, dl, l, ul); empty for
 // directions with a depth component, which HamNoSys palm symbols cannot express.
 std::optional<PalmOrientation> palm_orientation_of(Direction direction);
-
-enum class Hand : std::uint8_t { Right, Left };
 
 // A hand's orientation in the signer frame.
 // Hand-local axes (the contract with the skeleton; documented in docs/sign-phonology.md):

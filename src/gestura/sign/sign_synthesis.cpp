@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "gestura/anim/sampler.hpp"
+#include "gestura/sign/hand_geometry.hpp"
 
 namespace gestura {
 
@@ -38,7 +39,7 @@ SignSynthesis synthesize_sign(const sign::HamSign& sign, std::span<const sign::N
   const Skeleton& s = rig.skeleton();
   Pose pose;
   std::vector<mat4> model(s.size());
-  std::vector<vec3> points;
+  HandPoints points;
   for (int f = 0; f < out.stats.frames; ++f) {
     sample_clip(out.clip, static_cast<float>(f) / perform_options.fps, WrapMode::Clamp, rig.rest, pose);
     local_to_model(s, pose, model);
