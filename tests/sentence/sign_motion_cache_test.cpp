@@ -75,7 +75,7 @@ TEST(SignMotionCache, ASignIsPerformedOnceAndFollowsItsPlan) {
   EXPECT_EQ(&cache.sign(notation), &first);  // stored, not performed again
   EXPECT_EQ(cache.signs_stored(), 1u);
   EXPECT_GE(first.frames, 2);
-  EXPECT_EQ(first.joints[hand_index(Hand::Right)], cache.joints(Hand::Right).size());
+  EXPECT_EQ(first.joints[Hand::Right], cache.joints(Hand::Right).size());
   // The performed palm stays near its planned place through the sign (MOTHER: at the chin).
   for (float t = 0.0f; t <= first.movement(); t += 0.1f) {
     const HandState planned = sample_hand(first.plan.right, t);

@@ -201,7 +201,7 @@ TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body; %d off "
               "their planned key postures (IK residual over 2 cm or 25 degrees)\n", signs, deep, off);
   EXPECT_EQ(deep, 0);   // issue #5: no hand more than 1 cm inside the body (5 before the analytic swivel seed, 1 before detours)
-  EXPECT_LE(off, 22);   // ratchet: measured 22 (19 with the chin found by a fixed-height ray; 30 before hands in space took reachable places; 57 before the analytic swivel seed)
+  EXPECT_LE(off, 15);   // ratchet: measured 15 (22 before the planner kept the performer's hand points off the body; 19 with the chin found by a fixed-height ray; 30 before hands in space took reachable places; 57 before the analytic swivel seed)
 }
 
 TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
@@ -224,8 +224,10 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 // place, 446 turned, 86 in the body.
 // A hand at the body is measured at the point where it meets the body (planned_contact) since
 // the lower face joined the collision body and its sites (chin, lips) count as at the body.
-constexpr int kMaxOffPlace = 405;   // measured 393
-constexpr int kMaxOffTurn = 208;    // measured 199
+// Since the planner plans with the performer's hand points (hand_geometry.hpp; 11 of its 16
+// before): 393 off place, 199 turned.
+constexpr int kMaxOffPlace = 350;   // measured 341
+constexpr int kMaxOffTurn = 190;    // measured 182
 
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits, no hand more
 // than 1 cm inside the collision body (issue #5; 140 signs did before the analytic swivel seed,

@@ -104,8 +104,8 @@ vec3 part_of(const HandParts& d, BslDominantPart part) {
 // What the two hands do for one letter: the configuration formed, the dominant hand's own
 // movement after it (J, Z, BSL H and J), and where a doubled letter's bounce goes.
 struct LetterPose {
-  std::array<HandState, 2> formed;  // [0] dominant (right), [1] non-dominant (left)
-  std::array<HandState, 2> after;   // after the letter's movement (= formed without one)
+  ByHand<HandState> formed;  // dominant (right), non-dominant (left)
+  ByHand<HandState> after;   // after the letter's movement (= formed without one)
   std::optional<MovementPath> movement;
   vec3 bounce{0.0f};                // displacement at the bottom of a bounce
 };
@@ -114,7 +114,7 @@ class LetterPoser {
  public:
   LetterPoser(const SigningRig& rig) : rig_(rig), scratch_(rig.rest) {
     const int shoulder = rig.hand(Hand::Right).shoulder;
-    asl_origin_ = vec3(rig.bind_model[static_cast<std::size_t>(shoulder)][3]) + kAslSpellingOffset;
+    asl_origin_ = joint_position(rig.bind_model, shoulder) + kAslSpellingOffset;
     const BodySite* chest = find_site(rig.sites, "chest");
     const vec3 chest_point = chest ? site_position(*chest, rig.bind_model) : vec3(0.0f, 1.25f, 0.12f);
     bsl_base_ = chest_point + kBslBaseOffset;
@@ -129,18 +129,18 @@ class LetterPoser {
   LetterPose asl(const LetterTarget& target) const {
     const AslLetter& letter = *find_asl_letter(target.letter);
     LetterPose p;
-    HandState& s = p.formed[0];
+    HandState& s = p.formed[Hand::Right];
     s.position = asl_origin_ + target.offset;
     s.orientation = letter_frame(letter, Hand::Right).rotation;
     s.shape = asl_handshape(letter.handshape);
     s.active = true;
-    p.formed[1] = rest_hand_state(rig_, Hand::Left);
+    p.formed[Hand::Left] = rest_hand_state(rig_, Hand::Left);
     p.after = p.formed;
     p.movement = letter_movement(letter, Hand::Right);
     if (p.movement) {
-      p.after[0].position += path_end(*p.movement);
+      p.after[Hand::Right].position += path_end(*p.movement);
       if (letter.end_palm)
-        p.after[0].orientation =
+        p.after[Hand::Right].orientation =
             hand_frame_from_vectors(direction_vector(letter.finger), direction_vector(*letter.end_palm), Hand::Right)
                 .rotation;
     }
@@ -152,7 +152,7 @@ class LetterPoser {
     const BslLetter& letter = *find_bsl_letter(target.letter);
     LetterPose p;
     const quat present = glm::angleAxis(glm::radians(kBslPresentDegrees), vec3(0.0f, 1.0f, 0.0f));
-    HandState& d = p.formed[0];
+    HandState& d = p.formed[Hand::Right];
     // The dominant hand turns with the base to lay itself on the base's palm; pointing at a
     // fingertip or an edge it turns the other way, forward into the presented hand (turned with the
     // base, a pointing hand had to reach round with its elbow out at shoulder height).
@@ -161,7 +161,7 @@ class LetterPoser {
     else d.orientation = glm::inverse(present) * d.orientation;
     d.shape = letter.dominant.posture;
     d.active = true;
-    HandState& n = p.formed[1];
+    HandState& n = p.formed[Hand::Left];
     if (const std::optional<HandFrame> frame = non_dominant_frame(letter, Hand::Right)) {
       n.position = bsl_base_;
       n.orientation = present * frame->rotation;
@@ -180,7 +180,7 @@ class LetterPoser {
     p.after = p.formed;
     if (letter.movement) {
       p.movement = letter.movement;
-      p.after[0].position += path_end(*letter.movement);
+      p.after[Hand::Right].position += path_end(*letter.movement);
     }
     return p;
   }
@@ -214,7 +214,7 @@ SpelledHands spell_with_hands(const SpellingPlan& plan, const SigningRig& rig, f
   LetterPoser poser(rig);
   // Time 0 is the first letter formed: the timeline starts there.
   const LetterPose first = poser.pose(plan.alphabet, plan.letters.front(), rest_hand_state(rig, Hand::Left));
-  TwoHandTimeline timeline(ByHand<HandState>{first.formed});
+  TwoHandTimeline timeline(first.formed);
   for (std::size_t k = 0; k < plan.letters.size(); ++k) {
     const LetterTarget& target = plan.letters[k];
     const LetterPose pose = k == 0 ? first : poser.pose(plan.alphabet, target, timeline.state(Hand::Left));
@@ -228,7 +228,7 @@ SpelledHands spell_with_hands(const SpellingPlan& plan, const SigningRig& rig, f
       for (Hand h : kBothHands) {
         HandSegment to_letter;
         to_letter.from = timeline.state(h);
-        to_letter.to = pose.formed[hand_index(h)];
+        to_letter.to = pose.formed[h];
         to_letter.end = reached - transition_start;
         if (h == Hand::Right && target.doubled == DoubleMark::Bounce)
           to_letter.paths.push_back(timed(polyline_path({vec3(0.0f), pose.bounce, vec3(0.0f)}, true), to_letter.end));
@@ -241,11 +241,11 @@ SpelledHands spell_with_hands(const SpellingPlan& plan, const SigningRig& rig, f
       const float moved = std::max(timeline.now() + 1e-3f, clock(target.movement_end));
       HandSegment traced;
       traced.from = timeline.state(Hand::Right);
-      traced.to = pose.after[0];
+      traced.to = pose.after[Hand::Right];
       traced.end = moved - timeline.now();
       traced.paths.push_back(timed(*pose.movement, traced.end));
       timeline.append(Hand::Right, std::move(traced));
-      timeline.move_to(Hand::Left, pose.after[1], moved - timeline.clock(Hand::Left));
+      timeline.move_to(Hand::Left, pose.after[Hand::Left], moved - timeline.clock(Hand::Left));
     }
     timed_target.movement_end = timeline.now();
     const bool last = k + 1 == plan.letters.size();

@@ -55,8 +55,8 @@ std::vector<int> hand_motion_joints(const SigningRig& rig, Hand hand) {
 }
 
 void CitationMotion::sample(Hand hand, float t, std::span<quat> out) const {
-  const std::size_t n = joints[hand_index(hand)];
-  const std::vector<quat>& s = samples[hand_index(hand)];
+  const std::size_t n = joints[hand];
+  const std::vector<quat>& s = samples[hand];
   // perform_plan keys at least two frames.
   const float f = std::clamp((first_posture + t) * rate, first_posture * rate, static_cast<float>(frames - 1));
   const auto i = static_cast<std::size_t>(std::min(static_cast<int>(f), frames - 2));
@@ -67,7 +67,7 @@ void CitationMotion::sample(Hand hand, float t, std::span<quat> out) const {
 }
 
 SignMotionCache::SignMotionCache(const SigningRig& rig) : rig_(&rig) {
-  for (Hand hand : kBothHands) joints_[hand_index(hand)] = hand_motion_joints(rig, hand);
+  for (Hand hand : kBothHands) joints_[hand] = hand_motion_joints(rig, hand);
 }
 
 SignPlan SignMotionCache::approached_from_relaxed(const SignPlan& citation) const {
@@ -94,8 +94,8 @@ std::unique_ptr<CitationMotion> SignMotionCache::perform_citation(const SignPlan
     const std::vector<int>& joints = this->joints(hand);
     const std::size_t frames = clip.rotations[joint_slot(joints.front())].size();
     motion->frames = static_cast<int>(frames);
-    motion->joints[hand_index(hand)] = joints.size();
-    std::vector<quat>& out = motion->samples[hand_index(hand)];
+    motion->joints[hand] = joints.size();
+    std::vector<quat>& out = motion->samples[hand];
     out.resize(frames * joints.size());
     for (std::size_t j = 0; j < joints.size(); ++j) {
       const QuatTrack& track = clip.rotations[joint_slot(joints[j])];

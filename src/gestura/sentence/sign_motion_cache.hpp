@@ -39,8 +39,8 @@ struct CitationMotion {
   float rate = 40.0f;     // samples per second of citation time
   float first_posture = 0.0f;  // sample time of the first posture (the approach from rest comes before)
   int frames = 0;             // at least 2
-  std::array<std::vector<quat>, 2> samples;  // per hand [0] right, [1] left: frames × joints, frame-major
-  std::array<std::size_t, 2> joints{};       // joints per hand
+  ByHand<std::vector<quat>> samples;  // per hand: frames × joints, frame-major
+  ByHand<std::size_t> joints{};       // joints per hand
 
   float movement() const { return plan.sign_end; }
   // The hand's joint rotations at citation time `t` (clamped to the sign), linearly interpolated
@@ -71,7 +71,7 @@ class SignMotionCache {
   const HandJointPosture& posture_from(Hand hand, const HandState& state, std::span<const quat> seed);
 
   const SigningRig& rig() const { return *rig_; }
-  const std::vector<int>& joints(Hand hand) const { return joints_[hand == Hand::Right ? 0 : 1]; }
+  const std::vector<int>& joints(Hand hand) const { return joints_[hand]; }
   std::size_t signs_stored() const;
 
  private:
@@ -80,7 +80,7 @@ class SignMotionCache {
   float plan_error(const CitationMotion& motion) const;
 
   const SigningRig* rig_;
-  std::array<std::vector<int>, 2> joints_;
+  ByHand<std::vector<int>> joints_;
   mutable std::mutex mutex_;
   std::unordered_map<std::string, std::unique_ptr<CitationMotion>> signs_;
   std::unordered_map<std::string, std::unique_ptr<HandJointPosture>> postures_;

@@ -6,7 +6,6 @@
 
 #include "gestura/sign/arm_reach.hpp"
 #include "gestura/sign/movement_timing.hpp"
-#include "gestura/sign/place_resolver.hpp"
 
 namespace gestura {
 
@@ -23,7 +22,7 @@ constexpr float kMaxRiseForward = 0.15f;  // …up to this (metres)
 constexpr float kDetourStep = 0.01f;       // detours round the body are searched in these steps
 constexpr float kMaxDetour = 0.30f;        // … up to this far out
 constexpr float kDetourTolerance = 0.002f;  // a path may pass this much nearer the body than its ends
-constexpr int kDetourSamples = 12;          // the path is checked at the 11 instants between its ends
+constexpr std::size_t kDetourSamples = 12;         // the path is checked at the 11 instants between its ends
 constexpr int kSurfaceSamples = 8;          // a movement is searched for where it enters the body …
 constexpr int kSurfaceBisections = 10;      // … and where exactly, by bisection
 // A hand out in space moves at most this far from its notated place to where the arm can turn it
@@ -56,10 +55,6 @@ BodyRepair::BodyRepair(const SigningRig& rig) : rig_(rig), scratch_(rig.rest) {
   }
 }
 
-std::span<const vec3> BodyRepair::planned(const HandPoints& points) const {
-  return std::span<const vec3>(points.data(), kPlannedHandPoints);
-}
-
 float BodyRepair::clearance(std::span<const vec3> points, const vec3& at) const {
   float nearest = 1e9f;
   for (const vec3& p : points) nearest = std::min(nearest, body_signed_distance(rig_, rig_.bind_model, at + p));
@@ -76,8 +71,7 @@ bool BodyRepair::near_a_body_site(std::span<const vec3> points, const vec3& at) 
 void BodyRepair::keep_out(Hand hand, HandState& state) {
   state.at_body = false;
   if (!state.active) return;
-  const HandPoints all = planned_hand_points(rig_, hand, state, scratch_);
-  const std::span<const vec3> points = planned(all);
+  const HandPoints points = planned_hand_points(rig_, hand, state, scratch_);
   float nearest = 1e9f;
   for (int pass = 0; pass < kKeepOutPasses; ++pass) {
     float deepest = 0.0f;
@@ -102,8 +96,7 @@ void BodyRepair::keep_out(Hand hand, HandState& state) {
 
 void BodyRepair::stop_at_surface(Hand hand, const HandState& from, HandState& to) {
   if (!from.active || !to.active) return;
-  const HandPoints all = planned_hand_points(rig_, hand, to, scratch_);
-  const std::span<const vec3> points = planned(all);
+  const HandPoints points = planned_hand_points(rig_, hand, to, scratch_);
   // A movement starting at the body is left to keep_out and the detour. Pushing a movement's end
   // out along the nearest surface normal instead of stopping it could carry a hand that went
   // through the head out at the back of it, or across the face to its other side.
@@ -127,8 +120,7 @@ void BodyRepair::settle_in_space(Hand hand, HandState& state, const HandState& o
   if (!state.active || state.at_body) return;
   if (other.active && glm::distance(other.position, state.position) < kHandsTogether) return;
   const HandTurn turn{hand, state.position, state.orientation};
-  const HandPoints all = planned_hand_points(rig_, hand, state, scratch_);
-  const std::span<const vec3> points = planned(all);
+  const HandPoints points = planned_hand_points(rig_, hand, state, scratch_);
   const float room = clearance(points, state.position);
   const ReachableShift shift = nearest_reachable_shift(
       rig_, std::span(&turn, 1), std::clamp(room + kMinSpaceShift, kMinSpaceShift, kMaxSpaceShift), kTurnSettled,
@@ -156,8 +148,8 @@ void BodyRepair::settle_together(ByHand<HandState>& states, const ByHand<bool>& 
   const ByHand<HandPoints> points{{planned_hand_points(rig_, Hand::Right, states[Hand::Right], scratch_),
                                    planned_hand_points(rig_, Hand::Left, states[Hand::Left], scratch_)}};
   auto both_clear = [&](const vec3& offset) {
-    return std::min(clearance(planned(points[Hand::Right]), states[Hand::Right].position + offset),
-                    clearance(planned(points[Hand::Left]), states[Hand::Left].position + offset));
+    return std::min(clearance(points[Hand::Right], states[Hand::Right].position + offset),
+                    clearance(points[Hand::Left], states[Hand::Left].position + offset));
   };
   const float room = both_clear(vec3(0.0f));
   const ReachableShift shift = nearest_reachable_shift(
@@ -173,14 +165,13 @@ void BodyRepair::detour_around_body(Hand hand, HandSegment& seg) {
   seg.detour = vec3(0.0f);
   if (!seg.from.active && !seg.to.active) return;
   if (seg.paths.empty() && seg.from.position == seg.to.position) return;  // a hold
-  const std::array<HandPoints, 2> ends_all{planned_hand_points(rig_, hand, seg.from, scratch_),
-                                           planned_hand_points(rig_, hand, seg.to, scratch_)};
-  const std::span<const vec3> ends[2] = {planned(ends_all[0]), planned(ends_all[1])};
+  const std::array<HandPoints, 2> ends{planned_hand_points(rig_, hand, seg.from, scratch_),
+                                       planned_hand_points(rig_, hand, seg.to, scratch_)};
   // Hand points in the hand's own frame, so that the interpolated turn can carry them.
   std::array<HandPoints, 2> local;
   for (std::size_t e = 0; e < 2; ++e) {
     const quat inv = glm::inverse(e == 0 ? seg.from.orientation : seg.to.orientation);
-    for (std::size_t i = 0; i < ends[e].size(); ++i) local[e][i] = inv * ends[e][i];
+    for (std::size_t i = 0; i < kHandPointCount; ++i) local[e][i] = inv * ends[e][i];
   }
   struct Instant {
     vec3 position;
@@ -190,13 +181,13 @@ void BodyRepair::detour_around_body(Hand hand, HandSegment& seg) {
   std::array<Instant, kDetourSamples - 1> path;
   one_segment_.segments.assign(1, seg);
   const float span = seg.end - seg.start;
-  for (int k = 1; k < kDetourSamples; ++k) {
+  for (std::size_t k = 1; k < kDetourSamples; ++k) {
     const float u = static_cast<float>(k) / kDetourSamples;
     const float progress = seg.linear_blend ? u : profile_progress(VelocityProfile::MinimumJerk, u);
     const HandState at = sample_hand(one_segment_, seg.start + u * span);
-    Instant& in = path[static_cast<std::size_t>(k - 1)];
+    Instant& in = path[k - 1];
     in.position = at.position;
-    for (std::size_t i = 0; i < kPlannedHandPoints; ++i) in.points[i] = at.orientation * glm::mix(local[0][i], local[1][i], progress);
+    for (std::size_t i = 0; i < kHandPointCount; ++i) in.points[i] = at.orientation * glm::mix(local[0][i], local[1][i], progress);
     in.bump = std::sin(kPi * progress);
   }
   const float required =
@@ -205,7 +196,7 @@ void BodyRepair::detour_around_body(Hand hand, HandSegment& seg) {
   auto worst_clearance = [&](const vec3& detour) {
     float worst = 1e9f;
     for (const Instant& in : path)
-      worst = std::min(worst, clearance(planned(in.points), in.position + detour * in.bump));
+      worst = std::min(worst, clearance(in.points, in.position + detour * in.bump));
     return worst;
   };
   if (worst_clearance(vec3(0.0f)) >= required) return;

@@ -63,7 +63,6 @@ class BodyRepair {
 
  private:
   bool near_a_body_site(std::span<const vec3> points, const vec3& at) const;
-  std::span<const vec3> planned(const HandPoints& points) const;
 
   const SigningRig& rig_;
   Pose scratch_;

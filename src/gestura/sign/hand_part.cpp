@@ -22,15 +22,15 @@ std::optional<SurfacePoint> hand_part_site(const SigningRig& rig, Hand hand, con
   thread_local std::vector<mat4> model;
   model.resize(s.size());
   local_to_model(s, pose, model);
-  const mat4 to_wrist = glm::inverse(model[static_cast<std::size_t>(h.wrist)]);
+  const mat4 to_wrist = glm::inverse(model[joint_slot(h.wrist)]);
   const quat wrist_from_rest = glm::inverse(h.rest_wrist_rotation);
   // The hand's axes at rest, in the wrist's frame (the rest pose keeps finger frames parallel).
   const vec3 palm = wrist_from_rest * (h.rest_frame.rotation * vec3(0, 0, 1));
   const vec3 along = wrist_from_rest * h.rest_frame.finger;
   const vec3 radial = wrist_from_rest * h.rest_frame.thumb_side;
-  auto at = [&](int joint) { return vec3(to_wrist * model[static_cast<std::size_t>(joint)][3]); };
+  auto at = [&](int joint) { return vec3(to_wrist * model[joint_slot(joint)][3]); };
   // A phalanx's palmar direction: the palm normal carried by the phalanx's own rotation.
-  auto palmar = [&](int joint) { return glm::normalize(vec3(to_wrist * model[static_cast<std::size_t>(joint)] * vec4(palm, 0.0f))); };
+  auto palmar = [&](int joint) { return glm::normalize(vec3(to_wrist * model[joint_slot(joint)] * vec4(palm, 0.0f))); };
 
   const vec3 centre = h.palm_centre_local;
   const float t = h.palm_half_thickness;
@@ -49,18 +49,18 @@ std::optional<SurfacePoint> hand_part_site(const SigningRig& rig, Hand hand, con
   // Finger parts, averaged over the named (or extended) fingers.
   std::uint8_t fingers = part.fingers.bits;
   if (fingers == 0) {
-    for (int f = 1; f < 5; ++f) {
-      const FingerFlexion& x = shape.fingers[static_cast<std::size_t>(f - 1)];
-      if (x.mcp + x.pip + x.dip < kExtended) fingers = static_cast<std::uint8_t>(fingers | (1u << f));
+    for (Finger f : {Finger::Index, Finger::Middle, Finger::Ring, Finger::Pinky}) {
+      const FingerFlexion& x = shape.finger(f);
+      if (x.mcp + x.pip + x.dip < kExtended) fingers = static_cast<std::uint8_t>(fingers | finger_bit(f));
     }
     if (fingers == 0) fingers = 1u << 1;  // a closed hand: the index
   }
   SurfacePoint sum{vec3(0.0f), vec3(0.0f)};
   int count = 0;
-  for (int f = 0; f < 5; ++f) {
+  for (std::size_t f = 0; f < 5; ++f) {
     if (!((fingers >> f) & 1u)) continue;
-    const auto& j = h.fingers[static_cast<std::size_t>(f)];
-    const vec3 tip = at(h.tips[static_cast<std::size_t>(f)]), last = at(j[2]), middle = at(j[1]), base = at(j[0]);
+    const auto& j = h.fingers[f];
+    const vec3 tip = at(h.tips[f]), last = at(j[2]), middle = at(j[1]), base = at(j[0]);
     const vec3 pad_dir = palmar(j[2]);
     const vec3 side = (f == 4 ? -1.0f : 1.0f) * radial;  // the little finger's free side is ulnar
     SurfacePoint p;

@@ -116,8 +116,7 @@ HandPoints PlaceResolver::hand_points(Hand hand, const HandState& state) {
 }
 
 vec3 PlaceResolver::place_at(Hand hand, const HandState& state, const SurfacePoint& site, float gap) {
-  const HandPoints all = hand_points(hand, state);
-  const std::span<const vec3> points(all.data(), kPlannedHandPoints);
+  const HandPoints points = hand_points(hand, state);
   float nearest = 1e9f;
   for (const vec3& p : points) nearest = std::min(nearest, glm::dot(p, site.normal));
   vec3 contact(0.0f);

@@ -12,9 +12,6 @@
 
 namespace gestura {
 
-// The hand points the planner works with (the first kPlannedHandPoints of HandPoints).
-inline constexpr std::size_t kPlannedHandPoints = 11;
-
 class PlaceResolver {
  public:
   // Contract: `rig` outlives the resolver.

@@ -14,7 +14,7 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
   if (!(options.fps >= 1.0f && options.fps <= 240.0f)) throw Error("fps must be between 1 and 240");
   const Skeleton& s = rig.skeleton();
   const float duration = plan.duration();
-  const int frames = std::max(2, static_cast<int>(std::ceil(duration * options.fps)) + 1);
+  const std::size_t frames = std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(duration * options.fps)) + 1);
 
   // Joints this clip drives: both arms from the clavicle down, and the fingers.
   std::vector<int> driven;
@@ -30,8 +30,8 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
   for (int j : driven) {
     QuatTrack& tr = clip.rotations[joint_slot(j)];
     tr.interpolation = Interpolation::Linear;
-    tr.times.reserve(static_cast<std::size_t>(frames));
-    tr.values.reserve(static_cast<std::size_t>(frames));
+    tr.times.reserve(frames);
+    tr.values.reserve(frames);
   }
 
   Pose pose = rig.neutral;
@@ -39,21 +39,21 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
   ByHand<HandSolverState> solver{{HandSolverState(rig.hand(Hand::Right).arm), HandSolverState(rig.hand(Hand::Left).arm)}};
   HandPoints points;
   PerformanceStats st;
-  st.frames = frames;
+  st.frames = static_cast<int>(frames);
   // The key frame of each segment that leaves a hand signing: the frame nearest its end.
   enum class Key : std::uint8_t { None, InSpace, AtBody };
   auto frame_of = [&](float t) {
-    return static_cast<std::size_t>(std::clamp(static_cast<int>(std::lround(t * options.fps)), 0, frames - 1));
+    return std::min(static_cast<std::size_t>(std::max(0L, std::lround(t * options.fps))), frames - 1);
   };
   ByHand<std::vector<Key>> key;
   for (Hand hand : kBothHands) {
-    key[hand].assign(static_cast<std::size_t>(frames), Key::None);
+    key[hand].assign(frames, Key::None);
     for (const HandSegment& seg : plan.hand(hand).segments)
       if (seg.to.active) key[hand][frame_of(seg.end)] = seg.to.at_body ? Key::AtBody : Key::InSpace;
   }
   ByHand<HandState> planned;
 
-  for (int f = 0; f < frames; ++f) {
+  for (std::size_t f = 0; f < frames; ++f) {
     const float t = static_cast<float>(f) / options.fps;
     for (Hand hand : kBothHands) {
       const HandTimeline& timeline = plan.hand(hand);
@@ -67,7 +67,7 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
     local_to_model(s, pose, model);
     for (Hand hand : kBothHands) st.max_penetration = std::max(st.max_penetration, hand_penetration(rig, hand, model, points));
     for (Hand hand : kBothHands) {
-      const Key k = key[hand][static_cast<std::size_t>(f)];
+      const Key k = key[hand][f];
       if (k == Key::None || !planned[hand].active) continue;
       const HandRig& h = rig.hand(hand);
       const mat4& w = model[joint_slot(h.wrist)];
