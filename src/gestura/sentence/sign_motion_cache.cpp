@@ -83,8 +83,8 @@ SignPlan SignMotionCache::approached_from_relaxed(const SignPlan& citation) cons
   return timeline.finish(kApproachSeconds + citation.sign_start, kApproachSeconds + citation.sign_end);
 }
 
-std::unique_ptr<CitationMotion> SignMotionCache::perform_citation(const SignPlan& citation, bool approached) const {
-  const SignPlan performed = approached ? approached_from_relaxed(citation) : citation;
+std::unique_ptr<CitationMotion> SignMotionCache::perform_citation(const SignPlan& citation, Start start) const {
+  const SignPlan performed = start == Start::FromRelaxed ? approached_from_relaxed(citation) : citation;
   const Clip clip = perform_plan(performed, *rig_, PerformOptions{kCitationRate});
   auto motion = std::make_unique<CitationMotion>();
   motion->plan = citation;
@@ -143,18 +143,18 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
   }
   // Computed outside the lock: two threads may both compute a new sign; the first stored wins.
-  // The citation form is stored as the planner makes it. The solver's result depends on where it
-  // starts from, so the sign is performed approached from the relaxed signing posture in front, as
-  // in running signing, where the hands arrive from the signing space (starting at the first
-  // posture itself, the solver may end in another arm configuration: the hand behind the head for
-  // SLEEP). If a palm strays more than 1 cm from the plan, it is performed again started at its
-  // first posture, which is kept only if it is closer to the plan by more than 1 cm.
+  // The citation form is stored as the planner makes it. The arm the solver finds depends on where
+  // it starts: arriving from the relaxed posture in front, as in running signing, it keeps the
+  // elbows low (started at the first posture, STORE comes out with both elbows at shoulder
+  // height). Continuing from there, it can also get stuck with a hand centimetres off its plan
+  // (14 of the 416 ASL signs, by 1–17 cm): a sign whose palm strays more than 1 cm is performed
+  // from its first posture as well, and that one kept if it is closer to the plan by over 1 cm.
   const SignPlan citation = plan_citation(sign::parse_hamnosys_unicode(notation), *rig_, ScheduleOptions{1.0f, 0.0f, 0.0f});
-  std::unique_ptr<CitationMotion> motion = perform_citation(citation, true);
+  std::unique_ptr<CitationMotion> motion = perform_citation(citation, Start::FromRelaxed);
   const float error = plan_error(*motion);
   if (error > kPlanTolerance) {
-    auto cold = perform_citation(citation, false);
-    if (plan_error(*cold) < error - kPlanTolerance) motion = std::move(cold);
+    auto at_first_posture = perform_citation(citation, Start::AtFirstPosture);
+    if (plan_error(*at_first_posture) < error - kPlanTolerance) motion = std::move(at_first_posture);
   }
   std::lock_guard lock(mutex_);
   return *signs_.emplace(key, std::move(motion)).first->second;

@@ -37,7 +37,7 @@ using HandJointPosture = std::vector<quat>;
 struct CitationMotion {
   SignPlan plan;          // as the planner made it: sign_start = 0; sign_end = seconds of movement
   float rate = 40.0f;     // samples per second of citation time
-  float first_posture = 0.0f;  // sample time of the first posture (the approach from rest comes before)
+  float first_posture = 0.0f;  // sample time of the first posture (an approach may come before)
   int frames = 0;             // at least 2
   ByHand<std::vector<quat>> samples;  // per hand: frames × joints, frame-major
   ByHand<std::size_t> joints{};       // joints per hand
@@ -75,8 +75,11 @@ class SignMotionCache {
   std::size_t signs_stored() const;
 
  private:
+  // Where the solver starts a citation form: arriving from the relaxed posture in front (as in
+  // running signing), or at its first posture with a full search of the elbow's circle.
+  enum class Start : std::uint8_t { FromRelaxed, AtFirstPosture };
   SignPlan approached_from_relaxed(const SignPlan& citation) const;
-  std::unique_ptr<CitationMotion> perform_citation(const SignPlan& citation, bool approached) const;
+  std::unique_ptr<CitationMotion> perform_citation(const SignPlan& citation, Start start) const;
   float plan_error(const CitationMotion& motion) const;
 
   const SigningRig* rig_;
