@@ -5,46 +5,6 @@
 namespace gestura::sign {
 namespace {
 
-struct DirectionRow {
-  Direction direction;
-  DirectionComponents c;  // vertical, lateral (+ = signer's left), sagittal (+ = out)
-};
-
-constexpr std::array<DirectionRow, 26> kDirections{{
-    {Direction::U, {1, 0, 0}},
-    {Direction::D, {-1, 0, 0}},
-    {Direction::L, {0, 1, 0}},
-    {Direction::R, {0, -1, 0}},
-    {Direction::O, {0, 0, 1}},
-    {Direction::I, {0, 0, -1}},
-    {Direction::UL, {1, 1, 0}},
-    {Direction::UR, {1, -1, 0}},
-    {Direction::DL, {-1, 1, 0}},
-    {Direction::DR, {-1, -1, 0}},
-    {Direction::OL, {0, 1, 1}},
-    {Direction::OR, {0, -1, 1}},
-    {Direction::IL, {0, 1, -1}},
-    {Direction::IR, {0, -1, -1}},
-    {Direction::UO, {1, 0, 1}},
-    {Direction::UI, {1, 0, -1}},
-    {Direction::DO, {-1, 0, 1}},
-    {Direction::DI, {-1, 0, -1}},
-    {Direction::UOL, {1, 1, 1}},
-    {Direction::UOR, {1, -1, 1}},
-    {Direction::UIL, {1, 1, -1}},
-    {Direction::UIR, {1, -1, -1}},
-    {Direction::DOL, {-1, 1, 1}},
-    {Direction::DOR, {-1, -1, 1}},
-    {Direction::DIL, {-1, 1, -1}},
-    {Direction::DIR, {-1, -1, -1}},
-}};
-
-constexpr bool directions_in_enum_order() {
-  for (std::size_t i = 0; i < kDirections.size(); ++i)
-    if (static_cast<std::size_t>(kDirections[i].direction) != i) return false;
-  return true;
-}
-static_assert(directions_in_enum_order());
 // FingerSet's bits are the phonology's (finger_bit), so a set passes to it as it is.
 static_assert(finger_bit(Finger::Thumb) == 1u && finger_bit(Finger::Pinky) == 1u << 4);
 
@@ -55,15 +15,6 @@ constexpr std::array<std::string_view, static_cast<std::size_t>(Site::fingers) +
     "wrist back", "wrist pulse", "thumb ball", "palm", "hand back", "thumb side", "pinky side", "fingers"};
 
 }  // namespace
-
-DirectionComponents components(Direction d) { return kDirections[static_cast<std::size_t>(d)].c; }
-
-std::optional<Direction> direction_from_components(DirectionComponents c) {
-  for (const DirectionRow& row : kDirections)
-    if (row.c.vertical == c.vertical && row.c.lateral == c.lateral && row.c.sagittal == c.sagittal)
-      return row.direction;
-  return std::nullopt;
-}
 
 std::optional<Direction> merge_directions(Direction a, Direction b) {
   const DirectionComponents ca = components(a), cb = components(b);

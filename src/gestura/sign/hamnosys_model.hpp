@@ -34,16 +34,7 @@ using gestura::Finger;
 using gestura::FingerBending;
 using gestura::ThumbModifier;
 
-// Signed unit components of a direction: vertical (+1 up), lateral (+1 signer's left),
-// sagittal (+1 out, away from the body).
-struct DirectionComponents {
-  std::int8_t vertical = 0;
-  std::int8_t lateral = 0;
-  std::int8_t sagittal = 0;
-};
-
-DirectionComponents components(Direction d);
-std::optional<Direction> direction_from_components(DirectionComponents c);
+using gestura::DirectionComponents;
 // Two adjacent direction symbols that share an axis and differ in the others merge into one
 // three-axis diagonal (uo + ol = uol); anything else does not merge.
 std::optional<Direction> merge_directions(Direction a, Direction b);

@@ -25,6 +25,15 @@ enum class Direction : std::uint8_t {
 };
 inline constexpr std::size_t kDirectionCount = 26;
 
+// Signed unit components of a direction: vertical (+1 up), lateral (+1 the signer's left),
+// sagittal (+1 out, away from the body).
+struct DirectionComponents {
+  std::int8_t vertical = 0;
+  std::int8_t lateral = 0;
+  std::int8_t sagittal = 0;
+};
+DirectionComponents components(Direction direction);
+std::optional<Direction> direction_from_components(DirectionComponents c);
 // Unit vector (diagonals are normalised sums of their axes).
 vec3 direction_vector(Direction direction);
 std::string_view to_string(Direction direction);  // "u", "uol", ...
