@@ -239,11 +239,11 @@ TEST(ProsodyRate, GlobalSpeedScalesTheWholeUtterance) {
 }
 
 // Palm centre of each hand (model space) in the pose the animator holds.
-std::array<vec3, 2> palm_centres(const Animator& animator, const SigningRig& rig) {
-  std::array<vec3, 2> out;
+ByHand<vec3> palm_centres(const Animator& animator, const SigningRig& rig) {
+  ByHand<vec3> out;
   for (Hand h : kBothHands) {
     const HandRig& hand = rig.hand(h);
-    out[hand_index(h)] = vec3(animator.model()[joint_slot(hand.wrist)] * vec4(hand.palm_centre_local, 1.0f));
+    out[h] = vec3(animator.model()[joint_slot(hand.wrist)] * vec4(hand.palm_centre_local, 1.0f));
   }
   return out;
 }
@@ -268,8 +268,8 @@ TEST(SayMotion, CachedMotionReachesTheTargetsNearlyAsWellAsIkEveryFrame) {
     const Clip reference = perform_plan(p.plan, rig, PerformOptions{30.0f});
     const RenderSubject fast_subject{a.skeleton, a.mesh, p.clip}, reference_subject{a.skeleton, a.mesh, reference};
     Animator fast(fast_subject), slow(reference_subject);
-    for (int h = 0; h < 2; ++h) {
-      const HandTimeline& timeline = h == 0 ? p.plan.right : p.plan.left;
+    for (Hand h : kBothHands) {
+      const HandTimeline& timeline = p.plan.hand(h);
       for (const HandSegment& seg : timeline.segments) {
         for (const float t : {seg.start, seg.end}) {
           const bool in_sign = std::any_of(p.glosses.begin(), p.glosses.end(), [&](const PerformedGloss& g) {
@@ -279,8 +279,8 @@ TEST(SayMotion, CachedMotionReachesTheTargetsNearlyAsWellAsIkEveryFrame) {
           if (!in_sign || !planned.active) continue;
           fast.pose_at(t);
           slow.pose_at(t);
-          const float f = glm::distance(palm_centres(fast, rig)[static_cast<std::size_t>(h)], planned.position);
-          const float r = glm::distance(palm_centres(slow, rig)[static_cast<std::size_t>(h)], planned.position);
+          const float f = glm::distance(palm_centres(fast, rig)[h], planned.position);
+          const float r = glm::distance(palm_centres(slow, rig)[h], planned.position);
           ++instants;
           not_worse += f <= r + 0.01f ? 1 : 0;
           cached_on_plan += f <= 0.01f ? 1 : 0;
