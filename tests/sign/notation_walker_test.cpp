@@ -183,3 +183,13 @@ TEST(CitationSchedule, ContactGapsGrowWithProximity) {
   EXPECT_LT(contact_gap(std::nullopt, sign::SiteRegion::face), contact_gap(std::nullopt, sign::SiteRegion::trunk));
   EXPECT_LT(contact_gap(std::nullopt, sign::SiteRegion::trunk), contact_gap(sign::Proximity::far, sign::SiteRegion::face));
 }
+
+TEST(NotationWalker, EverySegmentOfACompoundStartsWithItsPosture) {
+  // Two segments joined by a top-level hamplus: each is a posture, its hold, then its actions.
+  const sign::HamSign compound = sign::parse_hamnosys_names(
+      "hamflathand,hamextfingeru,hampalml,hamchest,hammoveo,hamplus,hamfist,hamextfingero,hampalmd,hamchin");
+  ASSERT_EQ(compound.segments.size(), 2u);
+  const CitationSchedule s = read_citation_schedule(compound);
+  EXPECT_EQ(all<PostureStep>(s).size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<PostureStep>(s.steps.front()));
+}

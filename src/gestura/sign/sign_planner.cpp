@@ -33,12 +33,14 @@ struct LastSite {
 class Planner {
  public:
   Planner(const CitationSchedule& schedule, const SigningRig& rig)
-      : schedule_(schedule), rig_(rig), places_(rig), body_(rig),
+      : schedule_(schedule), places_(rig), body_(rig),
         before_{{rest_hand_state(rig, Hand::Right), rest_hand_state(rig, Hand::Left)}} {}
 
   SignPlan run() {
+    if (schedule_.steps.empty() || !std::holds_alternative<PostureStep>(schedule_.steps.front()))
+      throw Error("a citation schedule starts with a posture");
+    if (!(schedule_.speed > 0.0f)) throw Error("a citation schedule needs a tempo above 0");
     for (const ScheduleStep& step : schedule_.steps) std::visit([this](const auto& s) { take(s); }, step);
-    if (!timeline_) throw Error("the sign has no posture to start from");
     return timeline_->finish(0.0f, timeline_->now());
   }
 
@@ -255,7 +257,6 @@ class Planner {
   }
 
   const CitationSchedule& schedule_;
-  const SigningRig& rig_;
   PlaceResolver places_;
   BodyRepair body_;
   ByHand<HandState> before_;  // the hands before the first posture: at rest

@@ -36,8 +36,9 @@ SignPlan plan_sign(const sign::HamSign& sign, const SigningRig& rig, const PlanO
 // its final hold. Same errors as plan_sign.
 SignPlan plan_citation(const sign::HamSign& sign, const SigningRig& rig, const ScheduleOptions& options = {});
 
-// A schedule laid out on the rig: places resolved, the body's rules applied, timed.
-// Contract: the schedule starts with a PostureStep (read_citation_schedule's do).
+// A schedule laid out on the rig: places resolved, the body's rules applied, timed. Throws
+// gestura::Error for a schedule that does not start with a PostureStep (read_citation_schedule's
+// all do) or has no tempo.
 SignPlan plan_schedule(const CitationSchedule& schedule, const SigningRig& rig);
 
 // `citation` moved into from rest at its first posture and back to rest after its end, each hand
