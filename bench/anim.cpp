@@ -106,29 +106,31 @@ struct BlendFixture {
   }
 };
 
-// W3a: three full layers, weighted.
-void W3_Blend3Layers(benchmark::State& state) {
+// W3a: three full layers, weighted (one priority, no masks: the fast path).
+void W3_Blend3Layers(benchmark::State& state, SimdPath path) {
   static BlendFixture bf;
   const Fixture& f = fixture();
   const BlendLayer layers[] = {{&bf.a, 0.5f}, {&bf.b, 0.3f}, {&bf.c, 0.2f}};
   for (auto _ : state) {
-    blend_layers(layers, f.rest, bf.out);
+    blend_layers(layers, f.rest, bf.out, path);
     benchmark::DoNotOptimize(bf.out.rotations.data());
   }
 }
-BENCHMARK(W3_Blend3Layers);
+BENCHMARK_CAPTURE(W3_Blend3Layers, avx2, SimdPath::Auto);
+BENCHMARK_CAPTURE(W3_Blend3Layers, portable, SimdPath::Portable);
 
-// W3b: two layers, the upper one masked to the upper body at a higher priority, plus one additive.
-void W3_Blend2MaskedPlusAdditive(benchmark::State& state) {
+// W3b: two layers, the upper one masked to the upper body at a higher priority, plus one additive
+// layer, in one call.
+void W3_Blend2MaskedPlusAdditive(benchmark::State& state, SimdPath path) {
   static BlendFixture bf;
   const Fixture& f = fixture();
-  const BlendLayer layers[] = {{&bf.a, 1.0f, {}, 0}, {&bf.b, 1.0f, bf.upper_body, 1}};
+  const BlendLayer layers[] = {{&bf.a, 1.0f, {}, 0}, {&bf.b, 1.0f, bf.upper_body, 1}, {&bf.delta, 0.7f, {}, 0, true}};
   for (auto _ : state) {
-    blend_layers(layers, f.rest, bf.out);
-    apply_additive(bf.delta, 0.7f, {}, bf.out);
+    blend_layers(layers, f.rest, bf.out, path);
     benchmark::DoNotOptimize(bf.out.rotations.data());
   }
 }
-BENCHMARK(W3_Blend2MaskedPlusAdditive);
+BENCHMARK_CAPTURE(W3_Blend2MaskedPlusAdditive, avx2, SimdPath::Auto);
+BENCHMARK_CAPTURE(W3_Blend2MaskedPlusAdditive, portable, SimdPath::Portable);
 
 }  // namespace

@@ -5,14 +5,19 @@
 // 0.297 cm (different clips: compare orders of magnitude, not digits).
 // W7_CompressFacePoseUnits — the same on real motion: MakeHuman's face pose units (60 frames at 24 Hz,
 // 163 joints, read in metres, Y-up), at its own frame rate.
-// W8 — decompress one full 67-joint pose at a time moving through the clip (reference: ACL ≈ 1.04 µs).
+// W8 — decompress one full 67-joint pose: playing forward through a PlaybackContext, at random times,
+// and with the stateless CompressedClip::sample (bench/anchors compares with ozz and ACL).
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
+#include <map>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "gestura/anim/synthetic_motion.hpp"
 #include "gestura/compress/compress.hpp"
+#include "gestura/compress/playback_context.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
 
@@ -58,13 +63,60 @@ void BM_W7_CompressFacePoseUnits(benchmark::State& state) {
 }
 BENCHMARK(BM_W7_CompressFacePoseUnits)->Arg(10)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-void BM_W8_DecompressPose(benchmark::State& state) {
-  const Skeleton skeleton = synthetic_humanoid();
-  const Clip clip = synthetic_clip(skeleton, 15.0f, 30.0f);
-  CompressionSettings settings;
-  settings.max_error = static_cast<float>(state.range(0)) * 1e-5f;
-  const CompressedClip c = compress(clip, skeleton, settings);
-  Pose pose = rest_pose(skeleton);
+const CompressedClip& w8_clip(int bound_in_0001cm) {
+  static std::map<int, CompressedClip> clips;
+  auto it = clips.find(bound_in_0001cm);
+  if (it == clips.end()) {
+    const Skeleton skeleton = synthetic_humanoid();
+    const Clip clip = synthetic_clip(skeleton, 15.0f, 30.0f);
+    CompressionSettings settings;
+    settings.max_error = static_cast<float>(bound_in_0001cm) * 1e-5f;
+    it = clips.emplace(bound_in_0001cm, compress(clip, skeleton, settings)).first;
+  }
+  return it->second;
+}
+
+// W8 forward: a 60 fps player on the 30 Hz clip, through a PlaybackContext.
+void BM_W8_DecompressForward(benchmark::State& state, SimdPath path) {
+  const CompressedClip& c = w8_clip(static_cast<int>(state.range(0)));
+  PlaybackContext context;
+  Pose pose;
+  pose.resize(c.joint_count());
+  float t = 0.0f;
+  for (auto _ : state) {
+    context.sample(c, t, pose, path);
+    benchmark::DoNotOptimize(pose.rotations.data());
+    t += 1.0f / 60.0f;
+    if (t > c.duration()) t = 0.0f;
+  }
+  state.counters["joints"] = static_cast<double>(c.joint_count());
+}
+BENCHMARK_CAPTURE(BM_W8_DecompressForward, avx2, SimdPath::Auto)->Arg(10)->Arg(300);
+BENCHMARK_CAPTURE(BM_W8_DecompressForward, portable, SimdPath::Portable)->Arg(10)->Arg(300);
+
+// W8 random access: every sample a jump, through the context (no key can be reused).
+void BM_W8_DecompressRandom(benchmark::State& state) {
+  const CompressedClip& c = w8_clip(static_cast<int>(state.range(0)));
+  PlaybackContext context;
+  Pose pose;
+  pose.resize(c.joint_count());
+  std::vector<float> times(4096);
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<float> any(0.0f, c.duration());
+  for (float& t : times) t = any(rng);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    context.sample(c, times[i++ & 4095], pose);
+    benchmark::DoNotOptimize(pose.rotations.data());
+  }
+}
+BENCHMARK(BM_W8_DecompressRandom)->Arg(10)->Arg(300);
+
+// The stateless CompressedClip::sample (decodes two keys per track every call), moving through the clip.
+void BM_W8_DecompressPoseStateless(benchmark::State& state) {
+  const CompressedClip& c = w8_clip(static_cast<int>(state.range(0)));
+  Pose pose;
+  pose.resize(c.joint_count());
   float t = 0.0f;
   for (auto _ : state) {
     c.sample(t, pose);
@@ -74,6 +126,6 @@ void BM_W8_DecompressPose(benchmark::State& state) {
   }
   state.counters["joints"] = static_cast<double>(c.joint_count());
 }
-BENCHMARK(BM_W8_DecompressPose)->Arg(10)->Arg(300);
+BENCHMARK(BM_W8_DecompressPoseStateless)->Arg(10)->Arg(300);
 
 }  // namespace

@@ -40,12 +40,14 @@ struct Scene {
   Renderer renderer{Look{}, 4};  // RenderJob's default
   Renderer two_samples{Look{}, 2};
   Renderer single_sample{Look{}, 1};
+  Renderer no_occluders{Look{}, 4};  // the depth cues' capsules left out: what they cost
   std::vector<View> views;
   Scene() {
     views.push_back({preset_camera(CameraPreset::Front, framing_box(figure.mesh, figure.skeleton),
                                    float(kWidth) / kHeight), {0, 0, kWidth, kHeight}});
-    for (Renderer* r : {&renderer, &two_samples, &single_sample}) {
+    for (Renderer* r : {&renderer, &two_samples, &single_sample, &no_occluders}) {
       r->upload(figure.mesh);
+      if (r != &no_occluders) r->set_occluders(find_occluders(figure.skeleton, figure.mesh));
       r->resize(kWidth, kHeight);
       for (SkinningDevice device : {SkinningDevice::Gpu, SkinningDevice::Cpu}) {  // compile shaders, fill caches
         r->render(views, animator.skinning(), animator.morph_weights(), device);
@@ -54,7 +56,7 @@ struct Scene {
     }
   }
   Renderer& with_samples(std::int64_t samples) {
-    return samples == 4 ? renderer : samples == 2 ? two_samples : single_sample;
+    return samples == 4 ? renderer : samples == 2 ? two_samples : samples == 1 ? single_sample : no_occluders;
   }
   void draw(int frame, SkinningDevice device) {
     animator.pose_at(static_cast<float>(frame % 60) / 30.0f);
@@ -92,7 +94,8 @@ void set_counters(benchmark::State& state) {
 }
 
 // Draw only (pose, skin, draw, MSAA resolve), waiting for the GL to finish. Args: skinning device
-// (0 GPU, 1 CPU), MSAA samples (4, 2 or 1).
+// (0 GPU, 1 CPU), MSAA samples (4, 2 or 1; 0 = 4 samples without the occluder capsules' shadows and
+// ambient occlusion, for their cost).
 void BM_R1_Draw(benchmark::State& state) {
   Scene& s = scene();
   const auto device = static_cast<SkinningDevice>(state.range(0));
@@ -107,7 +110,8 @@ void BM_R1_Draw(benchmark::State& state) {
   meter.report(state);
   set_counters(state);
   state.SetLabel(std::string(device == SkinningDevice::Gpu ? "gpu skinning" : "cpu skinning + upload") + ", " +
-                 std::to_string(state.range(1)) + " sample(s); " + s.context.description());
+                 (state.range(1) == 0 ? std::string("4 samples, no occluders") : std::to_string(state.range(1)) + " sample(s)") +
+                 "; " + s.context.description());
 }
 // Draw at a quarter of the pixels (640×360, 4× MSAA): how much of a frame scales with pixels and
 // how much with vertices and triangles.
@@ -116,6 +120,7 @@ void BM_R1_DrawQuarterPixels(benchmark::State& state) {
   static Renderer small{Look{}, 4};
   static const bool ready = [&] {
     small.upload(s.figure.mesh);
+    small.set_occluders(find_occluders(s.figure.skeleton, s.figure.mesh));
     small.resize(kWidth / 2, kHeight / 2);
     return true;
   }();
@@ -134,7 +139,7 @@ void BM_R1_DrawQuarterPixels(benchmark::State& state) {
 }
 BENCHMARK(BM_R1_DrawQuarterPixels)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-BENCHMARK(BM_R1_Draw)->Args({0, 4})->Args({0, 2})->Args({1, 2})->Args({0, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_R1_Draw)->Args({0, 4})->Args({0, 0})->Args({0, 2})->Args({1, 2})->Args({0, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A full headless frame: draw + glReadPixels into an Image.
 void BM_R1_DrawAndReadback(benchmark::State& state) {

@@ -1,136 +1,43 @@
-// gestura info FILE — what a file holds, one describer per file format (chosen by extension).
-#include <algorithm>
+// gestura info FILE — what a motion file holds (app/info.hpp).
 #include <cstdio>
-#include <filesystem>
-#include <functional>
-#include <iostream>
-#include <map>
+#include <memory>
 
 #include "command.hpp"
-#include "gestura/core/error.hpp"
-#include "gestura/io/bvh.hpp"
+#include "gestura/app/info.hpp"
+#include "gestura/app/motion_files.hpp"
 
+namespace gestura::cli {
 namespace {
 
-using gestura::BvhFile;
-using gestura::Error;
-
-// The joint tree down to `max_depth` (0 = all), end sites left out; deeper joints are counted.
-void print_tree(const BvhFile& bvh, int max_depth) {
-  const auto& skeleton = bvh.skeleton;
-  const std::size_t n = skeleton.size();
-  std::vector<int> depth(n, 0), hidden_below(n, 0);
-  for (std::size_t j = 0; j < n; ++j) {
-    const int parent = skeleton.parents[j];
-    if (parent >= 0) depth[j] = depth[static_cast<std::size_t>(parent)] + 1;
-  }
-  // Count the joints hidden under each shown joint (file order lists parents before children).
-  std::vector<int> shown_ancestor(n, -1);
-  for (std::size_t j = 0; j < n; ++j) {
-    const int parent = skeleton.parents[j];
-    const bool shown = max_depth <= 0 || depth[j] <= max_depth;
-    shown_ancestor[j] = shown ? static_cast<int>(j) : shown_ancestor[static_cast<std::size_t>(parent)];
-    if (!shown && !bvh.end_site[j]) ++hidden_below[static_cast<std::size_t>(shown_ancestor[j])];
-  }
-  for (std::size_t j = 0; j < n; ++j) {
-    if (bvh.end_site[j] || (max_depth > 0 && depth[j] > max_depth)) continue;
-    std::cout << "  " << std::string(2 * static_cast<std::size_t>(depth[j]), ' ') << skeleton.names[j];
-    if (hidden_below[j] > 0) std::cout << "  (+" << hidden_below[j] << " below)";
-    std::cout << "\n";
-  }
-}
-
-int describe_bvh(const std::string& path, int tree_depth) {
-  const BvhFile bvh = gestura::load_bvh(path);
-  const auto& skeleton = bvh.skeleton;
-  const auto end_sites = static_cast<int>(std::count(bvh.end_site.begin(), bvh.end_site.end(), 1));
-  const int joints = static_cast<int>(skeleton.size()) - end_sites;
-  std::map<std::string, int> layouts;  // channel list → joints using it
-  for (std::size_t j = 0; j < skeleton.size(); ++j) {
-    if (bvh.end_site[j]) continue;
-    std::string layout;
-    for (int i = 0; i < bvh.channels[j].count; ++i) {
-      if (i > 0) layout += ' ';
-      layout += to_string(bvh.channels[j][i]);
+Invocation prepare() {
+  auto request = std::make_shared<app::InfoRequest>();
+  Invocation invocation;
+  invocation.fields = bind_fields(*request);
+  invocation.run = [request](const app::RunContext& context) {
+    const app::InfoResult r = app::run(*request, context);
+    std::printf("file:       %s\nformat:     %s\n", r.file.c_str(), r.format.c_str());
+    for (const auto& [label, value] : r.facts) {
+      const std::string head = label.empty() ? "" : label + ":";
+      std::printf("%-12s%s%s\n", head.c_str(), head.size() >= 12 ? " " : "", value.c_str());
     }
-    ++layouts[layout.empty() ? "(none)" : layout];
-  }
-  const float fps = 1.0f / bvh.frame_time;
-  std::printf("file:       %s\nformat:     BVH\n", path.c_str());
-  std::printf("root:       %s\n", skeleton.names[static_cast<std::size_t>(bvh.root())].c_str());
-  std::printf("joints:     %d (plus %d end sites)\n", joints, end_sites);
-  std::printf("channels:   %d per frame\n", bvh.channel_count());
-  for (const auto& [layout, count] : layouts) std::printf("            %4d x %s\n", count, layout.c_str());
-  std::printf("frames:     %d\n", bvh.frame_count);
-  std::printf("frame time: %g s (%g fps)\n", static_cast<double>(bvh.frame_time), static_cast<double>(fps));
-  std::printf("duration:   %g s (first to last frame)\n", static_cast<double>(bvh.clip.duration));
-  // Where the joints are at rest tells the unit and the up axis, which BVH does not name.
-  std::vector<gestura::mat4> model(skeleton.size());
-  gestura::local_to_model(skeleton, gestura::rest_pose(skeleton), model);
-  gestura::vec3 lo(1e30f), hi(-1e30f);
-  for (const auto& m : model) lo = glm::min(lo, gestura::vec3(m[3])), hi = glm::max(hi, gestura::vec3(m[3]));
-  std::printf("rest extent: x %.4g..%.4g  y %.4g..%.4g  z %.4g..%.4g (file units)\n", static_cast<double>(lo.x),
-              static_cast<double>(hi.x), static_cast<double>(lo.y), static_cast<double>(hi.y),
-              static_cast<double>(lo.z), static_cast<double>(hi.z));
-  std::printf("tree:\n");
-  std::fflush(stdout);
-  print_tree(bvh, tree_depth);
-  return 0;
-}
-
-// Extension (lower case, with the dot) → describer. New formats add a row here.
-const std::map<std::string, std::function<int(const std::string&, int)>>& describers() {
-  static const std::map<std::string, std::function<int(const std::string&, int)>> table{{".bvh", describe_bvh}};
-  return table;
-}
-
-std::string extension_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
-std::string supported_extensions() {
-  std::string list;
-  for (const auto& [ext, describe] : describers()) {
-    if (!list.empty()) list += ", ";
-    list += ext;
-  }
-  return list;
-}
-
-int run_info(const std::vector<std::string>& args) {
-  std::string path;
-  int depth = 3;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--depth") {
-      const std::string value = gestura::cli::flag_value(args, i);
-      try {
-        depth = std::stoi(value);
-      } catch (const std::exception&) {
-        throw Error("--depth needs a whole number, got '" + value + "'");
-      }
-    } else if (args[i].starts_with("--")) {
-      throw Error("unknown flag " + args[i]);
-    } else if (path.empty()) {
-      path = args[i];
-    } else {
-      throw Error("info takes one file, got '" + path + "' and '" + args[i] + "'");
+    if (!r.tree.empty()) std::printf("tree:\n");
+    for (const app::InfoResult::TreeLine& t : r.tree) {
+      std::printf("  %s%s", std::string(2 * static_cast<std::size_t>(t.depth), ' ').c_str(), t.name.c_str());
+      if (t.hidden_below > 0) std::printf("  (+%d below)", t.hidden_below);
+      std::printf("\n");
     }
-  }
-  if (path.empty()) throw Error("usage: gestura info FILE [--depth N]");
-  const std::string ext = extension_of(path);
-  const auto it = describers().find(ext);
-  if (it == describers().end())
-    throw Error(path + ": unsupported file type '" + ext + "' (supported: " + supported_extensions() + ")");
-  return it->second(path, depth);
+    return 0;
+  };
+  return invocation;
 }
 
-gestura::cli::Registration reg{{"info", "describe a file (BVH: joints, channels, frames, fps, tree)",
-                                "usage: gestura info FILE [--depth N]\n\n"
-                                "Prints what FILE holds. For .bvh: root, joints and end sites, channel\n"
-                                "layouts, frames, frame time, fps, duration and the joint tree down to\n"
-                                "depth N (default 3; 0 prints every joint).",
-                                run_info}};
+const Registration reg{{"info", "describe a motion file (BVH, glTF/GLB, VRM, BAP, .gcl: joints, frames, fps, tree)",
+                        "Prints what FILE holds: its format, root, joints and end sites, frames, frame time, fps,\n"
+                        "duration, where the joints are at rest and the joint tree down to --depth. A BVH also\n"
+                        "lists its channel layouts; a BAP its parameters; a VRM its mesh and expressions; a .gcl\n"
+                        "its size (and, with --skeleton REF.bvh, everything else).\nReads " +
+                            app::motion_file_extensions() + ".",
+                        prepare}};
 
 }  // namespace
+}  // namespace gestura::cli

@@ -1,28 +1,14 @@
-// gestura say: English text → ASL performed by the default avatar (sentence/signer.hpp).
+// gestura say: English text → ASL performed by the avatar (app/say.hpp).
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <optional>
-#include <string>
-#include <vector>
+#include <memory>
 
 #include "command.hpp"
-#include "gestura/io/avatar_source.hpp"
-#include "gestura/core/error.hpp"
-#include "gestura/lexicon/default_lexicon.hpp"
-#include "gestura/sentence/signer.hpp"
-#include "motion_output.hpp"
+#include "gestura/app/input_file.hpp"
+#include "gestura/app/say.hpp"
 
+namespace gestura::cli {
 namespace {
-
-using namespace gestura;
-
-float parse_speed(const std::string& v) {
-  char* end = nullptr;
-  const float speed = std::strtof(v.c_str(), &end);
-  if (end == v.c_str() || *end) throw Error("--speed needs a number, got '" + v + "'");
-  return speed;
-}
 
 void print_timeline(const SentencePerformance& p) {
   for (const PerformedGloss& g : p.glosses)
@@ -32,53 +18,45 @@ void print_timeline(const SentencePerformance& p) {
               p.motion.via, p.motion.escaped);
 }
 
-int run_say(const std::vector<std::string>& args) {
-  std::optional<std::string> text;
-  cli::MotionOutput out;
-  std::string avatar_spec = "default";
-  SayOptions options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (cli::parse_motion_output_flag(args, i, out)) continue;
-    if (a == "--speed") options.speed = parse_speed(cli::flag_value(args, i));
-    else if (a == "--avatar") avatar_spec = cli::flag_value(args, i);
-    else if (a == "--lang") options.lang = cli::flag_value(args, i);
-    else if (a == "--no-mouthing") options.mouthing = false;
-    else if (a == "--no-nonmanuals") options.nonmanuals = false;
-    else if (a.size() > 1 && a[0] == '-') throw Error("unknown flag '" + a + "' (see gestura say --help)");
-    else if (text) throw Error("give the text as one argument (quote it)");
-    else text = a;
-  }
-  if (!text) throw Error("missing TEXT (see gestura say --help)");
-  // A sentence is many moments: a .png is a contact sheet unless one moment is all that is wanted.
-  if (out.path.ends_with(".png")) out.sheet = true;
-  if (!out.path.empty()) cli::check_motion_output(out);
-  options.fps = static_cast<float>(out.fps);
-
-  DefaultLexicon lexicon;
-  const Avatar avatar = load_avatar(avatar_spec);
-  const Signer signer(avatar, lexicon.layers());
-  const SentencePerformance p = signer.say(*text, options);
-  for (const std::string& note : p.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
-  if (!out.path.empty()) cli::write_motion(out, avatar.skeleton, p.clip, &avatar.mesh, 0.5f * p.duration);
-  print_timeline(p);
-  if (!out.path.empty()) std::printf("wrote %s\n", std::filesystem::absolute(out.path).c_str());
-  return 0;
+Invocation prepare() {
+  struct State {
+    app::SayRequest request;
+    std::string file;
+    bool json = false;
+  };
+  auto state = std::make_shared<State>();
+  Invocation invocation;
+  invocation.fields = bind_fields(state->request);
+  invocation.fields.push_back(option({.name = "file", .help = "read TEXT from this file ('-': standard input)", .value = "FILE", .short_flag = 'f'}, state->file));
+  invocation.fields.push_back(flag({.name = "json", .help = "print the result as JSON"}, state->json));
+  invocation.run = [state](const app::RunContext& context) {
+    app::SayRequest& request = state->request;
+    request.text = text_argument(request.text, state->file, app::kMaxTextInputBytes);
+    const app::SayResult result = app::run(request, context);
+    for (const app::Notice& n : result.notices) std::fprintf(stderr, "%s\n", n.text().c_str());
+    if (state->json) {
+      std::printf("%s\n", app::to_json(result).dump(2).c_str());
+      return 0;
+    }
+    print_timeline(result.performance);
+    if (result.written) std::printf("wrote %s\n", std::filesystem::absolute(result.written->path).c_str());
+    return 0;
+  };
+  return invocation;
 }
 
-const cli::Registration reg{{
+const Registration reg{{
     "say",
     "sign English text in ASL on the default avatar",
-    "usage: gestura say TEXT [-o OUT] [--speed S] [--lang ase] [--avatar SPEC] [--fps N] [--camera LIST]\n"
-    "                   [--size WxH] [--no-mouthing] [--no-nonmanuals]\n\n"
     "TEXT is translated to ASL glosses (gestura gloss shows how), each gloss is signed from the lexicon\n"
     "(built-in data/lexicon plus the user lexicon) or fingerspelled, the signs are joined without\n"
     "returning to rest, and the face adds mouthing, question brows, negation headshake and blinks.\n"
-    "Without -o the gloss timeline is printed. " + std::string(cli::kMotionOutputUsage) + "\n"
-    "Here a .png is always a 4x4 contact sheet of the sentence; .glb/.gltf carry the face morph weights.\n"
-    "--speed 0.25–2 scales the tempo. --avatar is default (the generated avatar) or makehuman:DIR.\n"
-    "Only 'ase' (ASL) has a lexicon. At most 16 KiB of text and 300 glosses per call: split longer text.",
-    run_say,
+    "TEXT '-' (or --file -) reads standard input. Without -o the gloss timeline is printed.\n" +
+        std::string(app::kMotionOutputHelp) +
+        "\nHere a .png is always a 4x4 contact sheet of the sentence; .glb/.gltf carry the face morph weights.\n"
+        "Only 'ase' (ASL) has a lexicon. At most 16 KiB of text and 300 glosses per call: split longer text.",
+    prepare,
 }};
 
 }  // namespace
+}  // namespace gestura::cli

@@ -3,46 +3,23 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 
 #include "command.hpp"
+#include "gestura/app/motion_files.hpp"
+#include "gestura/app/render.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/render_job.hpp"
 #include "gestura/render/renderer.hpp"
+#include "gestura/render/staged_file.hpp"
 #include "gestura/render/viewer_controls.hpp"
-#include "render_subject.hpp"
 
 namespace gestura::cli {
 namespace {
-
-constexpr const char* kUsage = R"(usage: gestura view [CLIP.bvh | --rest | --test-motion | SIGN | "TEXT"] [options]
-       SIGN: --hamnosys TEXT | --names SYMBOLS | --sigml FILE [--gloss NAME]
-       TEXT: English to translate and sign, as gestura say does (anything not naming a file)
-
-Shows the default avatar at rest (the default), doing the test wave, playing CLIP.bvh (a motion
-on the avatar's skeleton), or performing a sign written in HamNoSys (Unicode or comma-separated
-symbol names, as in gestura sign) or the first (or --gloss NAME) sign of a SiGML file. Opens a window (needs a display; under no display use
-xvfb-run -a gestura view ...).
-
-  --camera PRESET        start camera: front, side, three-quarter, top, side-section  [front]
-  --size WxH             window size                                        [1280x720]
-  --background #rrggbb   background colour
-  --screenshot PATH.png  save the window after --frames frames and quit (for scripts, Xvfb)
-  --frames N             frames before the screenshot                       [30]
-  --at SECONDS           start paused at this time of the motion (for screenshots)
-  --avatar SPEC                    default (generated) or makehuman:DIR (MakeHuman assets)
-  --height M, --build X, --sex S   the avatar, as in gestura avatar export
-
-keys:  space play/pause   , . step one frame back/forward   1 2 3 speed 0.25x 0.5x 1x
-       l loop on/off   F1..F5 (or f s t p x) front, side, three-quarter, top (plan), side-section
-       r restart   q / Esc quit
-mouse: left drag orbit   right or middle drag pan   wheel zoom)";
 
 // What the window callbacks reach: the controls and the mouse state.
 struct Viewer {
@@ -96,60 +73,25 @@ void on_move(GLFWwindow* window, double x, double y) {
 
 void on_scroll(GLFWwindow* window, double, double dy) { viewer_of(window).controls.zoom(static_cast<float>(dy)); }
 
-bool names_motion_file(const std::string& arg) {
-  std::string ext = std::filesystem::path(arg).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return arg.find(' ') == std::string::npos && (ext == ".bvh" || ext == ".glb" || ext == ".gltf" || ext == ".bap");
-}
-
-int run(const std::vector<std::string>& args) {
-  Motion motion = Motion::Rest;
-  AvatarParams avatar;
-  SignSource sign;
-  bool motion_given = false;
-  std::string avatar_spec = "default";
-  std::string clip_path, screenshot;
-  ImageSize size{1280, 720};
-  CameraPreset start = CameraPreset::Front;
-  Look look;
-  int screenshot_frames = 30;
-  std::optional<float> start_at;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--camera") start = parse_camera_preset(flag_value(args, i));
-    else if (a == "--size") size = parse_image_size(flag_value(args, i));
-    else if (a == "--background") look.background = parse_hex_color(flag_value(args, i));
-    else if (a == "--screenshot") screenshot = flag_value(args, i);
-    else if (a == "--frames") {
-      const std::string n = flag_value(args, i);
-      const auto [end, ec] = std::from_chars(n.data(), n.data() + n.size(), screenshot_frames);
-      if (ec != std::errc() || end != n.data() + n.size() || screenshot_frames < 1 || screenshot_frames > 100000)
-        throw Error("bad --frames '" + n + "' (a whole number 1..100000)");
-    } else if (a == "--at") start_at = parse_seconds(flag_value(args, i), a);
-    else if (a == "--rest") motion = Motion::Rest, motion_given = true;
-    else if (a == "--test-motion") motion = Motion::TestMotion, motion_given = true;
-    else if (parse_avatar_flag(args, i, avatar, avatar_spec)) continue;
-    else if (parse_sign_source_flag(args, i, sign)) continue;
-    else if (!a.empty() && a[0] == '-') throw Error("unknown flag " + a + " (see gestura view --help)");
-    // FILE or TEXT: an existing file or a motion file name is a clip; anything else is English to sign.
-    else if (std::filesystem::exists(a) || names_motion_file(a)) clip_path = a, motion = Motion::ClipFile, motion_given = true;
-    else sign.text = a;
-  }
-  if (sign.given() || !sign.gloss.empty()) {
-    if (motion_given) throw Error("show either a sign (--hamnosys, --names, --sigml) or CLIP.bvh / --rest / --test-motion");
-    motion = Motion::Sign;
-  }
-  const RenderSubject subject = load_render_subject(motion, clip_path, avatar, sign, avatar_spec);
+// The window: what the controls and the renderer need, until it is closed (or the screenshot taken).
+int show(const app::ViewRequest& request, const app::RunContext& context) {
+  const app::LoadedSubject loaded = app::run(request, context);
+  for (const app::Notice& n : loaded.notices) std::fprintf(stderr, "%s\n", n.text().c_str());
+  const RenderSubject& subject = loaded.subject;
   Animator animator(subject);
   std::optional<StagedFile> screenshot_file;
-  if (!screenshot.empty()) screenshot_file.emplace(screenshot);
+  if (!request.screenshot.empty()) screenshot_file.emplace(request.screenshot);
+  Look look;
+  if (request.background) look.background = request.background->rgb;
+  const ImageSize size = request.size;
 
   WindowGlContext window(size.width, size.height, "gestura view");
   Renderer renderer(look);
   renderer.upload(subject.mesh);
-  Viewer viewer{ViewerControls(framing_box(subject.mesh, subject.skeleton), start,
+  renderer.set_occluders(find_occluders(subject.skeleton, subject.mesh));
+  Viewer viewer{ViewerControls(framing_box(subject.mesh, subject.skeleton, subject.clip ? &*subject.clip : nullptr), request.camera.front(),
                                 static_cast<float>(size.width) / static_cast<float>(size.height))};
-  if (start_at) viewer.controls.time = std::min(*start_at, animator.duration()), viewer.controls.playing = false;
+  if (request.at) viewer.controls.time = std::min(*request.at, animator.duration()), viewer.controls.playing = false;
   glfwSetWindowUserPointer(window.window(), &viewer);
   glfwSetKeyCallback(window.window(), on_key);
   glfwSetMouseButtonCallback(window.window(), on_button);
@@ -174,7 +116,7 @@ int run(const std::vector<std::string>& args) {
     const View view{c.camera(c.aspect), {0, 0, width, height}};
     renderer.render(std::span(&view, 1), animator.skinning(), animator.morph_weights());
     renderer.present(width, height);
-    if (screenshot_file && drawn + 1 >= screenshot_frames) {
+    if (screenshot_file && drawn + 1 >= request.frames) {
       renderer.read_window_pixels(frame, width, height);
       write_png(*screenshot_file, frame);
       break;
@@ -188,7 +130,34 @@ int run(const std::vector<std::string>& args) {
   return 0;
 }
 
-const Registration reg{{"view", "interactive viewer (play, step, slow motion, orbit, camera presets)", kUsage, run}};
+Invocation prepare() {
+  auto request = std::make_shared<app::ViewRequest>();
+  Invocation invocation;
+  invocation.fields = bind_fields(*request);
+  // The bare argument is a motion file when it names one (or an existing file), else English to sign.
+  FieldBinding& subject = binding(invocation.fields, "clip");
+  subject.info.value = "CLIP|TEXT";
+  subject.info.help = "a motion on the avatar's skeleton (.bvh, .glb, .gltf, .bap), or English text to sign";
+  subject.set = [request](std::string_view arg) {
+    const std::string text(arg);
+    const bool file = std::filesystem::exists(text) || (text.find(' ') == std::string::npos && app::is_motion_file(text));
+    (file ? request->subject.clip : request->extras.text) = text;
+  };
+  invocation.run = [request](const app::RunContext& context) { return show(*request, context); };
+  return invocation;
+}
+
+const Registration reg{{"view", "interactive viewer (play, step, slow motion, orbit, camera presets)",
+                        "Shows the avatar at rest (the default), doing the test wave, playing CLIP (a motion on the\n"
+                        "avatar's skeleton), performing one sign written in HamNoSys (--hamnosys, --names) or SiGML\n"
+                        "(--sigml FILE [--gloss NAME]), or signing English TEXT as gestura say does (a bare argument\n"
+                        "that names no file). Opens a window (needs a display; without one use xvfb-run -a gestura\n"
+                        "view ...).\n\n"
+                        "keys:  space play/pause   , . step one frame back/forward   1 2 3 speed 0.25x 0.5x 1x\n"
+                        "       l loop on/off   F1..F5 (or f s t p x) front, side, three-quarter, top (plan), side-section\n"
+                        "       r restart   q / Esc quit\n"
+                        "mouse: left drag orbit   right or middle drag pan   wheel zoom",
+                        prepare}};
 
 }  // namespace
 }  // namespace gestura::cli

@@ -260,9 +260,9 @@ TEST(RetargetCli, WritesTheAvatarSkeletonWithThePose) {
   const auto gp = positions_at(gltf.skeleton, gltf.clip, 0.0f);
   EXPECT_GT(bone(gltf.skeleton, gp, "r_hip", "r_knee").z, 0.6f);
 
-  EXPECT_EQ(run_cli("retarget '" + in + "' -o '" + out + ".fbx'").status, 1);
-  EXPECT_EQ(run_cli("retarget '" + in + "' -o '" + out + "' --scale nope").status, 1);
-  EXPECT_EQ(run_cli("retarget '" + in + "'").status, 1);
+  EXPECT_EQ(run_cli("retarget '" + in + "' -o '" + out + ".fbx'").status, 2);
+  EXPECT_EQ(run_cli("retarget '" + in + "' -o '" + out + "' --scale nope").status, 2);
+  EXPECT_EQ(run_cli("retarget '" + in + "'").status, 2);
   EXPECT_EQ(run_cli("retarget /nonexistent.bvh -o '" + out + "'").status, 1);
 }
 

@@ -254,3 +254,40 @@ TEST(Morph, NormalDeltasAreRenormalised) {
   expect_near(out[0], vec3(1, 0, 0));
   expect_near(out[1], vec3(0, 1, 0));
 }
+
+// Vertices in runs of one to four influences (as skinned meshes have them, rigid parts next to
+// blended ones), some with a weightless slot before a weighted one, against the LBS formula written
+// out per vertex; with few joints and with more than the portable path keeps as rows on the stack.
+TEST(Skinning, LbsMatchesTheFormulaForEveryInfluenceCount) {
+  for (int joint_count : {12, 300}) {
+    std::mt19937 rng(77);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), share(0.1f, 1.0f);
+    std::uniform_int_distribution<int> pick(0, joint_count - 1);
+    Cloud c;
+    for (std::size_t v = 0; v < 803; ++v) {
+      c.positions.push_back(vec3(u(rng), u(rng) + 1.0f, u(rng)));
+      c.normals.push_back(glm::normalize(vec3(u(rng), u(rng), u(rng)) + vec3(0.0f, 0.0f, 2.0f)));
+      c.joints.push_back(JointIndices(pick(rng), pick(rng), pick(rng), pick(rng)));
+      const int influences = 1 + static_cast<int>(v / 9 % 4);  // runs of 9 vertices
+      vec4 w(0.0f);
+      for (int k = 0; k < influences; ++k) w[k] = share(rng);
+      if (v % 7 == 0 && influences >= 3) w[1] = 0.0f;  // a hole before a weighted slot
+      c.weights.push_back(w / (w.x + w.y + w.z + w.w));
+    }
+    const std::vector<mat4> skin = random_pose_matrices(joint_count, 8);
+    for (SkinningPath path : kPaths) {
+      if (!available(path)) continue;
+      std::vector<vec3> p(c.positions.size()), n(c.positions.size()), q(c.positions.size());
+      skin_positions_normals(skin, c.joints, c.weights, c.positions, c.normals, p, n, path);
+      skin_positions(skin, c.joints, c.weights, c.positions, q, path);
+      for (std::size_t v = 0; v < p.size(); ++v) {
+        mat4 m(0.0f);
+        for (int k = 0; k < 4; ++k) m += c.weights[v][k] * skin[c.joints[v][k]];
+        SCOPED_TRACE("vertex " + std::to_string(v) + ", " + std::to_string(joint_count) + " joints");
+        expect_near(p[v], vec3(m * vec4(c.positions[v], 1.0f)));
+        expect_near(q[v], p[v]);
+        expect_near(n[v], glm::normalize(vec3(m * vec4(c.normals[v], 0.0f))));
+      }
+    }
+  }
+}

@@ -102,7 +102,7 @@ TEST(CompressCli, GclInputNeedsAMatchingSkeleton) {
   const std::string gcl = ::testing::TempDir() + "synthetic.gcl";
   ASSERT_EQ(run_cli("compress synthetic:1 -o " + gcl).status, 0);
   const CliRun no_skeleton = run_cli("compress " + gcl);
-  EXPECT_EQ(no_skeleton.status, 1);
+  EXPECT_EQ(no_skeleton.status, 2) << "a usage error: the command line lacks --skeleton";
   EXPECT_NE(no_skeleton.output.find("--skeleton"), std::string::npos) << no_skeleton.output;
   const CliRun wrong = run_cli("decompress " + gcl + " --skeleton " + kData + "/makehuman/poses/tpose.bvh -o /dev/null");
   EXPECT_EQ(wrong.status, 1);
@@ -124,7 +124,7 @@ TEST(CompressCli, DecompressRejectsJunkAndMissingArguments) {
   EXPECT_NE(bad.output.find(junk + ": byte"), std::string::npos) << bad.output;
   for (const std::string& args : std::vector<std::string>{"decompress", "decompress " + junk, "decompress " + junk + " -o x.bvh --bogus"}) {
     const CliRun r = run_cli(args);
-    EXPECT_EQ(r.status, 1) << args;
+    EXPECT_EQ(r.status, 2) << args << ": a usage error";
     EXPECT_NE(r.output.find("gestura decompress: "), std::string::npos) << args << "\n" << r.output;
   }
   std::remove(junk.c_str());
@@ -133,11 +133,14 @@ TEST(CompressCli, DecompressRejectsJunkAndMissingArguments) {
 TEST(CompressCli, BadInputIsAClearError) {
   for (const char* args : {"compress", "compress synthetic --error-cm 0", "compress synthetic --error-cm x",
                            "compress synthetic:-1", "compress synthetic --bogus", "compress a b", "compress synthetic -o",
-                           "compress /nonexistent.bvh", "compress synthetic --scale -2"}) {
+                           "compress synthetic --scale -2"}) {
     const CliRun r = run_cli(args);
-    EXPECT_EQ(r.status, 1) << args;
+    EXPECT_EQ(r.status, 2) << args << ": a usage error";
     EXPECT_NE(r.output.find("gestura compress: "), std::string::npos) << args << "\n" << r.output;
   }
+  const CliRun missing = run_cli("compress /nonexistent.bvh");
+  EXPECT_EQ(missing.status, 1) << "a file that is not there is not a usage error";
+  EXPECT_NE(missing.output.find("/nonexistent.bvh: no such file"), std::string::npos) << missing.output;
 }
 
 }  // namespace

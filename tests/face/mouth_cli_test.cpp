@@ -24,7 +24,7 @@ TEST(FaceMouthCli, MissingEspeakDataIsAClearError) {
 }
 
 TEST(FaceMouthCli, BadFlagsAreRefused) {
-  EXPECT_EQ(run_cli("mouth mom --end soon").status, 1);
-  EXPECT_EQ(run_cli("mouth mom --start 2 --end 1").status, 1);
-  EXPECT_EQ(run_cli("mouth").status, 1);
+  EXPECT_EQ(run_cli("mouth mom --end soon").status, 2);
+  EXPECT_EQ(run_cli("mouth mom --start 2 --end 1").status, 2);
+  EXPECT_EQ(run_cli("mouth").status, 2);
 }

@@ -110,7 +110,7 @@ TEST(IkReachCli, BadFlagsAreClearErrors) {
                            "reach --target 0,1,0 --frames -3", "reach --target 0,1,0 --bogus",
                            "reach --target 0,1,0 --arm x"}) {
     const CliRun r = run_cli(args);
-    EXPECT_EQ(r.status, 1) << args;
+    EXPECT_EQ(r.status, 2) << args << ": a usage error";
     EXPECT_NE(r.output.find("gestura reach: "), std::string::npos) << args << "\n" << r.output;
   }
 }

@@ -2,6 +2,7 @@
 // round trip keeps every rotation to the BAP resolution (1e-5 rad per Euler angle).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +12,7 @@
 #include "gestura/anim/sampler.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/io/bap.hpp"
+#include "gestura/io/bap_bvh.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/skeleton/rotation_order.hpp"
 #include "support/cli.hpp"
@@ -93,11 +95,82 @@ TEST(BapConvert, BvhToBapToBvhKeepsTheMotion) {
   EXPECT_GT(worst_angle, 0.0f);  // the BAP really was quantised: not a copy of the BVH
 }
 
-TEST(BapConvert, BvhWithoutHanimJointsIsAClearError) {
-  const std::string out = ::testing::TempDir() + "tpose.bap";
-  const CliRun r = run_cli("convert " + shared_data() + "/makehuman/poses/tpose.bvh " + out);
-  EXPECT_EQ(r.status, 1);
+// A T-posed upper body under one naming convention whose left forearm bends 90° forward over one
+// second; the right arm stays still.
+std::string bent_elbow_bvh(const std::string& file, const std::vector<std::string>& names) {
+  // names: root, spine, neck, l_arm, l_forearm, l_hand, r_arm, r_forearm, r_hand
+  Skeleton s;
+  s.add_joint(names[0], -1, vec3(0.0f, 1.0f, 0.0f));
+  s.add_joint(names[1], 0, vec3(0.0f, 0.25f, 0.0f));
+  s.add_joint(names[2], 1, vec3(0.0f, 0.25f, 0.0f));
+  s.add_joint(names[3], 1, vec3(0.18f, 0.2f, 0.0f));
+  s.add_joint(names[4], 3, vec3(0.3f, 0.0f, 0.0f));
+  s.add_joint(names[5], 4, vec3(0.25f, 0.0f, 0.0f));
+  s.add_joint(names[6], 1, vec3(-0.18f, 0.2f, 0.0f));
+  s.add_joint(names[7], 6, vec3(-0.3f, 0.0f, 0.0f));
+  s.add_joint(names[8], 7, vec3(-0.25f, 0.0f, 0.0f));
+  Clip clip;
+  clip.resize_joints(s.size());
+  clip.duration = 1.0f;
+  for (int f = 0; f <= 30; ++f) {
+    const float t = static_cast<float>(f) / 30.0f;
+    clip.rotations[4].add(t, glm::angleAxis(0.5f * kPi * t, vec3(0.0f, 1.0f, 0.0f)));  // +X forearm turns to -Z... or +Z
+  }
+  save_bvh(file, make_bvh(s, clip, 1.0f / 30.0f));
+  return file;
+}
+
+// The angle between upper arm and forearm of the avatar at the end of a BAP file's motion.
+float avatar_elbow_angle(const std::string& bap_path, const char* side) {
+  const BvhFile motion = bap_to_bvh(load_bap(bap_path));
+  const Skeleton& s = motion.skeleton;
+  Pose pose = rest_pose(s);
+  sample_clip(motion.clip, motion.clip.duration, WrapMode::Clamp, rest_pose(s), pose);
+  std::vector<mat4> model(s.size());
+  local_to_model(s, pose, model);
+  const auto at = [&](const std::string& name) { return vec3(model[static_cast<std::size_t>(s.find(name))][3]); };
+  const std::string p(side);
+  const vec3 upper = at(p + "_elbow") - at(p + "_shoulder"), fore = at(p + "_wrist") - at(p + "_elbow");
+  return std::acos(glm::dot(glm::normalize(upper), glm::normalize(fore)));
+}
+
+TEST(BapConvert, OtherJointNamesAreMappedToHanimByTheTables) {
+  const std::vector<std::vector<std::string>> conventions{
+      {"Hips", "Spine", "Neck", "LeftArm", "LeftForeArm", "LeftHand", "RightArm", "RightForeArm", "RightHand"},  // CMU
+      {"hips", "spine", "neck", "leftUpperArm", "leftLowerArm", "leftHand", "rightUpperArm", "rightLowerArm", "rightHand"},  // VRM
+      {"root", "spine03", "neck01", "upperarm01.L", "lowerarm01.L", "wrist.L", "upperarm01.R", "lowerarm01.R", "wrist.R"}};  // MakeHuman
+  for (const auto& names : conventions) {
+    const std::string bvh = bent_elbow_bvh(::testing::TempDir() + "names_" + names[3] + ".bvh", names);
+    const std::string bap = ::testing::TempDir() + "names_" + names[3] + ".bap";
+    const CliRun r = run_cli("convert '" + bvh + "' '" + bap + "'");
+    ASSERT_EQ(r.status, 0) << names[3] << "\n" << r.output;
+    EXPECT_NE(r.output.find("mapped to H-Anim"), std::string::npos) << r.output;
+    // The forearm bent a right angle; the avatar's does too, the other arm keeps its rest bend.
+    EXPECT_NEAR(to_degrees(avatar_elbow_angle(bap, "l")), 90.0, 8.0) << names[3];
+    const float rest = avatar_elbow_angle(bap, "r");
+    EXPECT_LT(to_degrees(rest), 30.0) << names[3];
+    std::remove(bvh.c_str());
+    std::remove(bap.c_str());
+  }
+}
+
+TEST(BapConvert, MakeHumanBvhConvertsToBap) {
+  const std::string out = ::testing::TempDir() + "standing01.bap";
+  const CliRun r = run_cli("convert " + shared_data() + "/makehuman/poses/standing01.bvh " + out + " --scale 0.1 --z-up");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const BapFile bap = load_bap(out);
+  EXPECT_GT(bap.frame_count(), 0);
+  EXPECT_NE(std::find_if(bap.values.begin(), bap.values.end(), [](std::int32_t v) { return v != 0; }), bap.values.end());
+  std::remove(out.c_str());
+}
+
+TEST(BapConvert, BvhWithoutKnownJointNamesIsAClearError) {
+  const std::string bvh = bent_elbow_bvh(::testing::TempDir() + "unknown_names.bvh",
+                                         {"a", "b", "c", "d", "e", "f", "g", "h", "i"});
+  const CliRun r = run_cli("convert '" + bvh + "' " + ::testing::TempDir() + "unknown_names.bap");
+  EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("H-Anim"), std::string::npos) << r.output;
+  std::remove(bvh.c_str());
 }
 
 TEST(BapConvert, MalformedBapNamesTheLine) {

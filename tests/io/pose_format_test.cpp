@@ -221,7 +221,7 @@ TEST(PoseFormatCli, ConvertWritesPoseAndOpenPoseJson) {
   EXPECT_EQ(p.components[0].points, bvh.skeleton.names);
   EXPECT_EQ(p.frames, static_cast<std::uint32_t>(bvh.frame_count));
 
-  EXPECT_EQ(run_cli("convert '" + in + "' '" + (dir / "kp.json").string() + "'").status, 1) << "needs --openpose";
+  EXPECT_EQ(run_cli("convert '" + in + "' '" + (dir / "kp.json").string() + "'").status, 2) << "needs --openpose";
   const CliRun json = run_cli("convert '" + in + "' '" + (dir / "kp.json").string() + "' --scale 0.1 --z-up --openpose");
   ASSERT_EQ(json.status, 0) << json.output;
   std::ifstream frame0(dir / "kp_000000000000_keypoints.json");

@@ -64,7 +64,10 @@ TEST(LexiconCli, ClearErrors) {
   EXPECT_NE(bad_lang.output.find("unknown sign-language code 'asl' (did you mean 'ase'?)"), std::string::npos);
   EXPECT_NE(gestura_cli(dir, "lexicon add --gloss X --lang ase").output.find("exactly one of --hamnosys and --sigml"),
             std::string::npos);
-  EXPECT_NE(gestura_cli(dir, "lexicon frobnicate").output.find("unknown action 'frobnicate'"), std::string::npos);
+  const CliRun unknown = gestura_cli(dir, "lexicon frobnicate");
+  EXPECT_NE(unknown.output.find("unknown action 'frobnicate' (list, show, search, add, import, export, remove"),
+            std::string::npos) << unknown.output;
+  EXPECT_EQ(unknown.status, 2);
   const std::string junk = dir.write("junk.sqlite", std::string(2048, '\x5a'));
   const CliRun corrupt = gestura_cli(dir, "lexicon list --db '" + junk + "'");
   EXPECT_EQ(corrupt.status, 1);

@@ -115,14 +115,17 @@ TEST_F(HeadlessRender, FrontViewIsEmptyBesideTheBody) {
 }
 
 TEST_F(HeadlessRender, PresetsSeeDifferentSilhouettes) {
+  // The follow camera frames like the front one when nothing moves (its box is the front's here).
+  const std::vector<CameraPreset> presets{CameraPreset::Front, CameraPreset::Side, CameraPreset::ThreeQuarter,
+                                          CameraPreset::Top, CameraPreset::SideSection};
   std::vector<Image> images;
-  for (CameraPreset preset : kCameraPresets) images.push_back(draw(preset));
+  for (CameraPreset preset : presets) images.push_back(draw(preset));
   for (std::size_t a = 0; a < images.size(); ++a)
     for (std::size_t b = a + 1; b < images.size(); ++b) {
       int differing = 0;
       for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) differing += is_background(images[a], x, y) != is_background(images[b], x, y);
-      EXPECT_GT(differing, kW * kH / 50) << preset_name(kCameraPresets[a]) << " vs " << preset_name(kCameraPresets[b]);
+      EXPECT_GT(differing, kW * kH / 50) << preset_name(presets[a]) << " vs " << preset_name(presets[b]);
     }
 }
 

@@ -102,11 +102,11 @@ TEST(MotionOutputCli, ViewSignsEnglishText) {
 
 TEST(MotionOutputCli, ViewRejectsABadSignAndTwoSubjects) {
   const CliRun bad = run_cli("view --names hamflathand,hamnotasymbol --screenshot /dev/null");
-  EXPECT_EQ(bad.status, 1);
+  EXPECT_EQ(bad.status, 1) << "bad notation is bad input";
   EXPECT_NE(bad.output.find("hamnotasymbol"), std::string::npos) << bad.output;
   const CliRun both = run_cli("view --rest --names hamflathand --screenshot /dev/null");
-  EXPECT_EQ(both.status, 1);
-  EXPECT_NE(both.output.find("either a sign"), std::string::npos) << both.output;
+  EXPECT_EQ(both.status, 2) << "a usage error";
+  EXPECT_NE(both.output.find("show one thing"), std::string::npos) << both.output;
 }
 
 int video_frames(const std::string& path) {
@@ -135,12 +135,12 @@ TEST(MotionOutputCli, ReachWritesAVideoWithOneFramePerMotionFrame) {
 TEST(MotionOutputCli, UnknownOutputExtensionIsAClearErrorAndWritesNothing) {
   const fs::path out = temp_file("reach.avi");
   const CliRun reach = run_cli("reach --target 0.25,1.2,0.35 -o " + out.string());
-  EXPECT_EQ(reach.status, 1);
+  EXPECT_EQ(reach.status, 2) << "a usage error";
   EXPECT_NE(reach.output.find(out.string() + ": cannot write"), std::string::npos) << reach.output;
   EXPECT_NE(reach.output.find(".mp4"), std::string::npos) << "lists what it can write: " << reach.output;
   EXPECT_FALSE(fs::exists(out));
   const CliRun sign = run_cli(std::string("sign --names ") + kFlatHandAtChest + " -o " + out.string());
-  EXPECT_EQ(sign.status, 1);
+  EXPECT_EQ(sign.status, 2) << "a usage error";
   EXPECT_NE(sign.output.find("cannot write"), std::string::npos) << sign.output;
   EXPECT_FALSE(fs::exists(out));
 }

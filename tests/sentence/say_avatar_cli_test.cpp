@@ -56,12 +56,12 @@ TEST(SayAvatarCli, UnknownAvatarIsNamedBeforeAnyWork) {
 TEST(SayAvatarCli, BadOutputOrAvatarFlagsAreNamedAndWriteNothing) {
   const std::string txt = "/tmp/gestura_say_bad_output.txt";
   const auto wrong_kind = gestura::test::run_cli("say hello -o " + txt);
-  EXPECT_EQ(wrong_kind.status, 1);
+  EXPECT_EQ(wrong_kind.status, 2) << "a usage error";
   EXPECT_NE(wrong_kind.output.find(txt), std::string::npos) << wrong_kind.output;
   EXPECT_NE(wrong_kind.output.find(".mp4"), std::string::npos) << "lists what it can write: " << wrong_kind.output;
   EXPECT_FALSE(std::filesystem::exists(txt));
   const auto no_value = gestura::test::run_cli("say hello --avatar");
-  EXPECT_EQ(no_value.status, 1);
+  EXPECT_EQ(no_value.status, 2) << "a usage error";
   EXPECT_NE(no_value.output.find("--avatar"), std::string::npos) << no_value.output;
   const std::string srt = "/tmp/gestura_say_avatar_cue.srt";
   std::ofstream(srt) << "1\n00:00:00,000 --> 00:00:02,000\nHello\n";

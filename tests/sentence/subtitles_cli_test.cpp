@@ -79,7 +79,7 @@ TEST_F(SubtitlesCli, MalformedSubtitlesExitOneWithThePlace) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST_F(SubtitlesCli, BadOptionsExitOne) {
+TEST_F(SubtitlesCli, BadOptionsExitTwo) {
   const std::string srt = file("ok.srt", "1\n00:00:01,000 --> 00:00:02,000\nHello\n");
   for (const std::string& flags :
        {std::string("-o ") + path("x.gif"), std::string("-o ") + path("x.mp4") + " --max-speed 3",
@@ -87,12 +87,12 @@ TEST_F(SubtitlesCli, BadOptionsExitOne) {
         std::string("-o ") + path("x.mp4") + " --fps 0", std::string("-o ") + path("x.mp4") + " --bogus",
         std::string("")}) {
     const CliRun r = subtitles(srt + " " + flags);
-    EXPECT_EQ(r.status, 1) << flags << "\n" << r.output;
+    EXPECT_EQ(r.status, 2) << flags << "\n" << r.output;
     EXPECT_NE(r.output.find("gestura subtitles: "), std::string::npos) << r.output;
   }
   const CliRun unknown_ext = subtitles(file("x.txt", "hello") + " -o " + path("x.mp4"));
-  EXPECT_EQ(unknown_ext.status, 1);
-  EXPECT_NE(unknown_ext.output.find("expected .srt or .vtt"), std::string::npos) << unknown_ext.output;
+  EXPECT_EQ(unknown_ext.status, 2);
+  EXPECT_NE(unknown_ext.output.find(".srt or .vtt"), std::string::npos) << unknown_ext.output;
 }
 
 TEST_F(SubtitlesCli, RendersTwoCuesToAVideoAsLongAsTheProgramme) {

@@ -67,10 +67,11 @@ TEST(SignCheck, MalformedSigmlAndBadArgumentsFailCleanly) {
   EXPECT_NE(r.output.find("broken.sigml:3:"), std::string::npos) << r.output;
   EXPECT_EQ(r.status, 1);
   r = run_cli("check");
-  EXPECT_NE(r.output.find("needs a FILE"), std::string::npos);
-  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("FILE: missing"), std::string::npos) << r.output;
+  EXPECT_EQ(r.status, 2) << "a usage error";
   r = run_cli("check --bogus x.sigml");
-  EXPECT_NE(r.output.find("unknown flag --bogus"), std::string::npos);
+  EXPECT_NE(r.output.find("--bogus"), std::string::npos) << r.output;
+  EXPECT_EQ(r.status, 2);
   r = run_cli("check " + temp_file("x.txt", "hello"));
   EXPECT_NE(r.output.find("expected .jsonl or .sigml"), std::string::npos);
 }

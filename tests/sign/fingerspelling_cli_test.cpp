@@ -78,13 +78,13 @@ TEST(FingerspellingCli, RejectsBadInputWithOneClearLine) {
   EXPECT_EQ(digit.status, 1);
   EXPECT_NE(digit.output.find("symbol 2: cannot fingerspell '3' in BSL"), std::string::npos) << digit.output;
   const CliRun flag = run_cli("fingerspell --alphabet xsl abc");
-  EXPECT_EQ(flag.status, 1);
-  EXPECT_NE(flag.output.find("--alphabet must be asl or bsl"), std::string::npos) << flag.output;
+  EXPECT_EQ(flag.status, 2);
+  EXPECT_NE(flag.output.find("--alphabet: 'xsl' is not asl or bsl"), std::string::npos) << flag.output;
   const CliRun rate = run_cli("fingerspell --rate fast abc");
-  EXPECT_EQ(rate.status, 1);
-  EXPECT_NE(rate.output.find("--rate needs a positive number"), std::string::npos) << rate.output;
-  EXPECT_EQ(run_cli("fingerspell").status, 1);
-  EXPECT_EQ(run_cli("fingerspell --rate").status, 1);
+  EXPECT_EQ(rate.status, 2);
+  EXPECT_NE(rate.output.find("--rate: 'fast' is not a number"), std::string::npos) << rate.output;
+  EXPECT_EQ(run_cli("fingerspell").status, 2);
+  EXPECT_EQ(run_cli("fingerspell --rate").status, 2);
 }
 
 TEST(FingerspellingCli, WritesJointPositionsOfThePerformance) {
@@ -121,22 +121,22 @@ TEST(FingerspellingCli, BslMovesBothHands) {
 TEST(FingerspellingCli, RejectsBadOutputAndInput) {
   const fs::path junk = temp_file("junk.txt");
   const CliRun ext = run_cli("fingerspell abc -o " + junk.string());
-  EXPECT_EQ(ext.status, 1);
+  EXPECT_EQ(ext.status, 2);
   EXPECT_NE(ext.output.find("cannot write this kind of file"), std::string::npos) << ext.output;
   EXPECT_FALSE(fs::exists(junk));
   const CliRun sheet = run_cli("fingerspell abc --sheet -o " + temp_file("a.json").string());
-  EXPECT_EQ(sheet.status, 1);
-  EXPECT_NE(sheet.output.find("--sheet needs a .png"), std::string::npos) << sheet.output;
+  EXPECT_EQ(sheet.status, 2);
+  EXPECT_NE(sheet.output.find("--sheet: needs a .png"), std::string::npos) << sheet.output;
   const CliRun speed = run_cli("fingerspell --speed 0 abc");
-  EXPECT_EQ(speed.status, 1);
-  EXPECT_NE(speed.output.find("--speed needs a positive number"), std::string::npos) << speed.output;
-  EXPECT_NE(run_cli("fingerspell --speed 9 abc").output.find("between 0.25 and 4"), std::string::npos);
+  EXPECT_EQ(speed.status, 2);
+  EXPECT_NE(speed.output.find("--speed: 0 is outside 0.25..4"), std::string::npos) << speed.output;
+  EXPECT_NE(run_cli("fingerspell --speed 9 abc").output.find("0.25..4"), std::string::npos);
   const CliRun empty = run_cli("fingerspell '  ' -o " + temp_file("e.json").string());
-  EXPECT_EQ(empty.status, 1);
+  EXPECT_EQ(empty.status, 2);
   EXPECT_NE(empty.output.find("nothing to spell"), std::string::npos) << empty.output;
   const CliRun binary = run_cli("fingerspell \"$(printf 'ab\\377\\001')\" -o " + temp_file("b.json").string());
   EXPECT_EQ(binary.status, 1);
   EXPECT_NE(binary.output.find("symbol 2: cannot fingerspell byte 0xFF"), std::string::npos) << binary.output;
   const CliRun fps = run_cli("fingerspell abc --fps 0 -o " + temp_file("f.json").string());
-  EXPECT_EQ(fps.status, 1);
+  EXPECT_EQ(fps.status, 2);
 }

@@ -291,6 +291,14 @@ TEST(HamnosysErrors, BadUnicodeBinaryJunkAndHugeInput) {
     EXPECT_NE(std::string(e.what()).find("U+E0FF"), std::string::npos);
   }
   EXPECT_THROW(parse_hamnosys_unicode(utf8(0xE001) + "\xC3"), gestura::Error);  // truncated UTF-8
+  // The shared strict decoder: an overlong encoding of hamflathand (U+E001) is not hamflathand.
+  try {
+    parse_hamnosys_unicode(utf8(0xE020) + std::string("\xF0\x8E\x80\x81"));
+    FAIL() << "overlong UTF-8 accepted";
+  } catch (const gestura::Error& e) {
+    EXPECT_EQ(e.where().index, 1);
+    EXPECT_NE(std::string(e.what()).find("invalid UTF-8 at byte 3"), std::string::npos) << e.what();
+  }
   std::mt19937 rng(7);
   std::string junk(4096, '\0');
   for (char& c : junk) c = static_cast<char>(rng());

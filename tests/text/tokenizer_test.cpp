@@ -35,6 +35,16 @@ TEST(Tokenizer, WordsNumbersOrdinals) {
   EXPECT_EQ(texts(tokenize("caf\u00e9 na\u00efve")), (std::vector<std::string>{"caf\u00e9", "na\u00efve"}));
 }
 
+TEST(Tokenizer, WordsAreInNfcWithSpansIntoTheInput) {
+  const std::string decomposed = "Jose\u0301 came";  // e + combining acute accent
+  const auto tokens = tokenize(decomposed);
+  ASSERT_EQ(tokens.size(), 2u);
+  EXPECT_EQ(tokens[0].text, "Jos\u00e9") << "the precomposed letter";
+  EXPECT_EQ(tokens[0].begin, 0u);
+  EXPECT_EQ(tokens[0].end, 6u) << "the span still covers the bytes typed";
+  EXPECT_EQ(texts(tokenize("Jos\u00e9 came")), texts(tokens));
+}
+
 TEST(Lemmatizer, CandidatesBestFirst) {
   auto first = [](std::string_view w) { return lemma_candidates(w).front().lemma; };
   EXPECT_EQ(first("went"), "go");

@@ -121,6 +121,12 @@ TEST(Translator, FingerspellingCarriesLetters) {
   EXPECT_EQ(t.glosses[2].letters, (std::vector<std::string>{"Z", "O", "E"}));
   EXPECT_NE(t.glosses[2].reason.find("name"), std::string::npos);
 
+  // However the accent was typed: as é, or as e and a combining accent.
+  const Translation precomposed = gloss("My name is Jos\u00e9."), combining = gloss("My name is Jose\u0301.");
+  EXPECT_EQ(precomposed.text(), combining.text());
+  EXPECT_EQ(combining.glosses[2].gloss, "FS-JOSE");
+  EXPECT_EQ(combining.glosses[2].letters, (std::vector<std::string>{"J", "O", "S", "E"}));
+
   const Translation cyrillic = gloss("I met \u0418\u0432\u0430\u043d.");  // Иван
   ASSERT_EQ(cyrillic.glosses.size(), 3u);
   EXPECT_EQ(cyrillic.glosses[2].kind, GlossKind::fingerspell);

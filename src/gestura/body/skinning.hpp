@@ -11,22 +11,23 @@
 //    caller-owned and must not overlap the inputs. No allocation happens inside the kernels.
 //  - LBS output normals are normalised; DQS rotates them (unit in, unit out).
 //
-// Each kernel has two implementations: a portable one (SSE2 intrinsics on x86-64 for LBS, plain C++
+// Each kernel has two implementations: a portable one (SSE2 intrinsics on x86-64, plain C++
 // otherwise) and an AVX2+FMA one chosen at run time when the CPU has both (SkinningPath::Auto). They
-// agree within 1e-5 (FMA rounding, and the AVX2 path's 1/√x is an estimate refined by one Newton step).
+// agree within 1e-5 (FMA rounding; LBS normals take 1/√x as an estimate refined by one Newton step on
+// both paths). The portable LBS keeps up to 256 skinning matrices as rows on the stack and skins four
+// vertices per step (skinning.cpp).
 // Throughput on the MakeHuman mesh: bench/skinning.cpp (workload W5).
 #include <cstdint>
 #include <span>
 
 #include "gestura/body/mesh.hpp"
 #include "gestura/core/math.hpp"
+#include "gestura/core/simd_path.hpp"
 
 namespace gestura {
 
-enum class SkinningPath : std::uint8_t { Auto, Portable, Avx2 };
+using SkinningPath = SimdPath;  // core/simd_path.hpp; cpu_has_avx2_fma() is declared there too
 
-// True when this CPU runs AVX2 and FMA instructions.
-bool cpu_has_avx2_fma();
 // Auto → the best available path. Avx2 on a CPU without it throws gestura::Error.
 SkinningPath resolve_skinning_path(SkinningPath requested);
 

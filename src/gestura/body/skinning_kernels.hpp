@@ -9,8 +9,8 @@
 
 namespace gestura::skinning_detail {
 
-// `rest_normals`/`out_normals` null = positions only.
-void lbs_portable(const mat4* skinning, const JointIndices* joints, const vec4* weights,
+// `rest_normals`/`out_normals` null = positions only. `joint_count` matrices in `skinning`.
+void lbs_portable(const mat4* skinning, std::size_t joint_count, const JointIndices* joints, const vec4* weights,
                   const vec3* rest_positions, const vec3* rest_normals, vec3* out_positions,
                   vec3* out_normals, std::size_t count);
 void dqs_portable(const DualQuat* skinning, const JointIndices* joints, const vec4* weights,

@@ -2,18 +2,29 @@
 // The encoder of CompressedClip: error-driven key reduction plus per-track quantisation.
 //
 // 1. The clip is sampled uniformly (sample_rate) into local rotations, translations and scales.
-// 2. Every track gets a tolerance from one global factor s and the hierarchy: a rotation error θ at
-//    joint j moves the virtual points of j and its descendants by at most θ · lever(j), lever(j)
-//    being the longest bone path below j plus the virtual-point distance; a translation error moves
-//    them by itself. So tol_rotation(j) = s · max_error / lever(j), tol_translation = s · max_error.
-// 3. Each track within tolerance of identity / a constant is stored as such. Otherwise, for every bit
-//    depth 1..24 the track is quantised (rotations: the three components other than the one largest
-//    over the whole track, which is rebuilt; per-track range) and key frames are chosen by recursive
-//    splitting: a segment whose interpolation misses a frame by more than the tolerance is split at
-//    its worst frame (Douglas–Peucker). The cheapest depth in bits wins.
-// 4. The result is decoded and measured with the ACL metric — virtual points virtual_point_distance
-//    along each joint's three axes, in model space, every frame — and s is searched (shrunk when the
-//    bound is broken, grown while it holds) for the smallest clip that honours max_error.
+// 2. Every track gets a tolerance from one global factor s and the hierarchy (the "lever" of the
+//    track): a rotation error θ at joint j moves j's virtual points by θ·d and the positions below
+//    it by θ·bone, bone being its longest bone to a child; a translation error moves them by itself;
+//    a scale error by up to the longest path below. tol = s · max_error / lever.
+// 3. Rotations are quantised toward compensated targets: parents are encoded first, and a joint's
+//    target is the local rotation that puts its decoded model orientation on the raw one given its
+//    parent's decoded orientation (r* = R̂_parent⁻¹ · R_raw). Orientation errors then do not add up
+//    down a chain, which is why a rotation's lever is its bone and not the whole path below it.
+// 4. Each track within tolerance of identity / a constant is stored as such. Otherwise it is
+//    quantised (rotations: the three components other than the one largest over the whole track,
+//    which is rebuilt; per-track range) and key frames are chosen by recursive splitting: a segment
+//    whose interpolation misses a frame by more than the tolerance is split at its worst frame
+//    (Douglas–Peucker). Bit depths are searched from the previous round's depth; the cheapest wins.
+// 5. Every track is decoded exactly as CompressedClip::sample decodes it, straight from its codes,
+//    and measured with the ACL metric — virtual points virtual_point_distance along each joint's
+//    three axes, in model space, every frame — and s is searched (shrunk when the bound is broken,
+//    grown while it holds) for the smallest clip that honours max_error.
+// 6. Then bits are taken away track by track, leaves first (same keys; from a track's depth, one
+//    less, then galloping down and bisecting back), each trial re-measuring only the subtree it
+//    changes (and re-aiming the rotations below a changed rotation), while the bound holds.
+// The encoder aims slightly inside the bound (by a few float ulps of the clip's size) so that a
+// measure computed in another order still finds it held; the report's error is measured on the
+// assembled clip through CompressedClip::sample.
 #include <cstddef>
 
 #include "gestura/anim/clip.hpp"
@@ -33,7 +44,7 @@ struct CompressionReport {
   std::size_t bytes = 0;         // the compressed clip
   float max_error = 0.0f;        // metres, ACL metric over all frames
   float p99_error = 0.0f;        // 99th percentile of the per-joint-per-frame error
-  int passes = 0;                // encode + measure rounds (tolerance search, then per-track bit trimming)
+  int passes = 0;                // encode + measure rounds: tolerance search (whole clip), then bit trials (one subtree each)
   bool within_bound = false;     // max_error ≤ settings.max_error
 };
 

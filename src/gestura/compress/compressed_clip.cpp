@@ -201,11 +201,7 @@ inline KeyPair find_keys(const GclTrack& track, std::uint32_t frame, float x) {
 }  // namespace
 
 void CompressedClip::sample(float time, Pose& out) const {
-  const float last = static_cast<float>(frame_count_ - 1);
-  float x = time * sample_rate_;
-  x = x > 0.0f ? (x < last ? x : last) : 0.0f;  // also maps NaN to 0
-  std::uint32_t frame = static_cast<std::uint32_t>(x);
-  if (frame_count_ >= 2 && frame > frame_count_ - 2) frame = frame_count_ - 2;
+  const auto [x, frame] = frame_position(time, sample_rate_, frame_count_);
   const GclTrack* track = tracks_.data();
   for (std::size_t j = 0; j < joint_count_; ++j, track += 3) {
     const GclTrack& r = track[0];

@@ -96,6 +96,22 @@ inline std::uint32_t read_bits(const std::uint8_t* data, std::uint64_t bit, unsi
   return static_cast<std::uint32_t>((word >> (bit & 7)) & ((1ull << bits) - 1));
 }
 
+// Where `time` falls in a clip of `frame_count` frames at `rate` Hz: the frame position x, clamped to
+// [0, frame_count − 1] (NaN → 0), and the first frame of the pair of frames around it (at most
+// frame_count − 2, so the last frame is reached as the end of the last pair).
+struct FramePosition {
+  float x;
+  std::uint32_t frame;
+};
+inline FramePosition frame_position(float time, float rate, std::uint32_t frame_count) {
+  const float last = static_cast<float>(frame_count - 1);
+  float x = time * rate;
+  x = x > 0.0f ? (x < last ? x : last) : 0.0f;  // also maps NaN to 0
+  std::uint32_t frame = static_cast<std::uint32_t>(x);
+  if (frame_count >= 2 && frame > frame_count - 2) frame = frame_count - 2;
+  return {x, frame};
+}
+
 // Rebuilds a quaternion (x, y, z, w in glm's storage order) from its three stored components.
 inline quat rebuild_quat(const vec3& kept, unsigned dropped) {
   const float missing = std::sqrt(std::max(0.0f, 1.0f - glm::dot(kept, kept)));

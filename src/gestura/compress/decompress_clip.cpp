@@ -1,5 +1,7 @@
 #include "gestura/compress/decompress_clip.hpp"
 
+#include "gestura/compress/playback_context.hpp"
+
 namespace gestura {
 
 Clip decompress_clip(const CompressedClip& compressed, const std::string& name) {
@@ -11,12 +13,13 @@ Clip decompress_clip(const CompressedClip& compressed, const std::string& name) 
   clip.duration = compressed.duration();
   Pose pose;
   pose.resize(n);
+  PlaybackContext context;  // frames in order: each key decoded once
   std::vector<std::uint8_t> scaled(n, 0);
   std::vector<std::vector<vec3>> scales(n);
   for (std::uint32_t f = 0; f < frames; ++f) {
     // Key times are frame / rate, the same times the encoder sampled.
     const float t = static_cast<float>(f) / compressed.sample_rate();
-    compressed.sample(t, pose);
+    context.sample(compressed, t, pose);
     for (std::size_t j = 0; j < n; ++j) {
       clip.rotations[j].add(t, pose.rotations[j]);
       clip.translations[j].add(t, pose.translations[j]);

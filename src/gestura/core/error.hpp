@@ -28,4 +28,11 @@ class Error : public std::runtime_error {
   std::string message_;
 };
 
+// A long job (a video render, a batch) stopped because its caller asked it to, not because
+// anything was wrong. Whatever the job was writing has been removed.
+class Cancelled : public Error {
+ public:
+  explicit Cancelled(const std::string& what) : Error(what) {}
+};
+
 }  // namespace gestura

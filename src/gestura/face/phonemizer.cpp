@@ -8,7 +8,7 @@
 #include <string>
 
 #include "gestura/core/error.hpp"
-#include "gestura/text/utf8.hpp"
+#include "gestura/core/utf8.hpp"
 
 namespace gestura::face {
 namespace {

@@ -6,6 +6,9 @@
 // start→target line so the mid joint lies toward the pole point. Near full extension the reach is
 // softened: past `soften · (l1 + l2)` the effective target distance approaches full extension
 // exponentially instead of snapping straight, which removes the elbow "pop" of plain two-bone IK.
+// Angles are carried as (cos, sin) pairs and turned into quaternions by half-angle formulas: the
+// solve takes square roots but no trigonometry (only a nonzero `twist`, a weight below 1 and the
+// softening band call libm).
 #include "gestura/core/math.hpp"
 
 namespace gestura {

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <string_view>
 
+#include "gestura/io/avatar_import.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/body/skinning.hpp"
 #include "gestura/core/error.hpp"
@@ -147,14 +149,22 @@ Avatar load_makehuman_avatar(const std::string& directory) {
   return a;
 }
 
-Avatar load_avatar(const std::string& spec, const AvatarParams& params) {
+Avatar load_avatar(const std::string& spec, const AvatarParams& params, std::vector<std::string>* notes) {
   if (spec == "default") return build_avatar(params);
+  if (is_avatar_file(spec)) {
+    ImportedAvatar imported = load_file_avatar(spec);
+    for (const std::string& note : imported.notes) {
+      if (notes) notes->push_back(note);
+      else std::fprintf(stderr, "note: %s\n", note.c_str());
+    }
+    return std::move(imported.avatar);
+  }
   if (spec.starts_with(kMakeHumanPrefix)) {
     const std::string dir = spec.substr(kMakeHumanPrefix.size());
     if (dir.empty()) throw Error("avatar 'makehuman:': give the MakeHuman asset directory, e.g. makehuman:DIR");
     return load_makehuman_avatar(dir);
   }
-  throw Error("unknown avatar '" + spec + "' (use 'default' or 'makehuman:DIR')");
+  throw Error("unknown avatar '" + spec + "' (use 'default', 'makehuman:DIR' or an avatar file FILE.vrm, FILE.glb, FILE.gltf)");
 }
 
 }  // namespace gestura

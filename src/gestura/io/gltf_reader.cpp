@@ -143,15 +143,53 @@ std::vector<float> GltfReader::accessor(const json& index, const std::string& re
   const double count_d = number(a, "count", where);
   if (count_d > 1e8) fail(where, "count over 100,000,000");
   const auto count = static_cast<std::size_t>(count_d);
-  if (a.contains("sparse")) fail(where, "sparse accessors are not supported");
   if (!a.contains("componentType") || !a["componentType"].is_number_integer()) fail(where, "needs componentType");
   const int ct = a["componentType"].get<int>();
+  const bool normalized = a.value("normalized", false);
+  std::vector<float> out(count * static_cast<std::size_t>(components), 0.0f);  // all zeros without a bufferView
+  if (a.contains("bufferView"))
+    out = elements(a["bufferView"], a.contains("byteOffset") ? number(a, "byteOffset", where) : 0.0, count, components, ct,
+                   normalized, where);
+  // Sparse: (index, value) pairs replace elements of the base.
+  if (a.contains("sparse")) {
+    const json& sp = a["sparse"];
+    const std::string swhere = where + ".sparse";
+    if (!sp.is_object() || !sp.contains("indices") || !sp.contains("values") || !sp["indices"].is_object() ||
+        !sp["values"].is_object())
+      fail(swhere, "needs count, indices and values");
+    const double changed_d = number(sp, "count", swhere);
+    if (changed_d < 1 || changed_d > count_d) fail(swhere, "count must be 1.." + std::to_string(count));
+    const auto changed = static_cast<std::size_t>(changed_d);
+    const json& ix = sp["indices"];
+    const json& vx = sp["values"];
+    if (!ix.contains("bufferView") || !vx.contains("bufferView")) fail(swhere, "indices and values need a bufferView");
+    if (!ix.contains("componentType") || !ix["componentType"].is_number_integer()) fail(swhere + ".indices", "needs componentType");
+    const int ict = ix["componentType"].get<int>();
+    if (ict != 5121 && ict != 5123 && ict != 5125) fail(swhere + ".indices", "componentType must be an unsigned integer type");
+    const std::vector<float> indices = elements(ix["bufferView"], ix.contains("byteOffset") ? number(ix, "byteOffset", swhere) : 0.0,
+                                                changed, 1, ict, false, swhere + ".indices");
+    const std::vector<float> values = elements(vx["bufferView"], vx.contains("byteOffset") ? number(vx, "byteOffset", swhere) : 0.0,
+                                               changed, components, ct, normalized, swhere + ".values");
+    for (std::size_t k = 0; k < changed; ++k) {
+      const float i = indices[k];
+      if (!(i >= 0.0f) || i >= static_cast<float>(count)) fail(swhere, "index " + std::to_string(i) + " past the " + std::to_string(count) + " elements");
+      for (int c = 0; c < components; ++c)
+        out[static_cast<std::size_t>(i) * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)] =
+            values[k * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)];
+    }
+  }
+  return out;
+}
+
+// `count` elements of `components` values of type `ct` from a buffer view, starting `offset`
+// bytes in, every byte range checked.
+std::vector<float> GltfReader::elements(const json& view, double offset, std::size_t count, int components, int ct,
+                                        bool normalized, const std::string& where) const {
   const std::size_t size = ct == 5120 || ct == 5121 ? 1 : ct == 5122 || ct == 5123 ? 2 : ct == 5125 || ct == 5126 ? 4 : 0;
   if (size == 0) fail(where, "unknown componentType " + std::to_string(ct));
   std::vector<float> out(count * static_cast<std::size_t>(components), 0.0f);
-  if (!a.contains("bufferView")) return out;  // all zeros by the specification
-  const json& v = item("bufferViews", a["bufferView"], where);
-  const std::string vwhere = "bufferViews[" + a["bufferView"].dump() + "]";
+  const json& v = item("bufferViews", view, where);
+  const std::string vwhere = "bufferViews[" + view.dump() + "]";
   const json& b = v.contains("buffer") ? v["buffer"] : json();
   if (!b.is_number_integer() || b.get<long long>() < 0 || b.get<long long>() >= static_cast<long long>(buffers_.size()))
     fail(vwhere, "refers to a missing buffer");
@@ -159,13 +197,11 @@ std::vector<float> GltfReader::accessor(const json& index, const std::string& re
   const double view_offset = v.contains("byteOffset") ? number(v, "byteOffset", vwhere) : 0.0;
   const double view_length = number(v, "byteLength", vwhere);
   if (view_offset + view_length > double(data.size())) fail(vwhere, "byte range runs past the end of its buffer");
-  const double offset = a.contains("byteOffset") ? number(a, "byteOffset", where) : 0.0;
   const std::size_t element = size * static_cast<std::size_t>(components);
   const double stride = v.contains("byteStride") ? number(v, "byteStride", vwhere) : double(element);
   if (stride < double(element)) fail(vwhere, "byteStride smaller than one element");
   if (count > 0 && offset + stride * double(count - 1) + double(element) > view_length)
     fail(where, "elements run past the end of " + vwhere);
-  const bool normalized = a.value("normalized", false);
   const char* base = data.data() + static_cast<std::size_t>(view_offset + offset);
   for (std::size_t e = 0; e < count; ++e)
     for (int c = 0; c < components; ++c) {

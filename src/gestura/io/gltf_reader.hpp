@@ -41,9 +41,12 @@ class GltfReader {
   double number(const nlohmann::json& object, const char* key, const std::string& where) const;
   // Every element of an accessor as floats (normalised integer types scaled to [0,1] / [-1,1]);
   // `components` receives the element width (1 SCALAR … 16 MAT4).
+  // Sparse accessors are read too (their values replace the base's elements).
   std::vector<float> accessor(const nlohmann::json& index, const std::string& referrer, int* components = nullptr) const;
 
  private:
+  std::vector<float> elements(const nlohmann::json& view, double offset, std::size_t count, int components, int ct,
+                              bool normalized, const std::string& where) const;
   std::string source_;
   nlohmann::json doc_;
   std::vector<std::string> buffers_;

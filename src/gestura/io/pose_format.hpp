@@ -10,13 +10,15 @@
 //   body    float32 fps · uint32 frame count · uint16 people count ·
 //           float32 data[frames][people][points][dims] · float32 confidence[frames][people][points]
 // Points of all components are concatenated in component order; dims is the longest format
-// length minus one.
+// length minus one. Version 0.1 files (read only) differ in the body: uint16 fps and frame count,
+// the frame count being whatever the remaining bytes hold.
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "gestura/anim/clip.hpp"
+#include "gestura/io/holistic_landmarks.hpp"
 #include "gestura/io/keypoints.hpp"
 #include "gestura/skeleton/skeleton.hpp"
 
@@ -49,6 +51,14 @@ struct PoseData {
 std::string encode_pose(const PoseData& pose);
 void save_pose(const std::string& path, const PoseData& pose);
 
+// Reads versions 0.1 and 0.2. Throws gestura::Error naming `source` and the byte offset for a
+// truncated or inconsistent file (a limb past its points, a format without a confidence letter,
+// a body whose size disagrees with its header), an unknown version or a file of over 2 GiB of data.
+PoseData decode_pose(const std::string& bytes, const std::string& source);
+PoseData load_pose(const std::string& path);
+// The index of the first point of component `name` in the concatenated points, or -1.
+int pose_component_offset(const PoseData& pose, const std::string& name);
+
 enum class PoseLayout : std::uint8_t {
   Skeleton3D,  // one component "GESTURA_SKELETON": every joint, "XYZC", model space in metres (+Y up)
   OpenPose2D,  // "pose_keypoints_2d" (BODY_25), "hand_left_keypoints_2d", "hand_right_keypoints_2d":
@@ -57,5 +67,17 @@ enum class PoseLayout : std::uint8_t {
 
 PoseData pose_from_clip(const Skeleton& skeleton, const Clip& clip, float fps, PoseLayout layout,
                         const PinholeCamera& camera = {});
+
+// MediaPipe Holistic as pose-format's holistic reader lays it out (what sign.mt and the
+// pose-evaluation tools read): components POSE_LANDMARKS (33), FACE_LANDMARKS (468),
+// LEFT_HAND_LANDMARKS (21), RIGHT_HAND_LANDMARKS (21), POSE_WORLD_LANDMARKS (33), all "XYZC";
+// width/height = the camera's image. X, Y are pixels through `camera` (top-left origin, y down);
+// Z is MediaPipe's relative depth — smaller is nearer the camera, in units of the image width —
+// about the hips' midpoint for the body, the wrist for a hand, the face points' centre for the
+// face. The world landmarks are metres about the hips' midpoint along the camera's right, down and
+// forward axes, with x multiplied by the width and y by the height as pose-format stores them.
+// Confidence is 1 for a placed point in front of the camera, 0 otherwise. `cameras` holds one
+// camera for all frames or one per frame (a camera that moves); throws gestura::Error otherwise.
+PoseData holistic_pose(const HolisticTrack& track, std::span<const PinholeCamera> cameras, float fps);
 
 }  // namespace gestura

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "gestura/core/error.hpp"
-#include "gestura/text/utf8.hpp"
+#include "gestura/core/utf8.hpp"
 
 namespace gestura {
 namespace {

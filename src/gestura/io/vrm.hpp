@@ -13,7 +13,11 @@
 // - Expressions: VRMC_vrm.expressions (preset and custom) become our face channel names (visemes
 //   aa E ih oh ou, expressions joy anger sadness surprise relaxed neutral, eyeBlink_L/_R, blink,
 //   lookUp/Down/Left/Right; custom names unchanged) with their morph target binds.
-// VRM 0.x (extension "VRM") is refused with an Error saying so. Every index is range-checked.
+// VRM 0.x (extension "VRM") is read too: humanoid.humanBones as a list, the thumb's
+// Proximal/Intermediate/Distal taken as 1.0's Metacarpal/Proximal/Distal, blendShapeMaster groups
+// as expressions (presets a i u e o joy angry sorrow fun blink blink_l blink_r look*; weights
+// 0..100 scaled to 0..1); such a model faces -Z (faces_minus_z). Every index is range-checked.
+// read_rigged_gltf() reads a plain skinned glTF/GLB too: joints named by guess_hanim_names.
 #include <map>
 #include <string>
 #include <string_view>
@@ -35,13 +39,19 @@ struct VrmAvatar {
   std::vector<mat4> inverse_binds;  // per joint: the file's skin matrix, or the inverse rest pose
   std::map<std::string, std::string> humanoid;                      // VRM bone name → our joint name
   std::map<std::string, std::vector<VrmMorphBind>> face_channels;   // our face channel → binds
+  std::string kind = "VRM 1.0";     // "VRM 1.0", "VRM 0.x" or "glTF"
+  bool faces_minus_z = false;       // VRM 0.x models look down -Z
 };
 
 // Our face channel for a VRM 1.0 expression preset ("ee" → "E", "happy" → "joy",
 // "blinkLeft" → "eyeBlink_L"); "" for a name that is not a preset.
 std::string_view face_channel_for_vrm_preset(std::string_view preset);
 
+// Throws gestura::Error (naming the place) for a file without a VRM extension.
 VrmAvatar read_vrm(const std::string& bytes, const std::string& source);
 VrmAvatar load_vrm(const std::string& path);
+// A VRM (0.x or 1.0) or any skinned glTF/GLB.
+VrmAvatar read_rigged_gltf(const std::string& bytes, const std::string& source);
+VrmAvatar load_rigged_gltf(const std::string& path);
 
 }  // namespace gestura

@@ -7,17 +7,22 @@
 #include <vector>
 
 #include "gestura/body/mesh.hpp"
+#include "gestura/anim/clip.hpp"
 #include "gestura/core/math.hpp"
 #include "gestura/skeleton/skeleton.hpp"
 
 namespace gestura {
 
-// What the presets frame: the body's bounding box at rest and the height of the hips, below which
-// the interpreter framing cuts.
+// What the presets frame: the body's bounding box at rest, the height of the hips, below which
+// the interpreter framing cuts, and what must stay in view while the avatar signs: the elbows at
+// every moment, the hands whenever they are above the hips (in the signing space).
 struct FramingBox {
   vec3 min{0.0f};
   vec3 max{0.0f};
   float hips_y = 0.0f;
+  float centre_x = 0.0f;       // the body's centre line (the root joint at rest, else the box's middle)
+  bool has_limbs = false;      // the skeleton has H-Anim elbows and wrists
+  vec3 limbs_min{0.0f}, limbs_max{0.0f};  // box of the elbows and the raised hands over the clip
 
   float height() const { return max.y - min.y; }
   // Half-width of the signing space around the body's centre line (hands reach beyond the torso).
@@ -25,15 +30,22 @@ struct FramingBox {
 };
 
 // Mesh bounds at bind pose; hips from a joint named like the pelvis (sacroiliac, HumanoidRoot,
-// pelvis, hips, root — first found) or, without one, at 53% of the height.
-FramingBox framing_box(const Mesh& mesh, const Skeleton& skeleton);
+// pelvis, hips, root — first found) or, without one, at 53% of the height. With a clip, the limb
+// box covers the whole clip (sampled at 30 fps); without, the rest pose.
+FramingBox framing_box(const Mesh& mesh, const Skeleton& skeleton, const Clip* clip = nullptr);
 
-enum class CameraPreset : std::uint8_t { Front, Side, ThreeQuarter, Top, SideSection };
+// The follow camera's framing for frames 0..frames-1 at `fps`: the box of the raised hands within
+// ±0.4 s of each frame (at least shoulder-wide), and a cut that rises from the hips to mid-chest
+// while the hands sign high, smoothed over time so the camera glides.
+std::vector<FramingBox> follow_framing(const FramingBox& box, const Skeleton& skeleton, const Clip& clip, float fps,
+                                       int frames);
+
+enum class CameraPreset : std::uint8_t { Front, Side, ThreeQuarter, Top, SideSection, Follow };
 inline constexpr CameraPreset kCameraPresets[] = {CameraPreset::Front, CameraPreset::Side, CameraPreset::ThreeQuarter,
-                                                  CameraPreset::Top, CameraPreset::SideSection};
+                                                  CameraPreset::Top, CameraPreset::SideSection, CameraPreset::Follow};
 
 const char* preset_name(CameraPreset preset);
-// Accepts front, side, three-quarter, top, side-section; throws gestura::Error listing them otherwise.
+// Accepts front, side, three-quarter, top, side-section, follow; throws gestura::Error listing them otherwise.
 CameraPreset parse_camera_preset(const std::string& name);
 // A comma-separated list ("front,side"), at least one, at most 9 (a 3×3 split).
 std::vector<CameraPreset> parse_camera_list(const std::string& list);
@@ -46,7 +58,9 @@ struct Camera {
   bool orthographic = false;
 };
 
-// front: interpreter framing (hips up, signing space wide), perspective, from +Z.
+// front: interpreter framing as on television: from just above the head to the hips, the signer
+//   centred, widened (zoomed out) only as far as the elbows and raised hands need; perspective, from +Z.
+// follow: the same framing over a follow_framing box: it tightens on the active signing space.
 // side: the avatar's left side, hips up. three-quarter: front-left, 40° round, slightly above.
 // top: orthographic plan view (looking down, the avatar's front towards the image bottom).
 // side-section: orthographic section from the avatar's left, whole body plus the space in front.

@@ -1,10 +1,10 @@
 #include "gestura/render/render_job.hpp"
 
-#include <charconv>
+#include <algorithm>
 #include <cmath>
-#include <regex>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/file_extension.hpp"
 #include "gestura/render/encoder_thread.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/png_writer.hpp"
@@ -17,45 +17,39 @@ namespace {
 
 constexpr int kSheetColumns = 4, kSheetFrames = 16;
 
-bool ends_with_png(const std::string& path) {
-  return path.size() >= 4 && (path.compare(path.size() - 4, 4, ".png") == 0 || path.compare(path.size() - 4, 4, ".PNG") == 0);
-}
+bool ends_with_png(const std::string& path) { return has_extension(path, ".png"); }
+
+// Calls the monitor, or draws a progress bar on a terminal when no one watches.
+class FrameWatch {
+ public:
+  FrameWatch(const RenderMonitor& monitor, const std::string& label, int total)
+      : monitor_(monitor), total_(total) {
+    if (!monitor_.frame_done) bar_.emplace(label, total);
+  }
+  void before_frame() const {
+    if (monitor_.stop_requested && monitor_.stop_requested()) throw Cancelled("render stopped");
+  }
+  void done(int frames) {
+    if (monitor_.frame_done) monitor_.frame_done(frames, total_);
+    else bar_->update(frames);
+  }
+
+ private:
+  const RenderMonitor& monitor_;
+  int total_;
+  std::optional<Progress> bar_;
+};
 
 }  // namespace
 
-ImageSize parse_image_size(const std::string& text) {
-  static const std::regex pattern("([0-9]{1,6})[xX]([0-9]{1,6})");
-  std::smatch m;
-  if (!std::regex_match(text, m, pattern)) throw Error("bad --size '" + text + "' (expected WIDTHxHEIGHT, e.g. 1280x720)");
-  const ImageSize size{std::stoi(m[1]), std::stoi(m[2])};
+void check_image_size(ImageSize size) {
+  const std::string text = std::to_string(size.width) + "x" + std::to_string(size.height);
   for (int side : {size.width, size.height})
     if (side < kMinImageSide || side > kMaxImageSide)
-      throw Error("bad --size '" + text + "': each side must be " + std::to_string(kMinImageSide) + ".." +
+      throw Error("size " + text + ": each side must be " + std::to_string(kMinImageSide) + ".." +
                   std::to_string(kMaxImageSide) + " pixels");
   if (static_cast<long>(size.width) * size.height > kMaxImagePixels)
-    throw Error("bad --size '" + text + "': at most " + std::to_string(kMaxImagePixels) + " pixels in all (e.g. 4096x2304)");
-  return size;
-}
-
-int parse_fps(const std::string& text) {
-  int fps = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), fps);
-  if (ec != std::errc() || end != text.data() + text.size() || fps < 1 || fps > kMaxFps)
-    throw Error("bad --fps '" + text + "' (a whole number 1.." + std::to_string(kMaxFps) + ")");
-  return fps;
-}
-
-float parse_seconds(const std::string& text, const std::string& flag) {
-  float value = 0.0f;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value) || value < 0.0f || value > 3600.0f)
-    throw Error("bad " + flag + " '" + text + "' (seconds, 0..3600)");
-  return value;
-}
-
-int parse_msaa(const std::string& text) {
-  if (text == "1" || text == "2" || text == "4") return text[0] - '0';
-  throw Error("bad --msaa '" + text + "' (1, 2 or 4 samples per pixel)");
+    throw Error("size " + text + ": at most " + std::to_string(kMaxImagePixels) + " pixels in all (e.g. 4096x2304)");
 }
 
 void validate(const RenderJob& job) {
@@ -63,10 +57,11 @@ void validate(const RenderJob& job) {
   const bool png = ends_with_png(job.output);
   if (!png) video_format_of(job.output);  // throws for unknown extensions
   if (job.sheet && !png) throw Error("--sheet writes a PNG contact sheet; " + job.output + " is not .png");
-  parse_image_size(std::to_string(job.size.width) + "x" + std::to_string(job.size.height));
-  if (job.fps < 1 || job.fps > kMaxFps) throw Error("bad fps " + std::to_string(job.fps));
+  check_image_size(job.size);
+  if (job.fps < 1 || job.fps > kMaxFps) throw Error("fps " + std::to_string(job.fps) + " is outside 1.." + std::to_string(kMaxFps));
   if (job.cameras.empty() && !job.orbit) throw Error("no camera");
-  parse_msaa(std::to_string(job.msaa_samples));
+  if (job.msaa_samples != 1 && job.msaa_samples != 2 && job.msaa_samples != 4)
+    throw Error("msaa " + std::to_string(job.msaa_samples) + ": 1, 2 or 4 samples per pixel");
   if (!png && video_format_of(job.output) != VideoFormat::Gif && (job.size.width % 2 || job.size.height % 2))
     throw Error("cannot write " + job.output + ": MP4/WebM need an even width and height");
 }
@@ -75,7 +70,7 @@ int frame_count(float seconds, int fps) {
   return std::max(1, static_cast<int>(std::floor(seconds * static_cast<float>(fps) + 1e-3f)) + 1);
 }
 
-std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int width, int height) {
+std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int width, int height, const FramingBox* follow) {
   std::vector<View> views;
   if (job.orbit) {
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -87,15 +82,59 @@ std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int wid
   const std::vector<Viewport> panes = split_viewports(static_cast<int>(job.cameras.size()), width, height);
   for (std::size_t i = 0; i < panes.size(); ++i) {
     const float aspect = static_cast<float>(panes[i].width) / static_cast<float>(std::max(1, panes[i].height));
-    views.push_back({preset_camera(job.cameras[i], box, aspect), panes[i]});
+    const FramingBox& framed = follow && job.cameras[i] == CameraPreset::Follow ? *follow : box;
+    views.push_back({preset_camera(job.cameras[i], framed, aspect), panes[i]});
   }
   return views;
 }
 
-RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) {
+namespace {
+
+// The framing of a subject for a job: the clip-wide box, and per frame at `fps` the follow box
+// when a follow camera is asked for.
+struct JobFraming {
+  FramingBox box;
+  std::vector<FramingBox> follow;
+  float fps = 30.0f;
+  JobFraming(const RenderSubject& subject, const RenderJob& job, float frame_rate, int frames)
+      : box(framing_box(subject.mesh, subject.skeleton, subject.clip ? &*subject.clip : nullptr)), fps(frame_rate) {
+    const bool follows = !job.orbit && std::find(job.cameras.begin(), job.cameras.end(), CameraPreset::Follow) != job.cameras.end();
+    if (follows && subject.clip) follow = follow_framing(box, subject.skeleton, *subject.clip, fps, frames);
+  }
+  const FramingBox* at(float t) const {
+    if (follow.empty()) return nullptr;
+    const long i = std::lround(t * fps);
+    return &follow[static_cast<std::size_t>(std::clamp<long>(i, 0, static_cast<long>(follow.size()) - 1))];
+  }
+};
+
+}  // namespace
+
+std::vector<PinholeCamera> job_pinhole_cameras(const RenderSubject& subject, const RenderJob& job, float fps, int frames) {
+  RenderJob single = job;
+  if (!single.orbit) single.cameras.resize(1);
+  const JobFraming framing(subject, single, fps, frames);
+  std::vector<PinholeCamera> cameras;
+  for (int f = 0; f < (framing.follow.empty() ? 1 : frames); ++f) {
+    const Camera camera =
+        job_views(single, framing.box, job.size.width, job.size.height, framing.at(static_cast<float>(f) / fps)).at(0).camera;
+    if (camera.orthographic)
+      throw Error("the " + std::string(preset_name(single.cameras.at(0))) +
+                  " camera is orthographic; joints are projected through a perspective camera (front, side, three-quarter, follow)");
+    PinholeCamera pinhole;
+    pinhole.position = camera.eye;
+    pinhole.target = camera.target;
+    pinhole.vertical_fov = 2.0f * std::atan(1.0f / camera.projection[1][1]);
+    pinhole.width = job.size.width;
+    pinhole.height = job.size.height;
+    cameras.push_back(pinhole);
+  }
+  return cameras;
+}
+
+RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job, const RenderMonitor& monitor) {
   validate(job);
   Animator animator(subject);
-  const FramingBox box = framing_box(subject.mesh, subject.skeleton);
   const bool png = ends_with_png(job.output);
   // Open the output first: an unwritable path fails before any rendering.
   std::optional<StagedFile> still;
@@ -106,24 +145,28 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) 
   HeadlessGlContext context;
   Renderer renderer(job.look, job.msaa_samples);
   renderer.upload(subject.mesh);
+  renderer.set_occluders(find_occluders(subject.skeleton, subject.mesh));
   RenderReport report;
   report.renderer = context.description();
   Image frame;
   const float duration = subject.clip ? animator.duration() : job.rest_seconds;
+  const JobFraming framing(subject, job, static_cast<float>(job.fps), frame_count(duration, job.fps));
+  const FramingBox& box = framing.box;
 
   if (png && job.sheet) {
     const int w = std::max(kMinImageSide, job.size.width / kSheetColumns);
     const int h = std::max(kMinImageSide, job.size.height / kSheetColumns);
     renderer.resize(w, h);
-    const std::vector<View> views = job_views(job, box, w, h);
     std::vector<Image> tiles;
-    Progress progress("rendering sheet", kSheetFrames);
+    FrameWatch progress(monitor, "rendering sheet", kSheetFrames);
     for (int i = 0; i < kSheetFrames; ++i) {
-      animator.pose_at(duration * static_cast<float>(i) / static_cast<float>(kSheetFrames - 1));
-      renderer.render(views, animator.skinning(), animator.morph_weights(), job.skinning);
+      progress.before_frame();
+      const float t = duration * static_cast<float>(i) / static_cast<float>(kSheetFrames - 1);
+      animator.pose_at(t);
+      renderer.render(job_views(job, box, w, h, framing.at(t)), animator.skinning(), animator.morph_weights(), job.skinning);
       renderer.read_pixels(frame);
       tiles.push_back(frame);
-      progress.update(i + 1);
+      progress.done(i + 1);
     }
     write_png(*still, contact_sheet(tiles, kSheetColumns));
     report.frames = kSheetFrames;
@@ -131,24 +174,29 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job) 
   }
 
   renderer.resize(job.size.width, job.size.height);
-  const std::vector<View> views = job_views(job, box, job.size.width, job.size.height);
   if (png) {
     animator.pose_at(job.still_time);
-    renderer.render(views, animator.skinning(), animator.morph_weights(), job.skinning);
+    renderer.render(job_views(job, box, job.size.width, job.size.height, framing.at(job.still_time)), animator.skinning(),
+                    animator.morph_weights(), job.skinning);
     renderer.read_pixels(frame);
     write_png(*still, frame);
     report.frames = 1;
     return report;
   }
   const int frames = frame_count(duration, job.fps);
-  Progress progress("rendering " + job.output, frames);
+  FrameWatch progress(monitor, "rendering " + job.output, frames);
   EncoderThread encoder(*video);  // frame i is encoded while frame i+1 is drawn
+  const std::vector<View> fixed_views = job_views(job, box, job.size.width, job.size.height);
   for (int i = 0; i < frames; ++i) {
-    animator.pose_at(static_cast<float>(i) / static_cast<float>(job.fps));
-    renderer.render(views, animator.skinning(), animator.morph_weights(), job.skinning);
+    progress.before_frame();
+    const float t = static_cast<float>(i) / static_cast<float>(job.fps);
+    animator.pose_at(t);
+    const FramingBox* follow = framing.at(t);
+    renderer.render(follow ? job_views(job, box, job.size.width, job.size.height, follow) : fixed_views, animator.skinning(),
+                    animator.morph_weights(), job.skinning);
     renderer.read_pixels(frame);
     encoder.submit(frame);
-    progress.update(i + 1);
+    progress.done(i + 1);
   }
   encoder.finish();
   report.frames = frames;

@@ -1,12 +1,13 @@
 #pragma once
 // Rendering a subject to a file: one still (PNG), a contact sheet (16 frames in a 4×4 grid as one
-// PNG) or an animation (GIF/MP4/WebM), headless. Option parsing lives here too, so the CLI and the
-// tests share the same checks and messages.
+// PNG) or an animation (GIF/MP4/WebM), headless. The job's limits are checked here; reading them
+// from text is the command layer's (app/).
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "gestura/io/keypoints.hpp"
 #include "gestura/render/camera.hpp"
 #include "gestura/render/look.hpp"
 #include "gestura/render/renderer.hpp"
@@ -22,12 +23,8 @@ inline constexpr int kMaxFps = 120;
 struct ImageSize {
   int width = 0, height = 0;
 };
-// "WxH", both in [16, 4096] and at most kMaxImagePixels in all; throws gestura::Error quoting the text otherwise.
-ImageSize parse_image_size(const std::string& text);
-// An integer in [1, 120]; throws gestura::Error quoting the text otherwise.
-int parse_fps(const std::string& text);
-// A finite number >= 0 (seconds); throws gestura::Error quoting the text and the flag otherwise.
-float parse_seconds(const std::string& text, const std::string& flag);
+// Both sides in [16, 4096] and at most kMaxImagePixels in all; throws gestura::Error naming the limit otherwise.
+void check_image_size(ImageSize size);
 
 struct RenderJob {
   std::string output;                          // .png, .gif, .mp4 or .webm
@@ -44,9 +41,6 @@ struct RenderJob {
   int msaa_samples = 4;                        // 1, 2 or 4: on llvmpipe 4 costs no more CPU than 1 (bench R1)
 };
 
-// 1, 2 or 4; throws gestura::Error quoting the text otherwise.
-int parse_msaa(const std::string& text);
-
 // Throws gestura::Error for a bad combination (sheet with a video, unknown extension, sizes out of
 // range, odd sizes for MP4/WebM) before anything is rendered.
 void validate(const RenderJob& job);
@@ -60,10 +54,26 @@ struct RenderReport {
   std::string renderer;  // GL platform and renderer name
 };
 
-// Renders headless and writes job.output (staged: nothing is left behind on failure).
-RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job);
+// Who watches a long render: frame_done after every frame (without it, a progress bar on a
+// terminal's stderr), stop_requested before every frame (true: the render stops, throwing
+// gestura::Cancelled, and leaves no file).
+struct RenderMonitor {
+  std::function<void(int done, int total)> frame_done;
+  std::function<bool()> stop_requested;
+};
 
-// The views for an image of `width`×`height`: one per camera (split grid) or the orbit.
-std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int width, int height);
+// Renders headless and writes job.output (staged: nothing is left behind on failure).
+RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job, const RenderMonitor& monitor = {});
+
+// The views for an image of `width`×`height`: one per camera (split grid) or the orbit. A follow
+// camera frames `follow` when given (the moment's follow_framing box), else `box`.
+std::vector<View> job_views(const RenderJob& job, const FramingBox& box, int width, int height,
+                            const FramingBox* follow = nullptr);
+
+// What the first camera of `job` sees at frames 0..frames-1 (i / fps), as pinhole cameras over the
+// whole job.size image, for projecting joints exactly as the pictures show them (the .pose
+// writer): one camera for a fixed framing, one per frame for the follow camera. Throws
+// gestura::Error for an orthographic camera (top, side-section).
+std::vector<PinholeCamera> job_pinhole_cameras(const RenderSubject& subject, const RenderJob& job, float fps, int frames);
 
 }  // namespace gestura

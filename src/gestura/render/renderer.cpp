@@ -18,8 +18,8 @@ namespace {
 constexpr GLint kMorphDeltaUnit = 1, kMorphWeightUnit = 2;
 constexpr GLuint kJointBlockBinding = 0;
 
-// Compiled with "#define MAX_JOINTS n" (n from the GL's uniform block size) and "#define MATERIALS m"
-// (kMaterialCount) prepended.
+// Compiled with "#define MAX_JOINTS n" (n from the GL's uniform block size), "#define MATERIALS m"
+// (kMaterialCount) and "#define MAX_OCCLUDERS k" (kMaxOccluders) prepended.
 constexpr const char* kVertexShader = R"(
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -27,6 +27,7 @@ layout(location = 2) in uint a_material;
 layout(location = 3) in uvec4 a_joints;
 layout(location = 4) in vec4 a_weights;
 layout(location = 5) in uvec2 a_morph_range;   // first entry, entry count
+layout(location = 6) in uint a_part;           // BodyPart (render/occluders.hpp)
 
 layout(std140) uniform Joints { mat4 u_joints[MAX_JOINTS]; };  // skinning matrices
 uniform samplerBuffer u_morph_deltas;  // 2 texels per entry: (position delta, morph index), (normal delta, 0)
@@ -41,6 +42,42 @@ out vec3 v_world;
 out vec3 v_normal;
 out vec3 v_albedo;   // interpolated, so material borders blend instead of stair-stepping
 out vec4 v_surface;
+out vec2 v_occlusion;
+
+uniform int u_occluder_count;
+uniform vec4 u_occluder_a[MAX_OCCLUDERS];  // axis start, radius
+uniform vec4 u_occluder_b[MAX_OCCLUDERS];  // axis end, body part
+const vec3 kKey = vec3(-0.4511, 0.5514, 0.7018);
+
+// Key-light visibility (1 lit, 0 in shadow) and ambient occlusion (0 open .. 1 covered) from the
+// capsules of the other body parts. Shadow: where the ray towards the key passes the capsule's axis
+// closer than its radius, with a penumbra that widens with the distance travelled. Occlusion: the
+// cosine-weighted solid angle of the sphere at the axis point nearest the surface. Per vertex: the
+// mesh is fine enough for shading this soft, and per pixel it cost more than the rest of the shader.
+void occlusion(vec3 p, vec3 n, uint part, out float lit, out float covered) {
+  lit = 1.0;
+  covered = 0.0;
+  for (int i = 0; i < u_occluder_count; ++i) {
+    if (uint(u_occluder_b[i].w) == part) continue;
+    vec3 a = u_occluder_a[i].xyz, b = u_occluder_b[i].xyz;
+    float r = u_occluder_a[i].w;
+    vec3 ab = b - a, pa = a - p;
+    float h = clamp(dot(-pa, ab) / max(dot(ab, ab), 1e-8), 0.0, 1.0);
+    vec3 to = pa + h * ab;
+    float d2 = dot(to, to);
+    if (d2 < r * r) continue;  // inside the capsule: it stands for this surface badly here
+    float d = sqrt(d2);
+    covered += min(0.6, max(dot(n, to / d), 0.0) * r * r / d2);
+    vec3 qa = pa - dot(pa, kKey) * kKey, qd = ab - dot(ab, kKey) * kKey;
+    float s = clamp(-dot(qa, qd) / max(dot(qd, qd), 1e-8), 0.0, 1.0);
+    float t = dot(pa + s * ab, kKey);
+    if (t > 0.0) {
+      float w = 0.005 + 0.07 * t;
+      lit = min(lit, smoothstep(r - w, r + w, length(qa + s * qd)));
+    }
+  }
+  covered = min(covered, 0.75);
+}
 
 mat4 joint_matrix(uint j) { return u_joints[j]; }
 
@@ -66,6 +103,9 @@ void main() {
   uint material = min(a_material, uint(MATERIALS - 1));
   v_albedo = u_albedo[material];
   v_surface = u_surface[material];
+  float lit = 1.0, covered = 0.0;
+  if (u_occluder_count > 0) occlusion(p, normalize(n), a_part, lit, covered);
+  v_occlusion = vec2(lit, covered);
   gl_Position = u_view_projection * vec4(p, 1.0);
 }
 )";
@@ -73,20 +113,28 @@ void main() {
 // Skin-like shading: wrap lighting with a reddish scatter band at the terminator (a cheap
 // subsurface look), three soft lights fixed to the avatar (warm key front-right, cool fill
 // front-left, rim from behind), a hemisphere ambient and a Fresnel edge that lifts silhouettes —
-// what keeps hands readable in front of a dark shirt.
-constexpr const char* kFragmentShader = R"(#version 330 core
+// strongest on dark materials, so a sleeve reads against a shirt of the same cloth.
+// Depth: capsules standing for the arms and hands (render/occluders.hpp; evaluated per vertex) cast
+// soft shadows from the key light and occlude ambient light on every other part, so a hand in front of the chest
+// darkens the chest beside it and the nearer hand darkens the farther one; and surfaces farther from
+// the camera than the framed body plane are a little darker (nearer ones are not brightened: hands
+// brightened that way lost the shading a hand detector reads them by).
+constexpr const char* kFragmentShader = R"(
 in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_albedo;
 in vec4 v_surface;
+in vec2 v_occlusion;   // key-light visibility, ambient occlusion (vertex shader)
 
 uniform vec3 u_eye;
 uniform vec3 u_view_direction;
 uniform bool u_orthographic;
+uniform float u_focus_distance;       // along the view direction: the framed body plane
 
 out vec4 o_color;
 
 const vec3 kScatterTint = vec3(0.85, 0.22, 0.12);
+const vec3 kKey = vec3(-0.4511, 0.5514, 0.7018);  // the key light's direction (the vertex shader's too)
 
 vec3 diffuse(vec3 n, vec3 l, vec3 color, vec3 albedo, vec4 s) {
   float ndl = dot(n, l);
@@ -106,14 +154,22 @@ void main() {
   if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n;
   vec3 albedo = v_albedo;
   vec4 s = v_surface;
+  float lit = v_occlusion.x, covered = v_occlusion.y;
 
-  const vec3 key = vec3(-0.4511, 0.5514, 0.7018), fill = vec3(0.7814, 0.1116, 0.6140), rim = vec3(0.2516, 0.4528, -0.8554);
+  const vec3 fill = vec3(0.7814, 0.1116, 0.6140), rim = vec3(0.2516, 0.4528, -0.8554);
   const vec3 key_color = vec3(1.25, 1.18, 1.08), fill_color = vec3(0.32, 0.36, 0.44), rim_color = vec3(0.70, 0.70, 0.75);
-  vec3 c = albedo * mix(vec3(0.10, 0.09, 0.09), vec3(0.20, 0.22, 0.26), n.y * 0.5 + 0.5);
-  c += diffuse(n, key, key_color, albedo, s) + diffuse(n, fill, fill_color, albedo, s) + diffuse(n, rim, rim_color, albedo, s);
-  if (s.z > 0.0) c += key_color * specular(n, v, key, s) + rim_color * specular(n, v, rim, s);
+  float open = 1.0 - covered;
+  float key_light = mix(1.0, lit, 0.65) * (1.0 - 0.5 * covered);
+  vec3 c = open * albedo * mix(vec3(0.10, 0.09, 0.09), vec3(0.20, 0.22, 0.26), n.y * 0.5 + 0.5);
+  c += key_light * diffuse(n, kKey, key_color, albedo, s) + open * diffuse(n, fill, fill_color, albedo, s) +
+       diffuse(n, rim, rim_color, albedo, s);
+  if (s.z > 0.0) c += lit * key_color * specular(n, v, kKey, s) + rim_color * specular(n, v, rim, s);
   float facing = 1.0 - max(dot(n, v), 0.0);
-  c += facing * facing * facing * 0.25 * mix(albedo, vec3(1.0), 0.3);
+  float luminance = dot(albedo, vec3(0.2126, 0.7152, 0.0722));
+  float edge = mix(0.55, 0.25, smoothstep(0.02, 0.25, luminance));
+  c += facing * facing * facing * edge * mix(albedo, vec3(0.75, 0.80, 0.88), 0.45);
+  float depth = dot(v_world - u_eye, u_view_direction);
+  c *= clamp(1.0 + 0.3 * (u_focus_distance - depth), 0.85, 1.0);
   c = c / (1.0 + 0.12 * c);   // soft shoulder instead of hard clipping
   o_color = vec4(pow(clamp(c, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0);
 }
@@ -146,9 +202,10 @@ void check_gl(const char* what) {
 struct Renderer::Gl {
   GLuint program = 0;
   GLint u_view_projection = -1, u_skin_on_gpu = -1, u_morphs_active = -1, u_eye = -1, u_view_direction = -1,
-        u_orthographic = -1, u_albedo = -1, u_surface = -1;
+        u_orthographic = -1, u_albedo = -1, u_surface = -1, u_focus_distance = -1, u_occluder_count = -1,
+        u_occluder_a = -1, u_occluder_b = -1;
   GLuint gpu_vao = 0, cpu_vao = 0;
-  GLuint positions = 0, normals = 0, materials = 0, joints = 0, weights = 0, morph_ranges = 0, indices = 0;
+  GLuint positions = 0, normals = 0, materials = 0, joints = 0, weights = 0, morph_ranges = 0, indices = 0, parts = 0;
   GLuint skinned_positions = 0, skinned_normals = 0;
   GLuint joint_buffer = 0, delta_buffer = 0, delta_texture = 0, weight_buffer = 0,
          weight_texture = 0;
@@ -165,8 +222,9 @@ Renderer::Renderer(const Look& look, int msaa_samples) : gl_(std::make_unique<Gl
   glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &block_bytes);
   max_gpu_joints_ = std::min<std::size_t>(1024, static_cast<std::size_t>(block_bytes) / sizeof(mat4));
   const GLuint vs = compile(GL_VERTEX_SHADER, "#version 330 core\n#define MAX_JOINTS " + std::to_string(max_gpu_joints_) +
-                                                  "\n#define MATERIALS " + std::to_string(kMaterialCount) + kVertexShader);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
+                                                  "\n#define MATERIALS " + std::to_string(kMaterialCount) +
+                                                  "\n#define MAX_OCCLUDERS " + std::to_string(kMaxOccluders) + kVertexShader);
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, std::string("#version 330 core\n") + kFragmentShader);
   Gl& g = *gl_;
   g.program = glCreateProgram();
   glAttachShader(g.program, vs);
@@ -190,6 +248,10 @@ Renderer::Renderer(const Look& look, int msaa_samples) : gl_(std::make_unique<Gl
   g.u_orthographic = loc("u_orthographic");
   g.u_albedo = loc("u_albedo");
   g.u_surface = loc("u_surface");
+  g.u_focus_distance = loc("u_focus_distance");
+  g.u_occluder_count = loc("u_occluder_count");
+  g.u_occluder_a = loc("u_occluder_a");
+  g.u_occluder_b = loc("u_occluder_b");
   glUseProgram(g.program);
   glUniformBlockBinding(g.program, glGetUniformBlockIndex(g.program, "Joints"), kJointBlockBinding);
   glUniform1i(loc("u_morph_deltas"), kMorphDeltaUnit);
@@ -201,6 +263,7 @@ Renderer::Renderer(const Look& look, int msaa_samples) : gl_(std::make_unique<Gl
   g.weights = buffers[4], g.morph_ranges = buffers[5], g.indices = buffers[6], g.skinned_positions = buffers[7];
   g.skinned_normals = buffers[8], g.joint_buffer = buffers[9], g.delta_buffer = buffers[10];
   glGenBuffers(1, &g.weight_buffer);
+  glGenBuffers(1, &g.parts);
   glGenVertexArrays(1, &g.gpu_vao);
   glGenVertexArrays(1, &g.cpu_vao);
   GLuint textures[2];
@@ -217,7 +280,7 @@ Renderer::~Renderer() {
   Gl& g = *gl_;
   const GLuint buffers[] = {g.positions, g.normals, g.materials, g.joints, g.weights, g.morph_ranges,
                             g.indices, g.skinned_positions, g.skinned_normals, g.joint_buffer, g.delta_buffer,
-                            g.weight_buffer};
+                            g.weight_buffer, g.parts};
   glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
   const GLuint textures[] = {g.delta_texture, g.weight_texture, g.resolve_color};
   glDeleteTextures(static_cast<GLsizei>(std::size(textures)), textures);
@@ -282,6 +345,9 @@ void Renderer::upload(const Mesh& mesh) {
   fill(GL_ARRAY_BUFFER, g.joints, n * sizeof(JointIndices), mesh.joints.data(), GL_STATIC_DRAW);
   fill(GL_ARRAY_BUFFER, g.weights, n * sizeof(vec4), mesh.weights.data(), GL_STATIC_DRAW);
   fill(GL_ARRAY_BUFFER, g.morph_ranges, n * sizeof(glm::uvec2), ranges.data(), GL_STATIC_DRAW);
+  const std::vector<std::uint8_t> trunk(n, static_cast<std::uint8_t>(BodyPart::Trunk));
+  fill(GL_ARRAY_BUFFER, g.parts, n, trunk.data(), GL_STATIC_DRAW);
+  occluders_.clear();
   fill(GL_ARRAY_BUFFER, g.skinned_positions, n * sizeof(vec3), nullptr, GL_STREAM_DRAW);
   fill(GL_ARRAY_BUFFER, g.skinned_normals, n * sizeof(vec3), nullptr, GL_STREAM_DRAW);
   fill(GL_TEXTURE_BUFFER, g.delta_buffer, entries.size() * sizeof(vec4), entries.data(), GL_STATIC_DRAW);
@@ -306,6 +372,7 @@ void Renderer::upload(const Mesh& mesh) {
   int_attribute(3, g.joints, 4, GL_UNSIGNED_SHORT);
   float_attribute(4, g.weights, 4);
   int_attribute(5, g.morph_ranges, 2, GL_UNSIGNED_INT);
+  int_attribute(6, g.parts, 1, GL_UNSIGNED_BYTE);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
                mesh.indices.data(), GL_STATIC_DRAW);
@@ -313,6 +380,7 @@ void Renderer::upload(const Mesh& mesh) {
   float_attribute(0, g.skinned_positions, 3);
   float_attribute(1, g.skinned_normals, 3);
   int_attribute(2, g.materials, 1, GL_UNSIGNED_BYTE);
+  int_attribute(6, g.parts, 1, GL_UNSIGNED_BYTE);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices);
   glBindVertexArray(0);
   g.index_count = static_cast<GLsizei>(mesh.indices.size());
@@ -322,6 +390,25 @@ void Renderer::upload(const Mesh& mesh) {
   skinned_positions_.resize(n);
   skinned_normals_.resize(n);
   check_gl("uploading the mesh");
+}
+
+void Renderer::set_occluders(const OccluderSet& occluders) {
+  if (gl_->index_count == 0) throw Error("renderer: upload() a mesh before set_occluders()");
+  occluders_.clear();
+  std::vector<std::uint8_t> parts(mesh_.vertex_count(), static_cast<std::uint8_t>(BodyPart::Trunk));
+  for (std::size_t v = 0; v < parts.size(); ++v) {
+    int best = 0;
+    for (int k = 1; k < 4; ++k)
+      if (mesh_.weights[v][k] > mesh_.weights[v][best]) best = k;
+    const std::size_t j = mesh_.joints[v][best];
+    if (j < occluders.joint_part.size()) parts[v] = static_cast<std::uint8_t>(occluders.joint_part[j]);
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, gl_->parts);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(parts.size()), parts.data(), GL_STATIC_DRAW);
+  for (const Occluder& o : occluders.capsules)
+    if (occluders_.size() < kMaxOccluders && o.joint >= 0)
+      occluders_.push_back(o);
+  check_gl("uploading the occluders");
 }
 
 void Renderer::compute_bounds() {
@@ -446,6 +533,22 @@ void Renderer::render(std::span<const View> views, std::span<const mat4> skinnin
     surfaces[m] = vec4(s.wrap, s.scatter, s.specular, s.shininess);
   }
   glUniform4fv(g.u_surface, kMaterialCount, &surfaces[0].x);
+  // The capsules where the pose puts them (skinning = posed model × inverse bind).
+  vec4 occluder_a[kMaxOccluders], occluder_b[kMaxOccluders];
+  int occluder_count = 0;
+  for (const Occluder& o : occluders_) {
+    if (static_cast<std::size_t>(o.joint) >= skinning.size()) continue;
+    const mat4& m = skinning[static_cast<std::size_t>(o.joint)];
+    const float scale = std::cbrt(std::max(1e-12f, std::abs(glm::determinant(mat3(m)))));
+    occluder_a[occluder_count] = vec4(vec3(m * vec4(o.a, 1.0f)), o.radius * scale);
+    occluder_b[occluder_count] = vec4(vec3(m * vec4(o.b, 1.0f)), static_cast<float>(o.part));
+    ++occluder_count;
+  }
+  glUniform1i(g.u_occluder_count, occluder_count);
+  if (occluder_count > 0) {
+    glUniform4fv(g.u_occluder_a, occluder_count, &occluder_a[0].x);
+    glUniform4fv(g.u_occluder_b, occluder_count, &occluder_b[0].x);
+  }
 
   // The MSAA target is cleared whole (llvmpipe's fast path; scissored clears draw quads), but only
   // the part of the image the posed mesh can cover — plus what the previous frame covered, to wipe
@@ -473,6 +576,7 @@ void Renderer::render(std::span<const View> views, std::span<const mat4> skinnin
     glUniform3fv(g.u_eye, 1, &view.camera.eye.x);
     const vec3 direction = glm::normalize(view.camera.target - view.camera.eye);
     glUniform3fv(g.u_view_direction, 1, &direction.x);
+    glUniform1f(g.u_focus_distance, glm::dot(view.camera.target - view.camera.eye, direction));
     glUniform1i(g.u_orthographic, view.camera.orthographic ? 1 : 0);
     glDrawElements(GL_TRIANGLES, g.index_count, GL_UNSIGNED_INT, nullptr);
   }

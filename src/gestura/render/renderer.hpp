@@ -20,6 +20,7 @@
 #include "gestura/render/camera.hpp"
 #include "gestura/render/image.hpp"
 #include "gestura/render/look.hpp"
+#include "gestura/render/occluders.hpp"
 
 namespace gestura {
 
@@ -52,6 +53,9 @@ class Renderer {
   // Copies the mesh (kept for the CPU path) and uploads it. Throws gestura::Error when the mesh's
   // arrays disagree in size or an index is out of range.
   void upload(const Mesh& mesh);
+  // The capsules that shade the body (soft shadows, ambient occlusion) for the uploaded mesh; an
+  // upload clears them. Without them nothing is shaded that way. Throws before an upload.
+  void set_occluders(const OccluderSet& occluders);
   void set_look(const Look& look) { look_ = look; }
   const Look& look() const { return look_; }
 
@@ -89,6 +93,7 @@ class Renderer {
   std::size_t max_gpu_joints_ = 0;
   std::vector<vec4> joint_spheres_;  // per joint: bind-pose sphere (centre, radius) of its vertices; radius < 0 = none
   std::vector<float> morph_reach_;   // per morph: its largest position offset
+  std::vector<Occluder> occluders_;
   vec3 resolved_background_{-1.0f};  // the colour the resolved image's untouched area holds
   PixelRect resolved_rect_;          // where the last frame drew in the resolved image  // 1 + the largest joint index any vertex uses
   std::vector<vec3> scratch_positions_, scratch_normals_, skinned_positions_, skinned_normals_;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/utf8.hpp"
 #include "gestura/sign/fingerspelling_asl.hpp"
 #include "gestura/sign/fingerspelling_bsl.hpp"
 #include "gestura/sign/movement_timing.hpp"
@@ -39,12 +40,14 @@ SourceLocation at(int index) {
   return where;
 }
 
-std::string describe(char c) {
-  const auto u = static_cast<unsigned char>(c);
-  if (std::isprint(u)) return std::string("'") + c + "'";
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "byte 0x%02X", u);
-  return buf;
+// "'ß' (U+00DF)"; control characters by their code alone.
+std::string describe(char32_t cp) {
+  char code[16];
+  std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(cp));
+  if (cp < 0x20 || cp == 0x7F) return code;
+  std::string shown = "'";
+  utf8::append(shown, cp);
+  return cp < 0x80 ? shown + "'" : shown + "' (" + code + ")";
 }
 
 }  // namespace
@@ -75,9 +78,20 @@ SpellingPlan plan_spelling(std::string_view text, ManualAlphabet alphabet, Spell
   int word = 0;
   bool in_word = false;
   float slide = 0.0f;
-  for (std::size_t k = 0; k < text.size(); ++k) {
-    const char c = text[k];
-    const int index = static_cast<int>(k);
+  int index = -1;  // of the character, counted in code points
+  for (std::size_t pos = 0; pos < text.size();) {
+    char32_t cp = 0;
+    if (!utf8::decode(text, pos, cp)) {
+      char byte[8];
+      std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(text[pos])));
+      throw Error(at(index + 1), std::string("cannot fingerspell byte ") + byte + " (the text is not UTF-8)");
+    }
+    ++index;
+    // A letter with diacritics is spelled as its base letter (José as J-O-S-E); a combining accent
+    // typed after its letter belongs to that letter.
+    if (utf8::is_mark(cp)) continue;
+    const char32_t base = utf8::base_letter(cp);
+    const char c = base < 0x80 ? static_cast<char>(base) : '\0';
     if (c == ' ') {
       if (in_word) {
         plan.letters.back().end += options.final_hold;
@@ -88,10 +102,10 @@ SpellingPlan plan_spelling(std::string_view text, ManualAlphabet alphabet, Spell
       }
       continue;
     }
-    const LetterInfo letter = info(alphabet, c);
+    const LetterInfo letter = c ? info(alphabet, c) : LetterInfo{};
     if (!letter.known) {
       const char* allowed = alphabet == ManualAlphabet::Asl ? "A-Z and 0-9" : "A-Z";
-      throw Error(at(index), "cannot fingerspell " + describe(c) + " in " +
+      throw Error(at(index), "cannot fingerspell " + describe(cp) + " in " +
                                  (alphabet == ManualAlphabet::Asl ? "ASL" : "BSL") + " (letters " + allowed + ")");
     }
     LetterTarget target;

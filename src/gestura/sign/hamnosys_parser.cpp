@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/utf8.hpp"
 
 namespace gestura::sign {
 namespace {
@@ -1106,40 +1107,19 @@ class Parser {
   }
 };
 
-// ---- UTF-8 ---------------------------------------------------------------------------------------
-
-// Decodes one code point starting at bytes[i]; returns its length or 0 if malformed.
-std::size_t decode_utf8(std::string_view bytes, std::size_t i, char32_t& out) {
-  const auto b0 = static_cast<unsigned char>(bytes[i]);
-  std::size_t len = b0 < 0x80 ? 1 : (b0 >> 5) == 0x6 ? 2 : (b0 >> 4) == 0xE ? 3 : (b0 >> 3) == 0x1E ? 4 : 0;
-  if (len == 0 || i + len > bytes.size()) return 0;
-  char32_t cp = len == 1 ? b0 : len == 2 ? (b0 & 0x1F) : len == 3 ? (b0 & 0x0F) : (b0 & 0x07);
-  for (std::size_t k = 1; k < len; ++k) {
-    const auto b = static_cast<unsigned char>(bytes[i + k]);
-    if ((b >> 6) != 0x2) return 0;
-    cp = (cp << 6) | (b & 0x3F);
-  }
-  out = cp;
-  return len;
-}
-
 }  // namespace
 
-std::vector<Symbol> symbols_from_unicode(std::string_view utf8) {
+std::vector<Symbol> symbols_from_unicode(std::string_view text) {
   std::vector<Symbol> out;
   std::size_t i = 0;
-  while (i < utf8.size()) {
+  while (i < text.size()) {
     const int at = static_cast<int>(out.size());
     if (out.size() >= kMaxSignSymbols)
       fail(at, "sign too long: more than " + std::to_string(kMaxSignSymbols) + " symbols");
     char32_t cp = 0;
-    const std::size_t len = decode_utf8(utf8, i, cp);
-    if (len == 0) fail(at, "invalid UTF-8 at byte " + std::to_string(i) + ": expected a HamNoSys symbol");
+    if (!utf8::decode(text, i, cp)) fail(at, "invalid UTF-8 at byte " + std::to_string(i) + ": expected a HamNoSys symbol");
     // Tabs and line breaks separate like spaces.
-    if (cp == U'\t' || cp == U'\n' || cp == U'\r') {
-      i += len;
-      continue;
-    }
+    if (cp == U'\t' || cp == U'\n' || cp == U'\r') continue;
     const auto symbol = symbol_from_codepoint(cp);
     if (!symbol) {
       char hex[16];
@@ -1147,7 +1127,6 @@ std::vector<Symbol> symbols_from_unicode(std::string_view utf8) {
       fail(at, std::string("unknown code point ") + hex + ": expected a HamNoSys symbol");
     }
     out.push_back(*symbol);
-    i += len;
   }
   return out;
 }

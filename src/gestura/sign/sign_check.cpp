@@ -13,6 +13,8 @@ namespace {
 void after_parse(CheckReport& report, const HamSign& sign, std::span<const NonManual> nonmanual,
                  const std::string& place, const CheckOptions& options) {
   ++report.parsed;
+  for (const ParseNote& note : sign.notes)
+    report.notes.push_back(place + ": note: symbol " + std::to_string(note.symbol_index) + ": " + note.text);
   if (options.describe_parsed) report.descriptions.push_back(place + ": " + describe(sign));
   if (!options.synthesize) return;
   if (const auto why = options.synthesize(sign, nonmanual)) {
@@ -43,6 +45,10 @@ CheckReport check_jsonl(std::string_view text, std::string_view file_name, const
   std::size_t start = 0;
   int line_number = 0;
   while (start < text.size()) {
+    if (options.max_failures > 0 && report.failed >= options.max_failures) {
+      report.stopped = true;
+      break;
+    }
     std::size_t end = text.find('\n', start);
     if (end == std::string_view::npos) end = text.size();
     const std::string_view line = text.substr(start, end - start);
@@ -80,6 +86,10 @@ CheckReport check_sigml(std::string_view text, std::string_view file_name, const
   CheckReport report;
   report.synthesis_connected = static_cast<bool>(options.synthesize);
   for (const SigmlEntry& entry : read_sigml_entries(text, file_name, options.parse)) {
+    if (options.max_failures > 0 && report.failed >= options.max_failures) {
+      report.stopped = true;
+      break;
+    }
     ++report.signs;
     const std::string place = std::string(file_name) + ":" + std::to_string(entry.line) + ": " + entry.gloss;
     if (entry.sign) after_parse(report, entry.sign->manual, entry.sign->nonmanual, place, options);

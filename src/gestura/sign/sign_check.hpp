@@ -23,6 +23,7 @@ struct CheckOptions {
   ParseOptions parse;
   bool describe_parsed = false;  // fill CheckReport::descriptions (gestura check --show)
   SynthesisCheck synthesize;     // empty: parse only (CheckReport::synthesized stays 0)
+  int max_failures = 0;          // stop after this many failed signs (0: check every sign)
 };
 
 struct CheckReport {
@@ -32,7 +33,11 @@ struct CheckReport {
   int failed = 0;                     // not parsed, or parsed but synthesis failed
   std::vector<std::string> failures;  // one line per failing sign: "file:line: gloss: reason"
   std::vector<std::string> descriptions;  // "file:line: gloss: <describe(sign)>" when asked for
+  // What the lenient parser accepted although the standard does not (a group left open, a modifier
+  // out of place): "file:line: gloss: note: symbol N: what it did".
+  std::vector<std::string> notes;
   bool synthesis_connected = false;  // a synthesis step was given
+  bool stopped = false;  // max_failures was reached before the end of the file
 };
 
 // One object per line with a `hamnosys` string (Unicode) or, failing that, a `names` string.

@@ -1,6 +1,6 @@
 #include "gestura/text/sign_inventory.hpp"
 
-#include "gestura/text/utf8.hpp"
+#include "gestura/core/utf8.hpp"
 
 namespace gestura {
 

@@ -1,6 +1,6 @@
 #include "gestura/text/tokenizer.hpp"
 
-#include "gestura/text/utf8.hpp"
+#include "gestura/core/utf8.hpp"
 
 namespace gestura {
 
@@ -80,7 +80,8 @@ std::vector<Token> tokenize(std::string_view text) {
         }
         ++i;
       }
-      out.push_back({TokenKind::word, std::move(spelled), d.offsets[start], d.offsets[i]});
+      // One spelling however the word was typed: "José" with a combining accent is "José".
+      out.push_back({TokenKind::word, utf8::nfc(spelled), d.offsets[start], d.offsets[i]});
       continue;
     }
     if (utf8::is_digit(c)) {

@@ -1,7 +1,8 @@
 #pragma once
 // Splits UTF-8 English text into words, numbers, symbols and punctuation, each with its byte span in
 // the input. Typographic variants are folded so later stages see one form: ’ and ‘ inside a word
-// become ', em/en dashes and … are pauses, curly and guillemet quotes are dropped.
+// become ', em/en dashes and … are pauses, curly and guillemet quotes are dropped; words are in
+// Unicode NFC (a letter typed with a combining accent is the precomposed letter).
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -19,7 +20,7 @@ enum class TokenKind {
 
 struct Token {
   TokenKind kind;
-  std::string text;  // normalized spelling (apostrophes folded), original case
+  std::string text;  // normalized spelling (apostrophes folded, NFC), original case
   std::size_t begin = 0, end = 0;  // byte span in the input
 };
 

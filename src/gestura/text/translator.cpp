@@ -6,7 +6,7 @@
 #include "gestura/text/english_words.hpp"
 #include "gestura/text/lemmatizer.hpp"
 #include "gestura/text/tokenizer.hpp"
-#include "gestura/text/utf8.hpp"
+#include "gestura/core/utf8.hpp"
 
 namespace gestura {
 
@@ -395,11 +395,11 @@ class SentenceTranslator {
     bool outside_alphabet = false;
     for (std::size_t pos = 0; pos < w.text.size();) {
       const char32_t cp = utf8::next(w.text, pos);
-      if (!utf8::is_letter(cp)) {
+      if (!utf8::is_letter(cp) || utf8::is_mark(cp)) {  // a mark left over belongs to the letter before it
         if (cp == '-') name.push_back('-');
         continue;
       }
-      const char32_t letter = utf8::to_upper(utf8::strip_accent(cp));
+      const char32_t letter = utf8::to_upper(utf8::base_letter(cp));
       std::string spelled;
       utf8::append(spelled, letter);
       outside_alphabet |= letter < 'A' || letter > 'Z';

@@ -1,0 +1,49 @@
+#include "gestura/app/workspace.hpp"
+
+namespace gestura::app {
+
+Workspace::Workspace() = default;
+Workspace::~Workspace() = default;
+
+const Avatar& Workspace::avatar_locked(const AvatarChoice& choice) {
+  std::unique_ptr<Avatar>& slot = avatars_[choice.key()];
+  if (!slot) slot = std::make_unique<Avatar>(build(choice));
+  return *slot;
+}
+
+LayeredLexicon& Workspace::lexicon_locked() {
+  if (!lexicon_) lexicon_ = std::make_unique<DefaultLexicon>();
+  return lexicon_->layers();
+}
+
+const Avatar& Workspace::avatar(const AvatarChoice& choice) {
+  const std::lock_guard lock(mutex_);
+  return avatar_locked(choice);
+}
+
+const SigningRig& Workspace::rig(const AvatarChoice& choice) {
+  const std::lock_guard lock(mutex_);
+  std::unique_ptr<SigningRig>& slot = rigs_[choice.key()];
+  if (!slot) slot = std::make_unique<SigningRig>(make_signing_rig(avatar_locked(choice)));
+  return *slot;
+}
+
+const Signer& Workspace::signer(const AvatarChoice& choice) {
+  const std::lock_guard lock(mutex_);
+  std::unique_ptr<Signer>& slot = signers_[choice.key()];
+  if (!slot) slot = std::make_unique<Signer>(avatar_locked(choice), lexicon_locked());
+  return *slot;
+}
+
+LayeredLexicon& Workspace::lexicon() {
+  const std::lock_guard lock(mutex_);
+  return lexicon_locked();
+}
+
+void Workspace::reload_lexicon() {
+  const std::lock_guard lock(mutex_);
+  signers_.clear();
+  lexicon_.reset();
+}
+
+}  // namespace gestura::app

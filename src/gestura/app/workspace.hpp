@@ -1,0 +1,62 @@
+#pragma once
+// What requests build once and reuse: avatars (seconds to build), the default lexicon (built-in
+// plus the user's), and signers with their cache of performed signs. A long-lived adapter (the
+// server, the studio) keeps one Workspace for many requests; the CLI uses a fresh one per run.
+// Safe to share between threads: building is serialised, and what is built is never changed.
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "gestura/app/avatar_choice.hpp"
+#include "gestura/app/context.hpp"
+#include "gestura/body/avatar.hpp"
+#include "gestura/lexicon/default_lexicon.hpp"
+#include "gestura/sentence/signer.hpp"
+#include "gestura/sign/signing_rig.hpp"
+
+namespace gestura::app {
+
+class Workspace {
+ public:
+  Workspace();
+  ~Workspace();
+  Workspace(const Workspace&) = delete;
+  Workspace& operator=(const Workspace&) = delete;
+
+  // Built on first use and kept; the references stay valid for the workspace's life.
+  const Avatar& avatar(const AvatarChoice& choice);
+  const SigningRig& rig(const AvatarChoice& choice);
+  const Signer& signer(const AvatarChoice& choice);
+  LayeredLexicon& lexicon();
+
+  // Drops the lexicon and the signers that use it (call after the user lexicon changed). Not safe
+  // while another thread is running a request on this workspace.
+  void reload_lexicon();
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, std::unique_ptr<Avatar>> avatars_;
+  std::map<std::string, std::unique_ptr<SigningRig>> rigs_;
+  std::unique_ptr<DefaultLexicon> lexicon_;
+  std::map<std::string, std::unique_ptr<Signer>> signers_;
+
+  const Avatar& avatar_locked(const AvatarChoice& choice);
+  LayeredLexicon& lexicon_locked();
+};
+
+
+// The workspace a run uses: the context's, or one of its own for this run only.
+class RunWorkspace {
+ public:
+  explicit RunWorkspace(const RunContext& context)
+      : own_(context.workspace ? nullptr : std::make_unique<Workspace>()), used_(context.workspace ? context.workspace : own_.get()) {}
+  Workspace* operator->() const { return used_; }
+  Workspace& operator*() const { return *used_; }
+
+ private:
+  std::unique_ptr<Workspace> own_;
+  Workspace* used_;
+};
+
+}  // namespace gestura::app
