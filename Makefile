@@ -2,12 +2,19 @@
 #   make run   — install what is missing, build (release), run the main job on the embedded defaults
 #   make test  — install what is missing, build, run every test through ctest
 # CI (CI=true) builds with warnings as errors.
+# Also: make fuzz (libFuzzer targets, FUZZ_SECONDS each), make test-asan (every test under ASan + UBSan),
+# make bench. docs/reliability.md explains the first two.
 
 PRESET := $(if $(filter true,$(CI)),ci,release)
 JOBS   ?= $(shell nproc)
 BIN    := build/bin
 
-.PHONY: run test build build-cli deps bench bench-anchors legibility clean
+FUZZ_SECONDS ?= 60
+# LeakSanitizer: the one suppression (Mesa's EGL driver) is explained in tests/lsan.supp.
+SANITIZER_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+                 LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
+
+.PHONY: run test build build-cli deps bench bench-studio bench-anchors legibility coverage serve load clean fuzz fuzz-smoke test-asan
 
 deps:
 	@scripts/setup-deps.sh
@@ -27,8 +34,42 @@ run: build-cli
 test: build
 	@ctest --preset $(PRESET) -j $(JOBS)
 
+# The libFuzzer targets (fuzz/), each for FUZZ_SECONDS, under ASan + UBSan (clang 14, build-asan/).
+fuzz: deps
+	@scripts/fuzz.sh $(FUZZ_SECONDS)
+
+# A few seconds per target: that every reader survives its seeds and a little mutation.
+fuzz-smoke: deps
+	@FUZZ_JOBS=$(JOBS) scripts/fuzz.sh 3
+
+# Every test, built with clang 14 under ASan + UBSan (no recovery) and LeakSanitizer.
+test-asan: deps
+	@cmake --preset asan >/dev/null
+	@cmake --build --preset asan -j $(JOBS)
+	@$(SANITIZER_ENV) ctest --preset asan -j $(JOBS)
+
 bench: build
 	@$(BIN)/gestura-bench
+
+# How many content words of everyday English sentences the ASL lexicon signs (docs/asl-lexicon.md).
+coverage: build-cli
+	@python3 tools/coverage.py --gestura $(BIN)/gestura
+	@python3 tools/coverage.py --gestura $(BIN)/gestura --sentences data/eval/heldout-sentences.txt --quiet
+
+# The studio's frame time and edit-to-preview latency at 1280x800 under Xvfb (docs/benchmarks.md, "Studio").
+bench-studio: build-cli
+	@db=$$(mktemp -d)/bench.sqlite; xvfb-run -a -s '-screen 0 1400x900x24' $(BIN)/gestura studio $$db --size 1280x800 \
+	  --script bench/studio/frame-time.script --frame-log $$(dirname $$db)/frames.tsv $(ARGS); rm -rf $$(dirname $$db)
+
+# The web service and page at http://127.0.0.1:$(PORT)/ (Ctrl-C stops it).
+PORT ?= 8080
+serve: build-cli
+	@$(BIN)/gestura serve --port $(PORT) --web web
+
+# A bounded load run of the server on the loopback (docs/benchmarks.md, "Server"); not part of make test.
+# LOAD_ARGS="--clients 200 --seconds 60 --threads 2" are the defaults.
+load: build-cli
+	@node tools/serve-load.mjs --gestura $(BIN)/gestura $(LOAD_ARGS)
 
 # MediaPipe Holistic on rendered signs (minutes: ~5-10 s per frame); not part of make test.
 # LEGIBILITY_ARGS passes options, e.g. LEGIBILITY_ARGS="--size 640x360 --step 3 house".
@@ -50,4 +91,4 @@ bench-anchors: deps
 	@build-anchors/bin/gestura-anchors $(ARGS)
 
 clean:
-	rm -rf build build-debug build-anchors
+	rm -rf build build-debug build-asan build-anchors

@@ -32,3 +32,11 @@ if [ -f "$root/tools/package.json" ] &&
   (cd "$root/tools" && npm install --no-audit --no-fund --loglevel=error </dev/null)
   touch "$root/tools/node_modules"  # npm leaves its mtime alone when nothing changed
 fi
+
+# The web page's packages (three.js; puppeteer-core for its browser tests), pinned in web/package.json.
+if [ -f "$root/web/package.json" ] &&
+   { [ ! -d "$root/web/node_modules" ] || [ "$root/web/package.json" -nt "$root/web/node_modules" ]; }; then
+  echo "gestura setup: installing the web page's npm packages (web/package.json)"
+  (cd "$root/web" && if [ -f package-lock.json ]; then npm ci --no-audit --no-fund --loglevel=error; else npm install --no-audit --no-fund --loglevel=error; fi </dev/null)
+  touch "$root/web/node_modules"
+fi

@@ -38,7 +38,11 @@ std::function<Invocation()> action(app::AvatarAction kind) {
     Invocation invocation;
     invocation.fields = bind_fields(*request);
     unbind(invocation.fields, "action");
-    if (kind == app::AvatarAction::info) unbind(invocation.fields, "output");
+    if (kind == app::AvatarAction::info || kind == app::AvatarAction::looks) unbind(invocation.fields, "output");
+    if (kind == app::AvatarAction::looks)
+      for (const char* name : {"avatar", "height", "build", "sex", "shoulder_width", "arm_length", "hand_size", "finger_length",
+                               "finger_thickness", "weights"})
+        unbind(invocation.fields, name);
     if (kind == app::AvatarAction::export_glb) binding(invocation.fields, "output").info.help = "the binary glTF to write (.glb)";
     if (kind == app::AvatarAction::sites) binding(invocation.fields, "output").info.help = "a .json file to write (else printed)";
     invocation.run = [request](const app::RunContext& context) {
@@ -54,6 +58,9 @@ std::function<Invocation()> action(app::AvatarAction kind) {
           if (r.written.empty()) std::fputs(r.sites_json.c_str(), stdout);
           else std::printf("wrote %s\n", r.written.c_str());
           break;
+        case app::AvatarAction::looks:
+          for (const app::AvatarLookEntry& look : r.looks) std::printf("%-8s %s\n", look.name.c_str(), look.description.c_str());
+          break;
       }
       return 0;
     };
@@ -62,14 +69,16 @@ std::function<Invocation()> action(app::AvatarAction kind) {
 }
 
 const Registration reg{{"avatar", "build the default avatar; export it as glTF or print its structure",
-                        "Builds the avatar from parameters (no asset files; --avatar makehuman:DIR loads the MakeHuman\n"
+                        "Builds the avatar from parameters (no asset files; --avatar NAME takes a built-in look, --avatar\n"
+                        "makehuman:DIR loads the MakeHuman"
                         "base mesh and rig instead, the parameters then unused) and writes it as binary glTF 2.0 (skin,\n"
                         "joints, inverse bind matrices, named morph targets, materials), prints its joints, degrees of\n"
                         "freedom, vertex and triangle counts and morph names, or lists its sign locations.",
                         {},
                         {Command{"export", "write the avatar as binary glTF (-o FILE.glb)", {}, action(app::AvatarAction::export_glb), {}},
                          Command{"info", "print joints, degrees of freedom, vertices, triangles and morphs", {}, action(app::AvatarAction::info), {}},
-                         Command{"sites", "sign locations: name → position in metres (JSON; -o FILE.json)", {}, action(app::AvatarAction::sites), {}}}}};
+                         Command{"sites", "sign locations: name → position in metres (JSON; -o FILE.json)", {}, action(app::AvatarAction::sites), {}},
+                         Command{"looks", "the built-in looks --avatar takes by name (sex, build, skin, hair, clothing)", {}, action(app::AvatarAction::looks), {}}}}};
 
 }  // namespace
 }  // namespace gestura::cli

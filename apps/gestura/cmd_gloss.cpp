@@ -30,6 +30,8 @@ Invocation prepare() {
     const Translation& t = r.translation;
     std::cout << t.text() << "\n\n";
     if (!r.have_signs) std::cout << "(no " << r.lang << " lexicon found: open vocabulary, every word taken as a sign)\n";
+    for (const Sentence& s : t.sentences)
+      if (!s.parse.empty()) std::cout << "  parse: " << s.parse << "\n";
     // Words of one phrase share their reason; print it once.
     for (std::size_t k = 0; k < t.notes.size(); ++k)
       if (k == 0 || t.notes[k].reason != t.notes[k - 1].reason) std::cout << "  " << t.notes[k].reason << "\n";

@@ -1,5 +1,6 @@
 // gestura lexicon — the user's sign lexicon (an SQLite file) on top of the built-in one
 // (app/lexicon.hpp).
+#include <cstdio>
 #include <iostream>
 #include <memory>
 
@@ -92,7 +93,10 @@ const Registration reg{{
              {}},
      Command{"import", "import a .jsonl (one entry per line) or .sigml (needs --lang) file", {},
              change<app::LexiconImportRequest>([](const auto& q, const app::LexiconChangeResult& r) {
-               std::cout << "imported " << r.count << " signs from " << q.file << " into " << r.path << "\n";
+               for (const app::Notice& n : r.bad_lines) std::fprintf(stderr, "%s\n", n.text().c_str());
+               std::cout << "imported " << r.count << " signs from " << q.file << " into " << r.path;
+               if (q.skip_bad) std::cout << " (" << r.bad_lines.size() << " bad line" << (r.bad_lines.size() == 1 ? "" : "s") << " skipped)";
+               std::cout << "\n";
              }),
              {}},
      Command{"export", "export to .jsonl (everything) or .sigml (SiGML entries only)", {},

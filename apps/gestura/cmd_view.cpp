@@ -15,8 +15,9 @@
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/render_job.hpp"
 #include "gestura/render/renderer.hpp"
-#include "gestura/render/staged_file.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/render/viewer_controls.hpp"
+#include "scene_view.hpp"
 
 namespace gestura::cli {
 namespace {
@@ -131,7 +132,13 @@ int show(const app::ViewRequest& request, const app::RunContext& context) {
 }
 
 Invocation prepare() {
-  auto request = std::make_shared<app::ViewRequest>();
+  struct State {
+    app::ViewRequest request;
+    app::SceneViewRequest scene;  // --scene FILE: a performed scene instead of one avatar
+    std::string camera;           // a scene's camera names are its own, so parsed once the subject is known
+  };
+  auto state = std::make_shared<State>();
+  app::ViewRequest* request = &state->request;
   Invocation invocation;
   invocation.fields = bind_fields(*request);
   // The bare argument is a motion file when it names one (or an existing file), else English to sign.
@@ -143,7 +150,32 @@ Invocation prepare() {
     const bool file = std::filesystem::exists(text) || (text.find(' ') == std::string::npos && app::is_motion_file(text));
     (file ? request->subject.clip : request->extras.text) = text;
   };
-  invocation.run = [request](const app::RunContext& context) { return show(*request, context); };
+  FieldBinding& camera = binding(invocation.fields, "camera");
+  camera.info.help = "start camera: front, side, three-quarter, top, side-section, follow; with --scene a camera of the scene";
+  camera.set = [state](std::string_view text) { state->camera = std::string(text); };
+  invocation.fields.push_back(option({.name = "scene", .help = "play a scene (docs/scene.md) performed as gestura scene does; c cycles its cameras", .value = "SCENE.json", .group = "Scene"}, state->scene.source.scene));
+  invocation.fields.push_back(option({.name = "script", .help = "with --scene: the script (text or JSON) instead of the scene's own", .value = "FILE", .group = "Scene"}, state->scene.source.script));
+  invocation.fields.push_back(option({.name = "do", .help = "with --scene: the script as text", .value = "TEXT", .group = "Scene"}, state->scene.source.do_text));
+  invocation.run = [state](const app::RunContext& context) {
+    app::ViewRequest& view = state->request;
+    app::SceneViewRequest& scene = state->scene;
+    if (scene.source.scene.empty()) {
+      if (!scene.source.script.empty() || !scene.source.do_text.empty()) app::usage_error("scene", "--script and --do need --scene SCENE.json");
+      if (!state->camera.empty()) {
+        view.camera.clear();
+        app::set_from_text(view.camera, state->camera, app::FieldInfo{.name = "camera"});
+      }
+      return show(view, context);
+    }
+    if (!view.subject.clip.empty() || view.subject.rest || view.subject.test_motion || view.extras.sign.given() || !view.extras.text.empty())
+      app::usage_error("scene", "--scene plays a scene: give no clip, sign, text, --rest or --test-motion with it");
+    scene.camera = state->camera;
+    scene.size = view.size;
+    scene.screenshot = view.screenshot;
+    scene.frames = view.frames;
+    scene.at = view.at;
+    return show_scene(scene, context);
+  };
   return invocation;
 }
 
@@ -152,7 +184,8 @@ const Registration reg{{"view", "interactive viewer (play, step, slow motion, or
                         "avatar's skeleton), performing one sign written in HamNoSys (--hamnosys, --names) or SiGML\n"
                         "(--sigml FILE [--gloss NAME]), or signing English TEXT as gestura say does (a bare argument\n"
                         "that names no file). Opens a window (needs a display; without one use xvfb-run -a gestura\n"
-                        "view ...).\n\n"
+                        "view ...). With --scene SCENE.json it plays a scene performed as gestura scene does (c\n"
+                        "cycles its cameras).\n\n"
                         "keys:  space play/pause   , . step one frame back/forward   1 2 3 speed 0.25x 0.5x 1x\n"
                         "       l loop on/off   F1..F5 (or f s t p x) front, side, three-quarter, top (plan), side-section\n"
                         "       r restart   q / Esc quit\n"

@@ -15,6 +15,7 @@
 #include "gestura/app/error.hpp"
 #include "gestura/app/input_file.hpp"
 #include "gestura/app/number.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/render/progress.hpp"
 
 #ifndef GESTURA_VERSION
@@ -215,6 +216,7 @@ int main(int argc, char** argv) {
     for (const auto& p : prepared)
       if (p->app->parsed()) chosen = p.get();
   };
+  gestura::remove_staged_files_on_signals();  // Ctrl-C or SIGTERM leaves no temporary output behind
   try {
     cli.parse(argc, argv);
     find_chosen();

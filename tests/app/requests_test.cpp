@@ -129,6 +129,32 @@ TEST(Requests, AvatarExportIsBinaryGltf) {
   expect_refused(r, "height", "2.5");
 }
 
+TEST(Requests, AvatarLooksListTheBuiltInLooksWithoutBuildingAnAvatar) {
+  AvatarRequest r;
+  r.action = AvatarAction::looks;
+  r.output = "looks.json";
+  expect_refused(r, "output");
+  r.output.clear();
+  const AvatarResult result = run(r);
+  ASSERT_GE(result.looks.size(), 5u);  // the default and at least four looks
+  EXPECT_EQ(result.looks.front().name, "default");
+  EXPECT_EQ(result.avatar.mesh.vertex_count(), 0u);
+  EXPECT_EQ(to_json(result, AvatarAction::looks)["looks"].size(), result.looks.size());
+  EXPECT_EQ(TextCodec<AvatarAction>::parse("looks"), AvatarAction::looks);
+  EXPECT_EQ(TextCodec<AvatarAction>::format(AvatarAction::looks), "looks");
+  // A look is the generated avatar: its parameters are checked, its key tells looks apart.
+  AvatarChoice ana, ben;
+  ana.avatar = "ana";
+  ben.avatar = "ben";
+  EXPECT_TRUE(ana.generated());
+  EXPECT_NE(ana.key(), ben.key());
+  ana.params.build = 2.0f;
+  EXPECT_EQ(error_of([&] { validate(ana); }).place.field, "build");
+  AvatarChoice unknown;
+  unknown.avatar = "zed";
+  EXPECT_FALSE(unknown.generated());
+}
+
 TEST(Requests, LexiconQueriesAndChanges) {
   LexiconQuery q;
   q.kind = LexiconQueryKind::show;

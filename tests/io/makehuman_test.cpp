@@ -195,6 +195,11 @@ TEST(MakeHumanErrors, MalformedRigNamesLineOrField) {
   EXPECT_EQ(error_of([&] { parse_makehuman_rig("{\n  \"bones\": {,\n}", "bad.mhskel", positions); }).rfind(
                 "bad.mhskel:2:13: invalid JSON", 0),
             0u);
+  // A number past a double's range is another kind of JSON library exception (found by fuzzing
+  // the OpenPose reader, which had the same gap); it too is a located error.
+  EXPECT_EQ(error_of([&] { parse_makehuman_rig("{\"bones\": 1e999999}", "big.mhskel", positions); }).rfind(
+                "big.mhskel: invalid JSON", 0),
+            0u);
   const std::string missing_parent = R"({"bones": {"a": {"head": "a_h", "tail": "a_t", "parent": "zz"}},
                                          "joints": {"a_h": [0], "a_t": [1]}})";
   EXPECT_EQ(error_of([&] { parse_makehuman_rig(missing_parent, "r.mhskel", positions); }),

@@ -158,6 +158,49 @@ TEST(PoseFormat, OpenPoseLayoutProjectsAFrontView) {
   for (float c : p.confidence) EXPECT_EQ(c, 1.0f);  // the avatar has every joint the keypoints need
 }
 
+// Found by fuzz_pose (UBSan, in its first thousand inputs): a file with no frames made the reader
+// memcpy from an empty vector's null data(), undefined behaviour. A pose without frames (or
+// without points) reads back empty; `make test-asan` runs this under UBSan.
+TEST(PoseFormat, AFileWithoutFramesReadsBackEmpty) {
+  PoseData pose;
+  pose.components.push_back({"c", "XYZC", {"a", "b"}, {{0, 1}}, {}});
+  pose.frames = 0;
+  const PoseData read = decode_pose(encode_pose(pose), "empty.pose");
+  EXPECT_EQ(read.frames, 0u);
+  EXPECT_TRUE(read.data.empty());
+  EXPECT_TRUE(read.confidence.empty());
+  ASSERT_EQ(read.components.size(), 1u);
+  EXPECT_EQ(read.components[0].points, (std::vector<std::string>{"a", "b"}));
+  pose.people = 0;
+  pose.frames = 3;
+  const PoseData nobody = decode_pose(encode_pose(pose), "nobody.pose");
+  EXPECT_EQ(nobody.frames, 3u);
+  EXPECT_TRUE(nobody.data.empty());
+}
+
+// Found by fuzz_pose's round trip: a pose read from a version 0.1 file was written with its 0.1
+// version number over a 0.2 body, so `convert old.pose new.pose` made a file that read back wrong
+// (the people count taken from the fps field). Output is always 0.2.
+TEST(PoseFormat, APoseReadFromVersionPointOneIsWrittenAsPointTwo) {
+  PoseData pose;
+  pose.version = 0.1f;
+  pose.components.push_back({"c", "XYC", {"a"}, {}, {}});
+  pose.fps = 25.0f;
+  pose.frames = 2;
+  pose.people = 3;
+  pose.data.assign(2 * 3 * 2, 0.5f);
+  pose.confidence.assign(2 * 3, 1.0f);
+  const std::string bytes = encode_pose(pose);
+  float version = 0.0f;
+  std::memcpy(&version, bytes.data(), sizeof version);
+  EXPECT_FLOAT_EQ(version, 0.2f);
+  const PoseData read = decode_pose(bytes, "converted.pose");
+  EXPECT_EQ(read.frames, 2u);
+  EXPECT_EQ(read.people, 3);
+  EXPECT_FLOAT_EQ(read.fps, 25.0f);
+  EXPECT_EQ(read.data, pose.data);
+}
+
 TEST(PoseFormat, EncoderRejectsWhatTheFormatCannotHold) {
   PoseData pose;
   EXPECT_THROW(encode_pose(pose), Error);  // no component

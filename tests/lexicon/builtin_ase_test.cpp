@@ -254,8 +254,8 @@ TEST_F(BuiltinAse, HelloIsASaluteFromTheForehead) {
   EXPECT_EQ(s.posture.handshape.dominant->form.basic, BasicHandshape::Flat);
   EXPECT_EQ(s.posture.location.dominant->site, Site::forehead);
   EXPECT_EQ(s.posture.location.dominant->side, Side::dominant_side);
-  // Fingers up with palm "d" is HamNoSys for the palm facing away from the signer.
-  EXPECT_EQ(s.posture.orientation.dominant->extended_finger, Direction::U);
+  // Fingers up (tilted toward the forehead, as in a salute) with palm "d": the palm faces away from the signer.
+  EXPECT_EQ(components(*s.posture.orientation.dominant->extended_finger).vertical, 1);
   EXPECT_EQ(s.posture.orientation.dominant->palm, Direction::D);
   const Motion* m = first_motion(s.actions);
   ASSERT_TRUE(m && m->direction);

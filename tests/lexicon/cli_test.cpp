@@ -1,6 +1,7 @@
 // The gestura lexicon and gestura gloss commands, run as a user would.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -21,11 +22,16 @@ CliRun gestura_cli(const TempDir& dir, const std::string& args) {
                                           dir.file("builtin") + "'");
 }
 
+// HamNoSys in Unicode: a flat hand, fingers up, palm left, at the chest — and one that does not
+// parse (a closing bracket nothing opened).
+const std::string kGoodHamnosys = "\xee\x80\x81\xee\x80\xa0\xee\x80\xbe\xee\x81\x92";
+const std::string kBadHamnosys = "\xee\x80\x81\xee\x83\xa3";
+
 }  // namespace
 
 TEST(LexiconCli, AddShowSearchExportRemove) {
   TempDir dir;
-  EXPECT_EQ(gestura_cli(dir, "lexicon add --gloss HOUSE --lang ase --hamnosys H1 --keywords house,home").status, 0);
+  EXPECT_EQ(gestura_cli(dir, "lexicon add --gloss HOUSE --lang ase --hamnosys '" + kGoodHamnosys + "' --keywords house,home").status, 0);
   const CliRun show = gestura_cli(dir, "lexicon show house");
   EXPECT_EQ(show.status, 0);
   EXPECT_NE(show.output.find("HOUSE (ase, variant 1)"), std::string::npos) << show.output;
@@ -84,7 +90,8 @@ TEST(GlossCli, UsesTheLexiconAndExplains) {
   const CliRun run = gestura_cli(dir, "gloss 'I went to the shop yesterday.'");
   EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_EQ(run.output.substr(0, run.output.find('\n')), "YESTERDAY IX-1 GO STORE");
-  EXPECT_NE(run.output.find("'went' → GO: irregular past"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("'went' → GO: verb, WordNet lemma 'go'"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("parse: (S (NP I.p) (VP went.v-d"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("'the' dropped: article"), std::string::npos) << run.output;
 
   const CliRun json = gestura_cli(dir, "gloss 'Where is Bob?' --json");
@@ -94,4 +101,56 @@ TEST(GlossCli, UsesTheLexiconAndExplains) {
   const CliRun invalid = gestura_cli(dir, "gloss \"$(printf 'caf\\303')\"");
   EXPECT_EQ(invalid.status, 1);
   EXPECT_NE(invalid.output.find("invalid UTF-8 at byte 3"), std::string::npos) << invalid.output;
+}
+
+TEST(LexiconCli, NotationThatDoesNotParseIsRefusedNamingLineAndSymbol) {
+  TempDir dir;
+  const CliRun add = gestura_cli(dir, "lexicon add --gloss X --lang ase --hamnosys '" + kBadHamnosys + "'");
+  EXPECT_EQ(add.status, 1);
+  EXPECT_NE(add.output.find("--hamnosys"), std::string::npos) << add.output;
+  EXPECT_NE(add.output.find("symbol 1 (hamparend, U+E0E3)"), std::string::npos) << add.output;
+  const CliRun letters = gestura_cli(dir, "lexicon add --gloss X --lang ase --hamnosys abc");
+  EXPECT_EQ(letters.status, 1);
+  EXPECT_NE(letters.output.find("unknown code point U+0061"), std::string::npos) << letters.output;
+  EXPECT_EQ(gestura_cli(dir, "lexicon list").output, "");
+
+  const std::string file = dir.write("mixed.jsonl",
+                                     R"({"gloss":"ONE","lang":"ase","hamnosys":")" + kGoodHamnosys + "\"}\n" +
+                                         R"({"gloss":"TWO","lang":"ase","hamnosys":")" + kBadHamnosys + "\"}\n" +
+                                         R"({"gloss":"THREE","lang":"ase"})" "\n" +
+                                         R"({"gloss":"FOUR","lang":"ase","hamnosys":")" + kGoodHamnosys + "\"}\n");
+  const CliRun refused = gestura_cli(dir, "lexicon import '" + file + "'");
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.output.find(file + ":2: sign 'TWO': HamNoSys does not parse at symbol 1 (hamparend, U+E0E3)"),
+            std::string::npos) << refused.output;
+  EXPECT_EQ(gestura_cli(dir, "lexicon list").output, "");  // one transaction: nothing stored
+
+  const CliRun skipped = gestura_cli(dir, "lexicon import '" + file + "' --skip-bad");
+  EXPECT_EQ(skipped.status, 0) << skipped.output;
+  EXPECT_NE(skipped.output.find("warning: " + file + ":2: skipped: sign 'TWO': HamNoSys does not parse"),
+            std::string::npos) << skipped.output;
+  EXPECT_NE(skipped.output.find("warning: " + file + ":3: skipped: entry 'THREE' needs exactly one of"),
+            std::string::npos) << skipped.output;
+  EXPECT_NE(skipped.output.find("imported 2 signs"), std::string::npos) << skipped.output;
+  EXPECT_NE(skipped.output.find("(2 bad lines skipped)"), std::string::npos) << skipped.output;
+  const CliRun list = gestura_cli(dir, "lexicon list");
+  EXPECT_NE(list.output.find("ONE\tase"), std::string::npos) << list.output;
+  EXPECT_NE(list.output.find("FOUR\tase"), std::string::npos) << list.output;
+  EXPECT_EQ(list.output.find("TWO"), std::string::npos) << list.output;
+}
+
+TEST(LexiconCli, TheSharedHamburgAndWarsawSignsImportWithSkipBad) {
+  TempDir dir;
+  const std::string file = gestura::test::shared_data() + "/hamnosys/signs.jsonl";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not present";
+  // One line of the file has neither gloss nor notation: without --skip-bad nothing is imported.
+  const CliRun whole = gestura_cli(dir, "lexicon import '" + file + "' --lang gsg");
+  EXPECT_EQ(whole.status, 1);
+  EXPECT_NE(whole.output.find(":3569: entry has no 'gloss'"), std::string::npos) << whole.output;
+  const CliRun run = gestura_cli(dir, "lexicon import '" + file + "' --lang gsg --skip-bad");
+  EXPECT_EQ(run.status, 0) << run.output.substr(0, 2000);
+  EXPECT_NE(run.output.find("imported 4069 signs"), std::string::npos) << run.output.substr(0, 2000);
+  EXPECT_NE(run.output.find("(1 bad line skipped)"), std::string::npos);
+  const CliRun list = gestura_cli(dir, "lexicon list --lang gsg");
+  EXPECT_EQ(std::count(list.output.begin(), list.output.end(), '\n'), 4069);  // homonyms kept as variants
 }

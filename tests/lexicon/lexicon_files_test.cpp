@@ -202,3 +202,60 @@ TEST(LexiconSigml, ManySignsInOneFileAndErrors) {
   const std::string junk = dir.write("junk.sigml", std::string("\0\1\2\3\xff", 5));
   EXPECT_NE(error_of([&] { import_sigml(fresh, junk, options); }).find(junk), std::string::npos);
 }
+
+TEST(LexiconJsonl, CheckRefusesAnEntryAndSkipBadImportsTheRest) {
+  const std::string text = R"({"gloss":"ONE","lang":"ase","hamnosys":"good"})"
+                           "\n"
+                           R"({"gloss":"TWO","lang":"ase","hamnosys":"bad"})"
+                           "\n"
+                           "{not json\n"
+                           R"({"gloss":"THREE","lang":"ase","hamnosys":"good"})"
+                           "\n";
+  ImportOptions options;
+  options.check = [](const SignEntry& e) {
+    if (e.notation == "bad") throw Error("notation of '" + e.gloss + "' refused");
+  };
+  // Without skip_bad the refused entry fails the whole import at its line.
+  auto strict = Lexicon::in_memory();
+  std::istringstream in(text);
+  const std::string message = error_of([&] { import_jsonl(strict, in, "x.jsonl", options); });
+  EXPECT_NE(message.find("x.jsonl:2: notation of 'TWO' refused"), std::string::npos) << message;
+  EXPECT_EQ(strict.size(), 0u);
+
+  // With skip_bad each bad line is reported with its line and the good ones are stored.
+  std::vector<std::string> skipped;
+  options.skip_bad = [&](const Error& e) { skipped.push_back(e.what()); };
+  auto lenient = Lexicon::in_memory();
+  std::istringstream again(text);
+  EXPECT_EQ(import_jsonl(lenient, again, "x.jsonl", options), 2u);
+  ASSERT_EQ(skipped.size(), 2u);
+  EXPECT_NE(skipped[0].find("x.jsonl:2: notation of 'TWO' refused"), std::string::npos) << skipped[0];
+  EXPECT_NE(skipped[1].find("x.jsonl:3: bad JSON"), std::string::npos) << skipped[1];
+  EXPECT_TRUE(lenient.find("ONE", "ase"));
+  EXPECT_TRUE(lenient.find("THREE", "ase"));
+  EXPECT_FALSE(lenient.find("TWO", "ase"));
+}
+
+TEST(LexiconJsonl, AGlossRepeatedWithoutVariantsBecomesTheNextVariant) {
+  auto lex = Lexicon::in_memory();
+  std::istringstream in(R"({"gloss":"BANK","lang":"ase","hamnosys":"money"})"
+                        "\n"
+                        R"({"gloss":"BANK","lang":"ase","hamnosys":"river"})"
+                        "\n"
+                        R"({"gloss":"BANK","lang":"bfi","hamnosys":"british"})"
+                        "\n");
+  EXPECT_EQ(import_jsonl(lex, in, "x.jsonl"), 3u);
+  EXPECT_EQ(lex.size(), 3u);
+  ASSERT_TRUE(lex.find("BANK", "ase", 2));
+  EXPECT_EQ(lex.find("BANK", "ase", 2)->notation, "river");
+  EXPECT_EQ(lex.find("BANK", "ase", 1)->notation, "money");
+  EXPECT_EQ(lex.find("BANK", "bfi", 1)->notation, "british");
+  // Importing the file again updates the same entries rather than adding more.
+  std::istringstream again(R"({"gloss":"BANK","lang":"ase","hamnosys":"money2"})"
+                           "\n"
+                           R"({"gloss":"BANK","lang":"ase","hamnosys":"river2"})"
+                           "\n");
+  import_jsonl(lex, again, "x.jsonl");
+  EXPECT_EQ(lex.size(), 3u);
+  EXPECT_EQ(lex.find("BANK", "ase", 2)->notation, "river2");
+}

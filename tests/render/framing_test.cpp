@@ -132,7 +132,7 @@ TEST(Occluders, ArmsAndHandsGetCapsulesOfTheirThickness) {
 TEST(Occluders, AHandInFrontOfTheChestShadowsIt) {
   unsetenv("DISPLAY");
   HeadlessGlContext context;
-  const Clip clip = said("library");  // the right hand held in front of the chest
+  const Clip clip = said("coffee");  // both hands held in front of the chest (COFFEE grinds one fist on the other)
   RenderSubject subject{avatar().skeleton, avatar().mesh, clip};
   Animator animator(subject);
   animator.pose_at(0.5f * clip.duration);

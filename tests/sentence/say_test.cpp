@@ -155,7 +155,8 @@ TEST(SaySentence, NumbersOutsideTheLexiconAreComposed) {
   ASSERT_EQ(g.size(), 1u);
   EXPECT_EQ(g[0]->gloss, "47");
   // 47 is not a lexicon sign: it is 4 then 7, so it lasts clearly longer than the single sign 4.
-  const auto four = signed_glosses(say("4"));
+  const SentencePerformance four_said = say("4");  // kept: signed_glosses points into it
+  const auto four = signed_glosses(four_said);
   ASSERT_EQ(four.size(), 1u);
   EXPECT_GT(g[0]->end - g[0]->start, four[0]->end - four[0]->start + 0.08f);
 }
@@ -358,6 +359,25 @@ TEST(SayBadInput, ClearErrors) {
   fast.speed = 9.0f;
   expect_error("hello", fast, "speed");
   expect_error("?!.", {}, "nothing to sign");
+}
+
+// An utterance has a cap on its duration (kMaxSaySeconds), checked gloss by gloss while planning so
+// that no motion is made for text that would be refused: 300 long unknown words fingerspelled at
+// the slowest tempo would last hours.
+TEST(SayLimits, AnUtteranceLongerThanTheCapIsRefusedAtTheGlossThatPassesIt) {
+  std::string text;
+  for (int w = 0; w < 290; ++w) text += std::string(w % 2 ? "zyxwvutsrqponmlkjihgfedcbazyxwvutsrqpon" : "qwertyuiopasdfghjklzxcvbnmqwertyuiopasdfg") + " ";
+  SayOptions slow;
+  slow.speed = 0.25f;
+  try {
+    say(text, slow);
+    ADD_FAILURE() << "no error for an utterance of hours";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("kMaxSaySeconds"), std::string::npos) << what;
+    EXPECT_NE(what.find("1800 s"), std::string::npos) << what;
+    EXPECT_NE(what.find("passed at gloss"), std::string::npos) << what;
+  }
 }
 
 }  // namespace

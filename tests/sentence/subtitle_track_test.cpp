@@ -236,3 +236,53 @@ TEST(SubtitleTrack, CloseCuesAreCoarticulatedWithoutRest) {
   EXPECT_FALSE(apart.cues[1].coarticulated);
   EXPECT_NEAR(elbow_angle(apart, s, 1.5f), 0.0f, 1e-3f);
 }
+
+// A television programme is hours long. Every cue here overruns its 10 s window (18 words take 12 s
+// even at 1.5×), so each next cue starts exactly where the previous signing ended: the case where a
+// float clock once refused cue after cue ("placed at 277.666656 s, before the timeline's end at
+// 277.666687 s"). Three hours, a cue every 10 s: all placed, each key on the programme within half a
+// millisecond of its exact (double) time.
+TEST(SubtitleTrack, AThreeHourProgrammeKeepsEveryCueInOrderAndOnTime) {
+  const Skeleton s = one_arm();
+  FakeSigner signer{&s};
+  std::vector<SubtitleCue> cues;
+  for (int i = 0; i < 3 * 360; ++i)
+    cues.push_back(cue(i + 1, 10.0 * i + 0.37, 10.0 * i + 10.37, i % 2 ? "a b c d e f g h i j k l m n o p q r" : "a b"));
+  const auto t = fit_subtitles(cues, std::ref(signer), s, no_slack());
+  ASSERT_EQ(t.cues.size(), cues.size());
+  EXPECT_NO_THROW(validate(t.clip, s));
+  const std::vector<float>& keys = t.clip.rotations[1].times;
+  double previous_end = 0.0;
+  int waited = 0;  // cues that started where the previous signing ended
+  for (const FittedCue& c : t.cues) {
+    EXPECT_GE(c.start, std::max(c.cue_start, previous_end)) << "cue " << c.index;
+    waited += c.start == previous_end && c.start > c.cue_start;
+    // The performance's mid key (at t/2 of its signing) and its end are on the programme where
+    // the double clock puts them.
+    const double words = static_cast<double>(c.glosses.size());
+    for (const double local : {words / c.speed / 2.0, c.duration}) {
+      const double exact = c.start + local;
+      const auto k = std::lower_bound(keys.begin(), keys.end(), static_cast<float>(exact - 1e-3));
+      ASSERT_NE(k, keys.end()) << "cue " << c.index;
+      EXPECT_NEAR(*k, exact, 5e-4) << "cue " << c.index;
+    }
+    previous_end = c.start + c.duration;
+  }
+  EXPECT_EQ(waited, 539);  // every cue after an overrun but the first
+  EXPECT_GE(t.cues.back().start, 3 * 3600.0 - 10.0);
+  EXPECT_NEAR(t.clip.duration, previous_end, 1e-3);
+}
+
+TEST(SubtitleTrack, AProgrammePastTheLongestTimelineIsRefusedNamingTheCue) {
+  const Skeleton s = one_arm();
+  FakeSigner signer{&s};
+  const double day = 24.0 * 3600.0;
+  try {
+    fit_subtitles({cue(1, 0.0, 2.0, "a"), cue(2, day - 1.0, day + 5.0, "a b c")}, std::ref(signer), s, no_slack());
+    ADD_FAILURE() << "a cue ending past 24 hours was placed";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("cue 2"), std::string::npos) << what;
+    EXPECT_NE(what.find("kMaxTimelineSeconds"), std::string::npos) << what;
+  }
+}

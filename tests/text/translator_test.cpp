@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+#include <vector>
+
 #include "gestura/core/error.hpp"
 
 using namespace gestura;
@@ -102,7 +105,9 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(Translator, ReasonsExplainEachWord) {
   const Translation t = gloss("I went to the store yesterday.");
   ASSERT_EQ(t.glosses.size(), 4u);
-  EXPECT_EQ(t.glosses[2].reason, "'went' → GO: irregular past");
+  // The parse makes 'went' a verb and WordNet gives its lemma (the rule table's "irregular past"
+  // answers only when the sentence does not parse).
+  EXPECT_EQ(t.glosses[2].reason, "'went' → GO: verb, WordNet lemma 'go'");
   EXPECT_EQ(t.glosses[0].reason, "'yesterday' → YESTERDAY: time expression, moved to the front");
   ASSERT_EQ(t.notes.size(), 6u);  // every source word, in text order
   EXPECT_EQ(t.notes[2].word, "to");
@@ -180,6 +185,25 @@ TEST(Translator, OpenVocabularyUsesLemmasAndCapitalsForNames) {
   OpenVocabulary open;
   EXPECT_EQ(translate_to_gloss("Yesterday Sarah bought three books.", open).text(), "YESTERDAY FS-SARAH BUY 3 BOOK");
   EXPECT_EQ(translate_to_gloss("The kids liked running.", open).text(), "KID LIKE RUN");
+}
+
+// A keyword of several words (as a lexicon lists "train station" or "wake up") is one sign, found
+// with its first or last word inflected; a form the lexicon lists as written keeps its own sign
+// before lemmas are tried; a capitalised word with a sign is signed, not spelled as a name.
+TEST(Translator, LexiconPhrasesListedFormsAndCapitalisedWordsWithSigns) {
+  WordListInventory v{{"train station", "STATION"}, {"train", "TRAIN"}, {"wake up", "WAKE-UP"},
+                      {"glasses", "GLASSES"},       {"glass", "GLASS"},   {"sunday", "SUNDAY"},
+                      {"credit card", "CREDIT-CARD"}, {"pay", "PAY"},     {"lose", "LOSE"}};
+  EXPECT_EQ(translate_to_gloss("Where is the train station?", v).text(), "STATION WHERE");
+  EXPECT_EQ(translate_to_gloss("The train is late.", v).text(), "TRAIN FS-LATE");
+  EXPECT_EQ(translate_to_gloss("She woke up.", v).text(), "IX-3 WAKE-UP");
+  EXPECT_EQ(translate_to_gloss("I paid with credit cards.", v).text(), "IX-1 PAY FS-WITH CREDIT-CARD");
+  EXPECT_EQ(translate_to_gloss("I lost my glasses.", v).text(), "IX-1 LOSE POSS-1 GLASSES");
+  EXPECT_EQ(translate_to_gloss("I drank a glass.", v).text(), "IX-1 FS-DRANK GLASS");
+  EXPECT_EQ(translate_to_gloss("We rest on Sundays.", v).text(), "WE FS-REST SUNDAY");
+  // The open vocabulary would take any run of words as one sign, so it does not look phrases up.
+  OpenVocabulary open;
+  EXPECT_EQ(translate_to_gloss("The train station.", open).text(), "TRAIN STATION");
 }
 
 TEST(TranslatorInput, EmptyAndPunctuationOnly) {
@@ -271,4 +295,52 @@ TEST(TranslatorInput, RandomMixesKeepInvariants) {
       EXPECT_NE(t.glosses.back().kind, GlossKind::pause) << text;
     }
   }
+}
+
+// The examples of issue 15 that the rule tables got wrong, now read through the parse.
+TEST(TranslatorParse, IssueExamplesReadThroughTheParse) {
+  WordListInventory v = vocabulary();
+  for (const auto& [word, gloss] : std::vector<std::pair<const char*, const char*>>{
+           {"head", "HEAD"}, {"hurt", "HURT"}, {"station", "STATION"}, {"homework", "HOMEWORK"}, {"this", "THIS"},
+           {"cost", "COST"}, {"room", "ROOM"}, {"leave", "LEAVE"}, {"left", "LEFT"}, {"turn", "TURN"},
+           {"give", "GIVE"}, {"do", "DO"}})
+    v.add(word, gloss);
+  v.add("train station", "STATION");
+  const auto text = [&](std::string_view english) { return translate_to_gloss(english, v).text(); };
+  // "hurts" is a verb: its lemma, not a fingerspelled form; "head" the noun, never a verb's synonym.
+  EXPECT_EQ(text("my head hurts"), "POSS-1 HEAD HURT");
+  EXPECT_EQ(text("I went to the train station."), "IX-1 GO STATION");
+  // "does" as the main verb is DO; as do-support it is dropped, and HOW-MUCH is signed once, last.
+  EXPECT_EQ(text("She does her homework."), "IX-3 DO POSS-3 HOMEWORK");
+  const Translation coffee = translate_to_gloss("How much does this coffee cost?", v);
+  EXPECT_EQ(coffee.text(), "THIS COFFEE COST HOW-MUCH");
+  // The same word by its part of speech: "left" the verb is LEAVE, the direction LEFT.
+  EXPECT_EQ(text("He left the room."), "IX-3 LEAVE ROOM");
+  EXPECT_EQ(text("Turn left."), "TURN LEFT");
+}
+
+TEST(TranslatorParse, TheExplanationNamesTheParse) {
+  WordListInventory v = vocabulary();
+  v.add("give", "GIVE");
+  const Translation t = translate_to_gloss("She gave him the book. Do you like coffee?", v);
+  ASSERT_EQ(t.sentences.size(), 2u);
+  EXPECT_EQ(t.sentences[0].parse.rfind("(S (NP she) (VP gave", 0), 0u) << t.sentences[0].parse;
+  EXPECT_NE(t.sentences[0].parse.find("subject 'She' → verb 'gave'"), std::string::npos) << t.sentences[0].parse;
+  EXPECT_NE(t.sentences[0].parse.find("verb 'gave' → object 'book'"), std::string::npos) << t.sentences[0].parse;
+  bool do_dropped = false;
+  for (const WordNote& n : t.notes)
+    if (n.word == "Do") do_dropped = n.reason.find("do-support (parse: I link to the verb") != std::string::npos;
+  EXPECT_TRUE(do_dropped);
+  EXPECT_EQ(t.text(), "IX-3 GIVE IX-3 BOOK / IX-2 LIKE COFFEE");
+}
+
+TEST(TranslatorParse, AuxiliariesDroppedAndPerfectHaveSigned) {
+  WordListInventory v = vocabulary();
+  v.add("dinner", "DINNER");
+  const auto text = [&](std::string_view english) { return translate_to_gloss(english, v).text(); };
+  EXPECT_EQ(text("I have eaten dinner."), "IX-1 FINISH EAT DINNER");
+  EXPECT_EQ(text("Have you eaten?"), "FINISH IX-2 EAT");
+  EXPECT_EQ(text("She is going to school."), "IX-3 GO SCHOOL");
+  EXPECT_EQ(text("Did you see the movie?"), "IX-2 SEE MOVIE");
+  EXPECT_EQ(text("I do not like meat."), "IX-1 LIKE MEAT NOT");
 }

@@ -16,14 +16,20 @@
 
 namespace gestura {
 
+// The longest timeline place_clip builds: 24 hours. Times are added in double and stored as float
+// seconds; at 24 hours a stored key is within 4 ms of its exact time (an eighth of a frame at 30 fps).
+inline constexpr double kMaxTimelineSeconds = 24.0 * 3600.0;
+
 // A clip with one empty track per joint of `skeleton` and duration 0.
 Clip empty_timeline(const Skeleton& skeleton);
 
 // Appends `clip`'s keys to `timeline` shifted by `start` seconds, over [start, start + clip.duration].
+// Each key's programme time is computed in double and rounded to float once.
 // Contract / throws gestura::Error when: `clip` does not have one track per joint of `skeleton`,
 // `start` is not finite or lies before timeline.duration (placements go in time order, without
-// overlap), or a track's interpolation differs from what the timeline already holds for it.
-// timeline.duration becomes start + clip.duration.
-void place_clip(Clip& timeline, const Clip& clip, float start, const Skeleton& skeleton);
+// overlap; "before" means by more than the float spacing at that time), the placement would end
+// past kMaxTimelineSeconds, or a track's interpolation differs from what the timeline already
+// holds for it. timeline.duration becomes start + clip.duration (rounded to float).
+void place_clip(Clip& timeline, const Clip& clip, double start, const Skeleton& skeleton);
 
 }  // namespace gestura

@@ -2,9 +2,11 @@
 
 #include <cstdio>
 
+#include "gestura/body/avatar_look.hpp"
 #include "gestura/body/body_sites.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/core/file_extension.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/io/gltf_export.hpp"
 
 namespace gestura::app {
@@ -13,11 +15,18 @@ AvatarAction TextCodec<AvatarAction>::parse(std::string_view text) {
   if (text == "export") return AvatarAction::export_glb;
   if (text == "info") return AvatarAction::info;
   if (text == "sites") return AvatarAction::sites;
-  throw Error("'" + std::string(text.substr(0, 40)) + "' is not export, info or sites");
+  if (text == "looks") return AvatarAction::looks;
+  throw Error("'" + std::string(text.substr(0, 40)) + "' is not export, info, sites or looks");
 }
 
 std::string TextCodec<AvatarAction>::format(AvatarAction action) {
-  return action == AvatarAction::export_glb ? "export" : action == AvatarAction::info ? "info" : "sites";
+  switch (action) {
+    case AvatarAction::export_glb: return "export";
+    case AvatarAction::info: return "info";
+    case AvatarAction::sites: return "sites";
+    case AvatarAction::looks: return "looks";
+  }
+  return "info";
 }
 
 void validate(const AvatarRequest& request) {
@@ -30,6 +39,7 @@ void validate(const AvatarRequest& request) {
         usage_error("output", request.output + ": avatar export writes binary glTF; name the file .glb");
       break;
     case AvatarAction::info:
+    case AvatarAction::looks:
       if (!request.output.empty()) usage_error("output", "is only for export and sites");
       break;
     case AvatarAction::sites:
@@ -41,7 +51,12 @@ void validate(const AvatarRequest& request) {
 
 AvatarResult run(const AvatarRequest& request, const RunContext&) {
   validate(request);
-  AvatarResult result{build(request.avatar), {}, {}};
+  if (request.action == AvatarAction::looks) {
+    AvatarResult result;
+    for (const AvatarLook& look : builtin_looks()) result.looks.push_back({std::string(look.name), std::string(look.description)});
+    return result;
+  }
+  AvatarResult result{build(request.avatar), {}, {}, {}};
   const Avatar& a = result.avatar;
   if (request.action == AvatarAction::export_glb) {
     as_field_error(ErrorCategory::output, "output", [&] { write_glb(request.output, a.skeleton, a.mesh, "gestura_avatar"); });
@@ -50,12 +65,7 @@ AvatarResult run(const AvatarRequest& request, const RunContext&) {
   if (request.action == AvatarAction::sites) {
     result.sites_json = body_sites_json(a.skeleton, find_body_sites(a.skeleton, a.mesh));
     if (!request.output.empty()) {
-      as_field_error(ErrorCategory::output, "output", [&] {
-        std::FILE* f = std::fopen(request.output.c_str(), "wb");
-        if (!f) throw Error(request.output + ": cannot write here");
-        const bool ok = std::fwrite(result.sites_json.data(), 1, result.sites_json.size(), f) == result.sites_json.size();
-        if (std::fclose(f) != 0 || !ok) throw Error(request.output + ": write failed");
-      });
+      as_field_error(ErrorCategory::output, "output", [&] { write_file_atomically(request.output, result.sites_json); });
       result.written = request.output;
     }
   }
@@ -63,6 +73,11 @@ AvatarResult run(const AvatarRequest& request, const RunContext&) {
 }
 
 nlohmann::json to_json(const AvatarResult& result, AvatarAction action) {
+  if (action == AvatarAction::looks) {
+    nlohmann::json looks = nlohmann::json::array();
+    for (const AvatarLookEntry& look : result.looks) looks.push_back({{"name", look.name}, {"description", look.description}});
+    return nlohmann::json{{"looks", looks}};
+  }
   const Avatar& a = result.avatar;
   nlohmann::json out{{"height", a.params.height},
                      {"joints", a.skeleton.size()},

@@ -1,15 +1,16 @@
 #pragma once
 // avatar: build the avatar (generated from parameters, or loaded from assets) and export it as
-// binary glTF, describe it, or list its sign locations.
+// binary glTF, describe it, list its sign locations, or list the built-in looks.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gestura/app/avatar_choice.hpp"
 #include "gestura/app/context.hpp"
 
 namespace gestura::app {
 
-enum class AvatarAction { export_glb, info, sites };
+enum class AvatarAction { export_glb, info, sites, looks };
 
 template <>
 struct TextCodec<AvatarAction> {
@@ -24,14 +25,19 @@ struct AvatarRequest {
 
   template <class Self, class Visit>
   static void fields(Self& self, Visit&& visit) {
-    visit(self.action, FieldInfo{.name = "action", .help = "export, info or sites", .value = "ACTION"});
+    visit(self.action, FieldInfo{.name = "action", .help = "export, info, sites or looks", .value = "ACTION"});
     AvatarChoice::fields(self.avatar, visit);
     visit(self.output, FieldInfo{.name = "output", .help = "export: the binary glTF to write (.glb); sites: a .json file", .value = "FILE", .short_flag = 'o'});
   }
 };
 
+struct AvatarLookEntry {
+  std::string name, description;
+};
+
 struct AvatarResult {
-  Avatar avatar;
+  Avatar avatar;                       // empty for looks
+  std::vector<AvatarLookEntry> looks;  // looks: the built-in looks, the default first
   std::string sites_json;  // sites: name → position in metres
   std::string written;     // the file written, if any
 };

@@ -10,14 +10,14 @@
 namespace gestura::app {
 
 struct AvatarChoice {
-  std::string avatar = "default";  // default | makehuman:DIR | FILE.vrm/.glb/.gltf (io/avatar_source.hpp)
+  std::string avatar = "default";  // default | a built-in look | makehuman:DIR | FILE.vrm/.glb/.gltf (io/avatar_source.hpp)
   AvatarParams params;
   SkinWeightMethod weights = SkinWeightMethod::FieldDiffused;
 
   // The ranges are AvatarParams::validate()'s (a test holds them equal).
   template <class Self, class Visit>
   static void fields(Self& self, Visit&& visit) {
-    visit(self.avatar, FieldInfo{.name = "avatar", .help = "default (the generated avatar), makehuman:DIR (MakeHuman base mesh and rig) or FILE.vrm|.glb|.gltf (your rigged avatar: VRM 1.0/0.x, glTF)", .value = "SPEC", .group = "Avatar"});
+    visit(self.avatar, FieldInfo{.name = "avatar", .help = "default (the generated avatar), a built-in look of it (ana, ben, chidi, dana, eli: gestura avatar looks; the parameters given change it), makehuman:DIR (MakeHuman base mesh and rig) or FILE.vrm|.glb|.gltf (your rigged avatar: VRM 1.0/0.x, glTF)", .value = "SPEC", .group = "Avatar"});
     visit(self.params.height, FieldInfo{.name = "height", .help = "generated avatar: crown to floor in metres", .value = "M", .min = 1.0, .max = 2.5, .group = "Avatar"});
     visit(self.params.build, FieldInfo{.name = "build", .help = "generated avatar: girth multiplier", .value = "X", .min = 0.6, .max = 1.6, .group = "Avatar"});
     visit(self.params.sex, FieldInfo{.name = "sex", .help = "generated avatar: female, male or neutral", .value = "S", .group = "Avatar"});
@@ -29,7 +29,8 @@ struct AvatarChoice {
     visit(self.weights, FieldInfo{.name = "weights", .help = "generated avatar's skin weights: field, spheres or two-layer", .value = "METHOD", .group = "Avatar"});
   }
 
-  bool generated() const { return avatar == "default"; }
+  // The generated avatar: "default" or a built-in look (body/avatar_look.hpp).
+  bool generated() const;
   // A key equal for choices that give the same avatar (makehuman ignores the parameters).
   std::string key() const;
 };

@@ -31,7 +31,7 @@ GlossResult run(const GlossRequest& request, const RunContext&) {
     const std::string path = request.db.empty() ? default_user_lexicon_path() : request.db;
     if (!request.db.empty() && !std::filesystem::exists(path)) throw AppError(ErrorCategory::not_found, Place{"db", {path}}, "no such lexicon");
     if (std::filesystem::exists(path)) {
-      user.emplace(Lexicon::open(path));
+      user.emplace(Lexicon::open_read_only(path));
       layers.push_layer(*user);
     }
   }
@@ -60,7 +60,7 @@ nlohmann::json to_json(const GlossResult& result) {
   auto& sentences = out["sentences"] = nlohmann::json::array();
   for (const auto& s : t.sentences)
     sentences.push_back({{"type", to_string(s.type)}, {"negated", s.negated}, {"first", s.first}, {"last", s.last},
-                         {"begin", s.begin}, {"end", s.end}});
+                         {"begin", s.begin}, {"end", s.end}, {"parse", s.parse}});
   auto& markers = out["markers"] = nlohmann::json::array();
   for (const auto& m : t.markers) markers.push_back({{"kind", to_string(m.kind)}, {"first", m.first}, {"last", m.last}});
   return out;

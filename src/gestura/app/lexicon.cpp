@@ -1,5 +1,6 @@
 #include "gestura/app/lexicon.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,6 +10,9 @@
 #include "gestura/core/file_extension.hpp"
 #include "gestura/lexicon/layered_lexicon.hpp"
 #include "gestura/lexicon/lexicon_files.hpp"
+#include "gestura/lexicon/sign_language_codes.hpp"
+#include "gestura/sign/hamnosys_parser.hpp"
+#include "gestura/sign/sigml.hpp"
 
 namespace gestura::app {
 namespace {
@@ -34,11 +38,52 @@ struct ReadView {
     const std::string path = user_db_path(db);
     if (!db.empty() && !std::filesystem::exists(path)) throw AppError(ErrorCategory::not_found, Place{"db", {path}}, "no such lexicon");
     if (std::filesystem::exists(path)) {
-      user.emplace(Lexicon::open(path));
+      user.emplace(Lexicon::open_read_only(path));
       view.push_layer(*user);
     }
   }
 };
+
+// "symbol 3 (hamextfingeru, U+E020)": the symbol of a HamNoSys text at a parser's symbol index.
+std::string symbol_at(std::string_view hamnosys, int index) {
+  std::string out = "symbol " + std::to_string(index);
+  try {
+    const std::vector<sign::Symbol> symbols = sign::symbols_from_unicode(hamnosys);
+    if (index >= 0 && static_cast<std::size_t>(index) < symbols.size()) {
+      const sign::Symbol s = symbols[static_cast<std::size_t>(index)];
+      char hex[16];
+      std::snprintf(hex, sizeof hex, "U+%04X", static_cast<unsigned>(sign::symbol_info(s).codepoint));
+      out += " (" + std::string(sign::symbol_name(s)) + ", " + hex + ")";
+    } else if (index >= 0) {
+      out += " (the end of the notation)";
+    }
+  } catch (const Error&) {  // the text itself does not decode; the parser's message names the code point
+  }
+  return out;
+}
+
+// Refuses an entry whose notation does not parse, naming where it stops. Lenient parsing, as
+// `gestura check` does by default: what real lexicons contain is accepted.
+void check_notation(const SignEntry& e) {
+  switch (e.notation_kind) {
+    case NotationKind::clip: return;
+    case NotationKind::sigml:
+      try {
+        if (sign::read_sigml(e.notation).empty()) throw Error("no <hns_sign> element");
+      } catch (const Error& err) {
+        throw Error("sign '" + e.gloss + "': SiGML does not parse: " + err.what());
+      }
+      return;
+    case NotationKind::hamnosys:
+      try {
+        (void)sign::parse_hamnosys_unicode(e.notation);
+      } catch (const Error& err) {
+        throw Error("sign '" + e.gloss + "': HamNoSys does not parse at " + symbol_at(e.notation, err.where().index) +
+                    ": " + err.message());
+      }
+      return;
+  }
+}
 
 nlohmann::json entry_json(const SignEntry& e) {
   nlohmann::json keywords = nlohmann::json::array();
@@ -99,7 +144,10 @@ nlohmann::json to_json(const LexiconQueryResult& result) {
 }
 
 nlohmann::json to_json(const LexiconChangeResult& result) {
-  return {{"count", result.count}, {"skipped", result.skipped}, {"path", result.path}};
+  nlohmann::json bad = nlohmann::json::array();
+  for (const Notice& n : result.bad_lines)
+    bad.push_back({{"file", n.where.file}, {"line", n.where.line}, {"message", n.message}});
+  return {{"count", result.count}, {"skipped", result.skipped}, {"path", result.path}, {"bad_lines", bad}};
 }
 
 void validate(const LexiconAddRequest& request) {
@@ -125,6 +173,8 @@ LexiconChangeResult run(const LexiconAddRequest& request, const RunContext&) {
     if (!word.empty()) e.keywords.push_back(Keyword{word});
   e.source = request.source.empty() ? "gestura lexicon add" : request.source;
   e.licence = request.licence;
+  as_field_error(ErrorCategory::input, "lang", [&] { require_known_sign_language(e.language); });
+  as_field_error(ErrorCategory::input, request.hamnosys.empty() ? "sigml" : "hamnosys", [&] { check_notation(e); });
   Lexicon lex = open_for_writing(request.db);
   if (!request.replace && lex.find(e.gloss, e.language, e.variant))
     throw AppError(ErrorCategory::conflict, Place{"gloss", {}},
@@ -144,8 +194,17 @@ LexiconChangeResult run(const LexiconImportRequest& request, const RunContext&) 
   options.language = request.lang;
   options.licence = request.licence;
   options.source = request.source;
+  options.check = check_notation;
   LexiconChangeResult result;
+  if (request.skip_bad) {
+    options.skip_bad = [&](const Error& bad) {
+      SourceLocation where = bad.where();
+      where.index = -1;
+      result.bad_lines.push_back(warning("skipped: " + bad.message(), where));
+    };
+  }
   result.count = import_file(lex, request.file, options);
+  result.skipped = result.bad_lines.size();
   result.path = lex.path();
   return result;
 }
@@ -156,13 +215,11 @@ LexiconChangeResult run(const LexiconExportRequest& request, const RunContext&) 
   validate(request);
   const std::string path = user_db_path(request.db);
   if (!std::filesystem::exists(path)) throw AppError(ErrorCategory::not_found, Place{"db", {path}}, "no such lexicon");
-  Lexicon lex = Lexicon::open(path);
+  Lexicon lex = Lexicon::open_read_only(path);
   const auto entries = lex.list(request.lang);
-  std::ofstream out(request.file, std::ios::binary);
-  if (!out) throw AppError(ErrorCategory::output, Place{"file", {request.file}}, "cannot write file");
-  const bool sigml = has_extension(request.file, ".sigml");
   LexiconChangeResult result;
-  result.count = sigml ? export_sigml(entries, out) : (export_jsonl(entries, out), entries.size());
+  // All or nothing: written to a temporary, checked, synced and renamed (a full disk leaves no file).
+  as_field_error(ErrorCategory::output, "file", [&] { result.count = export_file(entries, request.file); });
   result.skipped = entries.size() - result.count;
   result.path = request.file;
   return result;

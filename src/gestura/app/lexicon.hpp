@@ -9,6 +9,7 @@
 
 #include "gestura/app/context.hpp"
 #include "gestura/app/fields.hpp"
+#include "gestura/app/notice.hpp"
 #include "gestura/lexicon/sign_entry.hpp"
 
 namespace gestura::app {
@@ -52,6 +53,7 @@ struct LexiconChangeResult {
   std::size_t skipped = 0;  // export to SiGML: entries without SiGML notation
   std::string path;         // the lexicon written, or the file exported
   std::string gloss, lang;  // add: the entry
+  std::vector<Notice> bad_lines;  // import --skip-bad: each line skipped, with its file, line and why
 };
 nlohmann::json to_json(const LexiconChangeResult& result);
 
@@ -80,6 +82,7 @@ LexiconChangeResult run(const LexiconAddRequest& request, const RunContext& cont
 
 struct LexiconImportRequest {
   std::string file, lang, licence, source, db;
+  bool skip_bad = false;
 
   template <class Self, class Visit>
   static void fields(Self& self, Visit&& visit) {
@@ -88,8 +91,11 @@ struct LexiconImportRequest {
     visit(self.licence, FieldInfo{.name = "licence", .help = "licence of entries that name none", .value = "L"});
     visit(self.source, FieldInfo{.name = "source", .help = "source of entries that name none (default: the file name)", .value = "S"});
     visit(self.db, FieldInfo{.name = "db", .help = "the user lexicon (SQLite file)", .value = "PATH"});
+    visit(self.skip_bad, FieldInfo{.name = "skip_bad", .help = "skip lines that are bad (bad JSON, missing fields, notation that does not parse), reporting each; import the rest"});
   }
 };
+// Entries whose notation does not parse are refused (by add and import), naming the symbol where
+// the parse stops; import names the file and line too.
 void validate(const LexiconImportRequest& request);
 LexiconChangeResult run(const LexiconImportRequest& request, const RunContext& context = {});
 

@@ -11,12 +11,13 @@ void validate(const SignRequest& request) {
   validate(request.output, true);
 }
 
-SignResult run(const SignRequest& request, const RunContext& context) {
-  validate(request);
+SignResult perform(const SignRequest& request, const RunContext& context) {
+  check_fields(request);
+  validate(request.source);
+  validate(request.avatar);
   // The notation first: a bad sign fails before the avatar is built.
   const LoadedSign sign = load_sign(request.source);
   RunWorkspace workspace(context);
-  const Avatar& avatar = workspace->avatar(request.avatar);
   const SigningRig& rig = workspace->rig(request.avatar);
   context.check_stop();
 
@@ -29,7 +30,17 @@ SignResult run(const SignRequest& request, const RunContext& context) {
     result.notices.push_back(warning(w.message, SourceLocation{sign.file, w.line}));
   result.problem = synthesis_problem(result.synthesis, rig);
   if (result.problem) result.notices.push_back(warning(*result.problem));
+  return result;
+}
+
+SignResult run(const SignRequest& request, const RunContext& context) {
+  validate(request);
+  RunWorkspace workspace(context);  // one for both steps: the avatar is built once
+  RunContext shared = context;
+  shared.workspace = &*workspace;
+  SignResult result = perform(request, shared);
   context.check_stop();
+  const Avatar& avatar = workspace->avatar(request.avatar);
   const SignPlan& p = result.synthesis.plan;
   result.written = write_motion(request.output, avatar.skeleton, result.synthesis.clip, &avatar.mesh,
                                 0.5f * (p.sign_start + p.sign_end), context);

@@ -36,6 +36,9 @@ struct SignResult {
 
 void validate(const SignRequest& request);
 SignResult run(const SignRequest& request, const RunContext& context = {});
+// The performance alone, nothing written (the output fields are ignored): for adapters that send
+// the clip on themselves (the server).
+SignResult perform(const SignRequest& request, const RunContext& context = {});
 
 nlohmann::json to_json(const SignResult& result);
 

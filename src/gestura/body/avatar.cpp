@@ -1,14 +1,17 @@
 #include "gestura/body/avatar.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
 
+#include "gestura/body/avatar_look.hpp"
 #include "gestura/body/avatar_material_borders.hpp"
 #include "gestura/body/avatar_proportions.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/body/avatar_volume.hpp"
 #include "gestura/body/face_morphs.hpp"
 #include "gestura/body/face_parts.hpp"
+#include "gestura/body/head_sculpt.hpp"
 #include "gestura/body/mesh_simplify.hpp"
 #include "gestura/body/polygonize.hpp"
 #include "gestura/core/error.hpp"
@@ -39,71 +42,120 @@ std::vector<vec3> surface_normals(const ImplicitBody& body, const Mesh& mesh) {
   return normals;
 }
 
-// Material of each vertex: that of the nearest union primitive, with regions drawn by distance
-// or by field instead: the lips wherever the surface lies on a lip primitive (not only where one is
-// nearest, which patched the border), the mouth's lining on the carved oral cavity, and hair and
-// brows by their fields (avatar_material_borders.hpp), so their edges follow smooth curves.
-std::vector<std::uint8_t> surface_materials(const ImplicitBody& body, const Mesh& mesh, float k) {
+// The sculpted head among the body's primitives (there is one on the default avatar).
+const HeadSculpt* find_head(const ImplicitBody& body) {
+  for (const Primitive& p : body.primitives)
+    if (p.shape == PrimitiveShape::Sculpt)
+      if (const auto* head = dynamic_cast<const HeadSculpt*>(p.sculpt.get())) return head;
+  return nullptr;
+}
+
+// How far below the hairline (metres at 1.70 m) hair standing off the scalp can still be: the
+// hair's shell ends 4 mm below the line, rounded over 2 mm. A bob's curtain is exempt: its line is
+// taken on the scalp under it, well above its hanging edge.
+constexpr float kLooseHairBelowLine = 0.006f;
+bool loose_hair_reaches(HairStyle style, const vec3& p, float k) {
+  return style == HairStyle::Bob || hair_field(p, k, style) < kLooseHairBelowLine * k;
+}
+
+// Material of each vertex: that of the nearest union primitive (a sculpt's own regions: the lips'
+// vermilion and the mouth's lining on the head), with hair, brows and lashes drawn by their fields
+// instead (avatar_material_borders.hpp), so their edges follow smooth curves.
+std::vector<std::uint8_t> surface_materials(const ImplicitBody& body, const Mesh& mesh, const AvatarParams& params,
+                                            std::array<vec3, 2> eyes, const NailPlates& nails,
+                                            const std::vector<bool>& below_the_waist, const HeadSculpt* head) {
+  const float k = params.height / 1.70f;
   std::vector<std::uint8_t> out(mesh.vertex_count(), static_cast<std::uint8_t>(MaterialId::Skin));
   std::vector<float> d(body.primitives.size());
-  std::vector<std::size_t> lips, cavity;
-  for (std::size_t i = 0; i < body.primitives.size(); ++i) {
-    const Primitive& prim = body.primitives[i];
-    if (prim.material == static_cast<std::uint8_t>(MaterialId::Lips) && prim.op == BlendOp::Union) lips.push_back(i);
-    if (prim.material == static_cast<std::uint8_t>(MaterialId::Mouth) && prim.op == BlendOp::Subtract) cavity.push_back(i);
-  }
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
     const vec3 p = mesh.positions[v];
     body.distances(p, d);
     std::size_t best = 0;
     for (std::size_t i = 1; i < d.size(); ++i)
       if (d[i] < d[best]) best = i;
-    auto m = static_cast<MaterialId>(body.primitives[best].material);
-    if (m == MaterialId::Lips) m = MaterialId::Skin;
-    for (std::size_t i : lips)
-      if (d[i] < 0.0012f * k) m = MaterialId::Lips;
-    for (std::size_t i : cavity)
-      if (primitive_distance(body.primitives[i], p) < 0.0015f * k) m = MaterialId::Mouth;
-    if (m == MaterialId::Skin || m == MaterialId::Hair) {
-      m = hair_field(p, k) < 0.0f ? MaterialId::Hair : eyebrow_field(p, k) < 0.0f ? MaterialId::Brow : MaterialId::Skin;
+    auto m = static_cast<MaterialId>(primitive_material(body.primitives[best], p));
+    // Below the top's hem the trunk and legs wear the trousers (not the arms hanging beside them).
+    if (m == MaterialId::Cloth && p.y < params.hem * params.height &&
+        below_the_waist[static_cast<std::size_t>(body.primitives[best].joint)])
+      m = MaterialId::Trousers;
+    // Hair that stands off the scalp (a bob's curtain, its underside) is hair wherever it hangs,
+    // though never below the hairline, where the hair's shell is cut off (HairSculpt): there the
+    // skin stands off the head's sculpt where the neck blends into it, and the shell's cut, nearest
+    // by a few millimetres, had left specks of hair on the nape.
+    const bool loose_hair = m == MaterialId::Hair && body.primitives[best].shape == PrimitiveShape::Sculpt && head &&
+                            head->distance(p) > 0.002f * k && loose_hair_reaches(params.hair, p, k);
+    if (!loose_hair && (m == MaterialId::Skin || m == MaterialId::Hair || m == MaterialId::Nail)) {
+      m = hair_field(p, k, params.hair) < 0.0f                                          ? MaterialId::Hair
+          : eyebrow_field(p, k) < 0.0f                                                  ? MaterialId::Brow
+          : lash_field(p, eyes[0], k) < 0.0f || lash_field(p, eyes[1], k) < 0.0f ? MaterialId::Brow
+          : nails.field(p) < 0.0f                                                       ? MaterialId::Nail
+                                                                                        : MaterialId::Skin;
     }
     out[v] = static_cast<std::uint8_t>(m);
   }
   return out;
 }
 
-// Closes the mouth the surface was polygonised with (open by kBindJawOpenDegrees, and a little
-// more: kLipPressDegrees): every vertex turns back about the jaw joint by its jaw weight, as
-// skinning would move it.
-void close_jaw(const Skeleton& skeleton, Mesh& mesh) {
+// The jaw's share of every vertex on the head: the hinge warp's weight at its (open-mouthed)
+// position, taken out of the skull's weight.
+void add_jaw_weights(const Skeleton& skeleton, const HeadSculpt& head, Mesh& mesh) {
+  const int skull = skeleton.find("skullbase"), jaw = skeleton.find("temporomandibular");
+  if (skull < 0 || jaw < 0) return;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const float w = head.jaw_weight(mesh.positions[v]);
+    if (w <= 0.0f) continue;
+    float items[5];
+    int joints[5];
+    int n = 0;
+    float moved = 0.0f;
+    for (int i = 0; i < 4; ++i) {
+      if (mesh.weights[v][i] <= 0.0f) continue;
+      joints[n] = mesh.joints[v][i];
+      items[n] = mesh.weights[v][i];
+      if (joints[n] == skull) {
+        moved = items[n] * w;
+        items[n] -= moved;
+      }
+      ++n;
+    }
+    if (moved <= 0.0f) continue;
+    bool merged = false;
+    for (int i = 0; i < n; ++i)
+      if (joints[i] == jaw) items[i] += moved, merged = true;
+    if (!merged) joints[n] = jaw, items[n] = moved, ++n;
+    // Keep the four largest, sorted, normalised.
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        if (items[j] > items[i]) std::swap(items[i], items[j]), std::swap(joints[i], joints[j]);
+    n = std::min(n, 4);
+    float total = 0.0f;
+    for (int i = 0; i < n; ++i) total += items[i];
+    mesh.joints[v] = JointIndices(0);
+    mesh.weights[v] = vec4(0.0f);
+    for (int i = 0; i < n; ++i) {
+      if (items[i] <= 0.0f) continue;
+      mesh.joints[v][i] = static_cast<std::uint16_t>(joints[i]);
+      mesh.weights[v][i] = items[i] / total;
+    }
+  }
+}
+
+// Turns every vertex about the jaw joint by `degrees` times its jaw weight, as skinning would move
+// it (negative closes). Normals turn with it when there are any.
+void turn_jaw(const Skeleton& skeleton, float degrees, Mesh& mesh) {
   const int jaw = skeleton.find("temporomandibular");
   std::vector<mat4> model(skeleton.size());
   local_to_model(skeleton, rest_pose(skeleton), model);
   const vec3 pivot(model[static_cast<std::size_t>(jaw)][3]);
-  const quat close = glm::angleAxis(deg(-proportions::kBindJawOpenDegrees - proportions::kLipPressDegrees), vec3(1, 0, 0));
-  std::vector<bool> partly(mesh.vertex_count(), false);
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
     float w = 0.0f;
     for (int i = 0; i < 4; ++i)
       if (mesh.joints[v][i] == jaw) w += mesh.weights[v][i];
     if (w <= 0.0f) continue;
-    const vec3 p = mesh.positions[v];
-    mesh.positions[v] = glm::mix(p, pivot + close * (p - pivot), w);
-    mesh.normals[v] = glm::normalize(glm::mix(mesh.normals[v], close * mesh.normals[v], w));
-    partly[v] = w < 1.0f;
+    const quat turn = glm::angleAxis(deg(degrees) * w, vec3(1, 0, 0));
+    mesh.positions[v] = pivot + turn * (mesh.positions[v] - pivot);
+    if (!mesh.normals.empty()) mesh.normals[v] = turn * mesh.normals[v];
   }
-  // Where the jaw's share changes (the mouth's corners and lining) the closing squeezes the
-  // surface, and the field's normal no longer fits it: take the tessellation's there.
-  std::vector<vec3> face_sum(mesh.vertex_count(), vec3(0.0f));
-  for (std::size_t f = 0; f + 2 < mesh.indices.size(); f += 3) {
-    const std::uint32_t a = mesh.indices[f], b = mesh.indices[f + 1], c = mesh.indices[f + 2];
-    if (!partly[a] && !partly[b] && !partly[c]) continue;
-    const vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
-    face_sum[a] += n, face_sum[b] += n, face_sum[c] += n;
-  }
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
-    if (partly[v] && glm::length(face_sum[v]) > 0.0f && glm::dot(glm::normalize(face_sum[v]), mesh.normals[v]) < 0.8f)
-      mesh.normals[v] = glm::normalize(face_sum[v]);
 }
 
 // Closing squeezes the mouth's corners, where the jaw's share falls off within a few millimetres,
@@ -116,7 +168,7 @@ void unfold(Mesh& mesh) {
       const std::uint32_t a = mesh.indices[f + e], b = mesh.indices[f + (e + 1) % 3];
       ring[a].push_back(b), ring[b].push_back(a);
     }
-  for (int round = 0; round < 8; ++round) {
+  for (int round = 0; round < 24; ++round) {
     std::vector<std::uint32_t> folded;
     for (std::size_t f = 0; f + 2 < mesh.indices.size(); f += 3) {
       const std::uint32_t a = mesh.indices[f], b = mesh.indices[f + 1], c = mesh.indices[f + 2];
@@ -164,14 +216,45 @@ Avatar build_avatar(const AvatarParams& params, const AvatarOptions& options) {
   Mesh& mesh = avatar.mesh;
   mesh.positions = std::move(surface.positions);
   mesh.indices = std::move(surface.indices);
-  mesh.materials = surface_materials(body, mesh, k);
-  sharpen_material_borders(avatar_material_borders(body, k), 0.0005f * k, mesh.positions, mesh.indices, mesh.materials);
-  mesh.normals = surface_normals(body, mesh);
+  const auto joints = rest_joint_positions(avatar.skeleton);
+  const std::array<vec3, 2> eyes{joints[static_cast<std::size_t>(avatar.skeleton.find("l_eyeball_joint"))],
+                                 joints[static_cast<std::size_t>(avatar.skeleton.find("r_eyeball_joint"))]};
+  const HeadSculpt* head = find_head(body);
+  const NailPlates nails(avatar.skeleton, params);
+  // The joints the trousers can cover: the trunk and the legs, not the arms (nor the neck and head).
+  std::vector<bool> below_the_waist(avatar.skeleton.size(), true);
+  for (std::size_t j = 0; j < avatar.skeleton.size(); ++j)
+    for (int a = static_cast<int>(j); a >= 0; a = avatar.skeleton.parents[static_cast<std::size_t>(a)])
+      if (avatar.skeleton.names[static_cast<std::size_t>(a)].find("sternoclavicular") != std::string::npos ||
+          avatar.skeleton.names[static_cast<std::size_t>(a)] == "vc7")
+        below_the_waist[j] = false;
+  mesh.materials = surface_materials(body, mesh, params, eyes, nails, below_the_waist, head);
+  std::vector<MaterialBorder> borders = avatar_material_borders(body, k, params.hair, eyes);
+  // The hairline, except where hair stands off the scalp (it stays hair there).
+  for (MaterialBorder& border : borders)
+    if (border.below == MaterialId::Hair && head)
+      border.field = [head, k, style = params.hair](const vec3& p) {
+        return head->distance(p) > 0.002f * k && loose_hair_reaches(style, p, k) ? -0.01f : hair_field(p, k, style);
+      };
+  borders.push_back({MaterialId::Nail, MaterialId::Skin, [&nails](const vec3& p) { return nails.field(p); }});
+  const float hem = params.hem * params.height;
+  borders.push_back({MaterialId::Trousers, MaterialId::Cloth, [hem](const vec3& p) { return p.y - hem; }});
+  if (head)
+    borders.push_back({MaterialId::Lips, MaterialId::Skin, [head](const vec3& p) { return head->vermilion(p); }});
+  sharpen_material_borders(borders, 0.0005f * k, mesh.positions, mesh.indices, mesh.materials);
   compute_skin_weights(avatar.skeleton, body, options.weights, mesh);
-  close_jaw(avatar.skeleton, mesh);
+  if (head) add_jaw_weights(avatar.skeleton, *head, mesh);
+  // Close the mouth: the jaw's weights undo the hinge warp the surface was made with, so the
+  // closed mesh lies on the closed head's field, whose gradient gives the normals; then the lips
+  // press together a little more.
+  turn_jaw(avatar.skeleton, -proportions::kBindJawOpenDegrees, mesh);
+  mesh.normals = surface_normals(build_avatar_volume(avatar.skeleton, params, 0.0f), mesh);
+  turn_jaw(avatar.skeleton, -proportions::kLipPressDegrees, mesh);
   unfold(mesh);
   append_mesh(mesh, build_face_parts(avatar.skeleton, k));
-  mesh.morphs = build_face_morphs(avatar.skeleton, mesh, k);
+  mesh.material_colors = material_colors(params.colors);
+  mesh.morphs = build_face_morphs(avatar.skeleton, mesh,
+                                  head ? head->landmarks() : face_landmarks(params, joints[static_cast<std::size_t>(avatar.skeleton.find("temporomandibular"))]));
   compute_morph_normal_deltas(mesh);
   return avatar;
 }

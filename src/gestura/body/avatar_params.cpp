@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "gestura/core/error.hpp"
 
@@ -24,6 +25,23 @@ Sex parse_sex(std::string_view text) {
   if (lower == "male" || lower == "m") return Sex::Male;
   if (lower == "neutral" || lower == "n") return Sex::Neutral;
   throw Error("avatar sex '" + std::string(text) + "' is not one of female, male, neutral");
+}
+
+std::string_view to_string(HairStyle style) {
+  switch (style) {
+    case HairStyle::Buzz: return "buzz";
+    case HairStyle::Curly: return "curly";
+    case HairStyle::Bun: return "bun";
+    case HairStyle::Bob: return "bob";
+    case HairStyle::Short: break;
+  }
+  return "short";
+}
+
+HairStyle parse_hair_style(std::string_view text) {
+  for (HairStyle s : {HairStyle::Short, HairStyle::Buzz, HairStyle::Curly, HairStyle::Bun, HairStyle::Bob})
+    if (to_string(s) == text) return s;
+  throw Error("hair style '" + std::string(text) + "' is not one of short, buzz, curly, bun, bob");
 }
 
 static void check_range(std::string_view name, float value, float lo, float hi, std::string_view unit) {
@@ -50,8 +68,19 @@ void AvatarParams::validate() const {
   check_range("hand_size", hand_size, 0.7f, 1.4f, "");
   check_range("finger_length", finger_length, 0.7f, 1.4f, "");
   check_range("finger_thickness", finger_thickness, 0.6f, 1.5f, "");
+  check_range("sleeve", sleeve, 0.5f, 1.0f, "");
+  check_range("hem", hem, 0.45f, 0.7f, "");
   if (sex != Sex::Neutral && sex != Sex::Female && sex != Sex::Male)
     throw Error("avatar parameter sex has an invalid value");
+  if (static_cast<int>(hair) < 0 || static_cast<int>(hair) > static_cast<int>(HairStyle::Bob))
+    throw Error("avatar parameter hair has an invalid value");
+  const std::pair<const char*, vec3> colours[] = {{"skin", colors.skin}, {"hair", colors.hair}, {"iris", colors.iris},
+                                                   {"cloth", colors.cloth},
+                                                   {"trousers", colors.trousers}};
+  for (const auto& [name, c] : colours)
+    for (int i = 0; i < 3; ++i)
+      if (!(c[i] >= 0.0f && c[i] <= 1.0f))
+        throw Error(std::string("avatar colour ") + name + " has a component outside 0 .. 1");
 }
 
 }  // namespace gestura

@@ -22,7 +22,7 @@ inline float thigh_factor(Sex sex) { return by_sex(sex, 1.04f, 1.0f, 0.98f); }
 inline float hand_flesh_margin(const AvatarParams& p) { return 0.020f * p.hand_size * p.finger_thickness + 0.006f; }
 inline float sleeve_margin(const AvatarParams& p) { return (kWristSleeveRadius + 0.4f * kForearmBlend) * p.build + 0.006f; }
 // How far the hand's joints reach towards the body (the thumb, on the palm side), per hand_size.
-inline constexpr float kThumbPalmReach = 0.034f;
+inline constexpr float kThumbPalmReach = 0.050f;
 
 // The face at 1.70 m (model space, metres), shared by the volume (sockets, lips, oral cavity), the
 // rigid face parts (eyeballs, teeth, tongue) and the facial morphs.
@@ -30,12 +30,12 @@ inline constexpr float kEyeballRadius = 0.0130f;
 inline constexpr float kLidThickness = 0.0028f;  // the lid skin ball over the eyeball is this much larger
 // The almond of the eye opening: an ellipsoid (relative to the eyeball centre) carved out of the lid
 // ball; where it reaches below the eyeball's surface, the eyeball shows.
-inline constexpr float kEyeOpeningCentre[3] = {0.0f, 0.0010f, 0.0060f};
-inline constexpr float kEyeOpeningRadii[3] = {0.0145f, 0.0060f, 0.0120f};
+inline constexpr float kEyeOpeningCentre[3] = {0.0f, -0.0005f, 0.0060f};
+inline constexpr float kEyeOpeningRadii[3] = {0.0145f, 0.0052f, 0.0120f};
 inline constexpr float kMouthLineY = 1.5255f;  // where the lips meet
 // The jaw is open by this much while the surface is polygonised, so the lips come out as two
 // separate sheets with the oral cavity behind them; the rest mesh then closes it by skinning.
-inline constexpr float kBindJawOpenDegrees = 9.0f;
+inline constexpr float kBindJawOpenDegrees = 6.5f;
 // … and closes it by this much more, so the lips press into each other and no slit shows at rest.
 inline constexpr float kLipPressDegrees = 1.5f;
 
@@ -48,11 +48,11 @@ struct DentalArch {
   float thickness;  // labial to lingual
 };
 // The upper incisors close just in front of and over the lower ones (overjet, overbite).
-inline constexpr DentalArch kUpperTeeth{0.0855f, 0.0665f, 0.0200f, 1.5238f, 1.5380f, 0.0048f};
-inline constexpr DentalArch kLowerTeeth{0.0808f, 0.0640f, 0.0180f, 1.5262f, 1.5125f, 0.0044f};
+inline constexpr DentalArch kUpperTeeth{0.0755f, 0.0565f, 0.0200f, 1.5238f, 1.5380f, 0.0048f};
+inline constexpr DentalArch kLowerTeeth{0.0710f, 0.0540f, 0.0180f, 1.5262f, 1.5125f, 0.0044f};
 
 // The tongue at rest: an ellipsoid on the floor of the mouth, its tip behind the lower incisors.
-inline constexpr float kTongueCentre[3] = {0.0f, 1.5158f, 0.0575f};
-inline constexpr float kTongueRadii[3] = {0.0160f, 0.0050f, 0.0205f};
+inline constexpr float kTongueCentre[3] = {0.0f, 1.5195f, 0.0490f};
+inline constexpr float kTongueRadii[3] = {0.0155f, 0.0050f, 0.0170f};
 
 }  // namespace gestura::proportions

@@ -1,6 +1,7 @@
 #include "gestura/body/avatar_skeleton.hpp"
 
 #include "gestura/body/avatar_proportions.hpp"
+#include "gestura/body/trunk_sculpt.hpp"
 
 #include <algorithm>
 #include <string>
@@ -83,20 +84,24 @@ void add_arm(Builder& b, int vt1, const SideDims& s) {
     return wrist_pos + (down * d + fwd * f + dorsal * o) * s.hand;
   };
 
-  // Thumb: carpometacarpal joint on the palm side near the wrist, pointing down, forward and a
-  // little towards the palm; the last two phalanges curve back towards "down".
+  // The hand in shares of its length L (wrist to the middle fingertip, s.hand): knuckles (the
+  // metacarpophalangeal joints) on an arch, the index's and little finger's further back; their
+  // spacing from the hand's breadth at the metacarpals (ANSUR: 0.45 L); phalanx lengths after
+  // Buryanov & Kotiuk (2010), the last with the fingertip's pad (docs/avatar.md).
+  // Thumb: carpometacarpal joint on the palm side near the wrist, its metacarpal pointing down,
+  // forward and towards the palm, the phalanges curving back towards "down" beside the index.
   {
-    const vec3 cmc = hand_point(0.028f, 0.020f, -0.010f);
-    const vec3 d1 = glm::normalize(down * 0.70f + fwd * 0.62f - dorsal * 0.35f);
-    const vec3 d2 = glm::normalize(down * 0.85f + fwd * 0.45f - dorsal * 0.30f);
-    const vec3 d3 = glm::normalize(down * 0.92f + fwd * 0.32f - dorsal * 0.25f);
+    const vec3 cmc = hand_point(0.135f, 0.165f, -0.085f);
+    const vec3 d1 = glm::normalize(down * 0.80f + fwd * 0.34f - dorsal * 0.42f);
+    const vec3 d2 = glm::normalize(down * 0.88f + fwd * 0.20f - dorsal * 0.36f);
+    const vec3 d3 = glm::normalize(down * 0.93f + fwd * 0.12f - dorsal * 0.26f);
     const int t1 = b.add(p + "thumb1", wrist, cmc,
                          limits(dofs(RotationOrder::ZXY, kX | kY | kZ, {-20, -45, -60}, {50, 15, 15})));
-    const vec3 mcp = cmc + d1 * (0.046f * s.hand * s.phalanx);
+    const vec3 mcp = cmc + d1 * (0.250f * s.hand * s.phalanx);
     const int t2 = b.add(p + "thumb2", t1, mcp, limits(dofs(RotationOrder::XZY, kX | kZ, {-10, 0, -10}, {60, 0, 10})));
-    const vec3 ip = mcp + d2 * (0.034f * s.hand * s.phalanx);
+    const vec3 ip = mcp + d2 * (0.168f * s.hand * s.phalanx);
     const int t3 = b.add(p + "thumb3", t2, ip, limits(dofs(RotationOrder::XYZ, kX, {-15, 0, 0}, {80, 0, 0})));
-    b.add(p + "thumb_tip", t3, ip + d3 * (0.029f * s.hand * s.phalanx));
+    b.add(p + "thumb_tip", t3, ip + d3 * (0.140f * s.hand * s.phalanx));
   }
 
   struct Finger {
@@ -106,10 +111,10 @@ void add_arm(Builder& b, int vt1, const SideDims& s) {
     float cmc_down, cmc_fwd, cup_deg;  // cup_deg = 0: no metacarpal joint
   };
   static constexpr Finger fingers[4] = {
-      {"index", 0.094f, 0.024f, 6.0f, {0.043f, 0.025f, 0.022f}, 0, 0, 0},
-      {"middle", 0.098f, 0.006f, 1.0f, {0.047f, 0.029f, 0.024f}, 0, 0, 0},
-      {"ring", 0.093f, -0.012f, -4.0f, {0.044f, 0.028f, 0.023f}, 0.026f, -0.006f, 15.0f},
-      {"pinky", 0.084f, -0.028f, -10.0f, {0.034f, 0.021f, 0.020f}, 0.024f, -0.014f, 25.0f},
+      {"index", 0.452f, 0.168f, 5.0f, {0.217f, 0.122f, 0.108f}, 0, 0, 0},
+      {"middle", 0.468f, 0.056f, 1.0f, {0.242f, 0.143f, 0.116f}, 0, 0, 0},
+      {"ring", 0.455f, -0.057f, -4.0f, {0.225f, 0.140f, 0.115f}, 0.140f, -0.040f, 15.0f},
+      {"pinky", 0.415f, -0.165f, -9.0f, {0.178f, 0.099f, 0.106f}, 0.130f, -0.090f, 25.0f},
   };
   for (const Finger& f : fingers) {
     const std::string n = p + f.name;
@@ -135,11 +140,12 @@ void add_leg(Builder& b, int pelvis, const SideDims& s) {
   auto limits = [&](JointDofs d) { return s.side > 0 ? d : mirrored(d); };
   auto at = [&](float x, float y, float z) { return vec3(s.side * x, y * s.scale, z * s.scale); };
   const float hx = s.hip_x;
-  const int hip = b.add(p + "hip", pelvis, at(hx, 0.890f, 0.0f),
+  // Hip, knee and ankle at 0.530, 0.285 and 0.039 of the stature (Drillis & Contini).
+  const int hip = b.add(p + "hip", pelvis, at(hx, 0.901f, 0.0f),
                         limits(dofs(RotationOrder::ZXY, kX | kY | kZ, {-125, -40, -30}, {30, 45, 45})));
-  const int knee = b.add(p + "knee", hip, at(hx * 1.02f, 0.480f, 0.008f),
+  const int knee = b.add(p + "knee", hip, at(hx * 1.02f, 0.4845f, 0.008f),
                          limits(dofs(RotationOrder::XYZ, kX | kY, {0, -10, 0}, {140, 10, 0})));
-  const int ankle = b.add(p + "ankle", knee, at(hx, 0.078f, -0.020f),
+  const int ankle = b.add(p + "ankle", knee, at(hx, 0.070f, -0.020f),
                           limits(dofs(RotationOrder::XYZ, kX, {-20, 0, 0}, {50, 0, 0})));
   const int subtalar = b.add(p + "subtalar", ankle, at(hx, 0.055f, -0.030f),
                              limits(dofs(RotationOrder::XYZ, kZ, {0, 0, -35}, {0, 0, 15})));
@@ -155,11 +161,17 @@ void add_leg(Builder& b, int pelvis, const SideDims& s) {
 float a_pose_angle(const AvatarParams& p, float shoulder_x) {
   using namespace proportions;
   const float hip_x = 0.086f * (0.8f + 0.2f * p.build);
-  const float hips = std::max(kPelvisHalfWidth * hip_factor(p.sex), hip_x + kThighRadius * thigh_factor(p.sex)) * p.build;
+  // The trunk's widest below the waist (its sections at 1.70 m) or the thighs.
+  AvatarParams at_170 = p;
+  at_170.height = 1.70f;
+  float trunk = 0.0f;
+  for (const TrunkSection& s : trunk_sections(at_170))
+    if (s.y < 0.95f) trunk = std::max(trunk, s.half_breadth);
+  const float hips = std::max(trunk, (hip_x + kThighRadius * thigh_factor(p.sex)) * p.build);
   // Blend bulge of the thighs, lattice snapping (one coarse cell) and a centimetre of air.
   const float clearance = 0.0125f * p.build + 0.016f + 0.010f;
   const float wrist_x = hips + clearance + kThumbPalmReach * p.hand_size + hand_flesh_margin(p);
-  const float arm = 0.55f * p.arm_length;
+  const float arm = (0.186f + 0.146f) * 1.70f * p.arm_length;
   const float s = std::clamp((wrist_x - shoulder_x) / arm, std::sin(deg(10.0f)), std::sin(deg(30.0f)));
   return std::asin(s);
 }
@@ -169,9 +181,12 @@ float a_pose_angle(const AvatarParams& p, float shoulder_x) {
 Skeleton build_avatar_skeleton(const AvatarParams& params) {
   params.validate();
   const float k = params.height / 1.70f;
-  const float shoulder = params.sex == Sex::Male ? 0.182f : params.sex == Sex::Female ? 0.158f : 0.170f;
+  // Segment lengths as shares of the stature after Drillis & Contini (1966): upper arm 0.186 H,
+  // forearm 0.146 H, hand 0.108 H; shoulder joints from the biacromial breadth (ANSUR: 0.232 H in
+  // men, 0.225 H in women) less the two or so centimetres from the acromion in to the joint's centre
+  // (docs/avatar.md). Relative to the stature the hand is as long in women as in men.
+  const float shoulder = params.sex == Sex::Male ? 0.188f : params.sex == Sex::Female ? 0.167f : 0.178f;
   const float hip = params.sex == Sex::Male ? 0.082f : params.sex == Sex::Female ? 0.092f : 0.086f;
-  const float hand = params.sex == Sex::Male ? 1.04f : params.sex == Sex::Female ? 0.93f : 1.0f;
 
   Builder b;
   const auto spine = [](RotationOrder o, vec3 lo, vec3 hi) { return dofs(o, kX | kY | kZ, lo, hi); };
@@ -191,8 +206,8 @@ Skeleton build_avatar_skeleton(const AvatarParams& params) {
   b.add("temporomandibular", skull, vec3(0.0f, 1.545f, 0.030f) * k,
         dofs(RotationOrder::XYZ, kX | kY, {-2, -8, 0}, {28, 8, 0}));
   const JointDofs eye = dofs(RotationOrder::YXZ, kX | kY, {-25, -35, 0}, {30, 35, 0});
-  b.add("l_eyeball_joint", skull, vec3(0.032f, 1.598f, 0.075f) * k, eye);
-  b.add("r_eyeball_joint", skull, vec3(-0.032f, 1.598f, 0.075f) * k, mirrored(eye));
+  b.add("l_eyeball_joint", skull, vec3(0.031f, 1.591f, 0.070f) * k, eye);
+  b.add("r_eyeball_joint", skull, vec3(-0.031f, 1.591f, 0.070f) * k, mirrored(eye));
   b.add("skull_tip", skull, vec3(0.0f, 1.700f, 0.000f) * k);
 
   for (float side : {1.0f, -1.0f}) {
@@ -200,9 +215,9 @@ Skeleton build_avatar_skeleton(const AvatarParams& params) {
                         k,
                         shoulder * params.shoulder_width * k * (0.85f + 0.15f * params.build),
                         hip * k * (0.8f + 0.2f * params.build),
-                        0.300f * k * params.arm_length,
-                        0.250f * k * params.arm_length,
-                        k * hand * params.hand_size,
+                        0.186f * 1.70f * k * params.arm_length,
+                        0.146f * 1.70f * k * params.arm_length,
+                        0.108f * 1.70f * k * params.hand_size,  // hand length (Drillis & Contini: 0.108 H)
                         params.finger_length,
                         a_pose_angle(params, shoulder * params.shoulder_width * (0.85f + 0.15f * params.build))};
     add_arm(b, vt1, dims);

@@ -19,6 +19,22 @@ namespace gestura {
 // with proportions::kBindJawOpenDegrees).
 ImplicitBody build_avatar_volume(const Skeleton& skeleton, const AvatarParams& params, float jaw_open_degrees = 0.0f);
 
+// The nails of the ten digits of an avatar skeleton (build_avatar_skeleton(params)): field() is
+// negative on each nail plate (on the back of the last phalanx, from a little over a quarter of
+// its length to the tip, two thirds of the digit wide), positive elsewhere; roughly metres.
+class NailPlates {
+ public:
+  NailPlates(const Skeleton& skeleton, const AvatarParams& params);
+  float field(const vec3& p) const;
+
+ private:
+  struct Plate {
+    vec3 joint, tip, dir, across, back;
+    float radius;
+  };
+  std::vector<Plate> plates_;
+};
+
 // Where the polygoniser should spend its detail: both hands (fingers need ~3 mm cells; the
 // forearm enters each box from above) and the head (lids, lips, nostrils; the neck enters from
 // below).

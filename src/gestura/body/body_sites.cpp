@@ -1,6 +1,8 @@
 #include "gestura/body/body_sites.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 namespace gestura {
@@ -89,12 +91,13 @@ void add_site(const Anchors& anchors, const Mesh& mesh, const SiteRay& ray, std:
 }
 
 // The chin, the surface under it and the throat, from the face's midline profile: horizontal
-// rays from the front, kProfileStep apart, down from the lower lip. Where the profile steps back
-// by more than kChinEdge the jaw's underside begins; the chin's front is where the profile, followed
-// up from that edge, stops coming forward (at most kChinHeight up), under_chin is met by a ray straight up from in front of the throat
-// just below it, and the neck is the throat halfway from there down to the neck's base (vc7).
-// Fixed fractions of the head's height missed the chin's front on heads of other proportions
-// (a slanted ray slid under it onto the jaw line).
+// rays from the front, kProfileStep apart, down from the lower lip. Where the profile has fallen
+// back more than kChinEdge behind the most forward point above it the jaw's underside begins
+// (sharply or over a rounded chin); the chin's front is where the profile, followed up from that
+// edge, stops coming forward (at most kChinHeight up), under_chin is met by a ray straight up from
+// halfway between the chin's front and the throat just below it, and the neck is the throat
+// halfway from there down to the neck's base (vc7). Fixed fractions of the head's height missed
+// the chin's front on heads of other proportions (a slanted ray slid under it onto the jaw line).
 void add_chin_and_neck(const Anchors& a, const Mesh& mesh, int skull, float lower_lip_y, std::vector<BodySite>& out) {
   const float x = a.at(skull).x, back_z = a.at(skull).z;
   struct ProfilePoint {
@@ -105,29 +108,92 @@ void add_chin_and_neck(const Anchors& a, const Mesh& mesh, int skull, float lowe
     const auto hit = cast_ray(mesh, vec3(x, y, back_z + kOutside), vec3(0, 0, -1));
     if (hit) profile.push_back({y, hit->point.z});
   }
+  // A sharp underside steps back within one ray; a rounded one falls back over several.
   std::size_t edge = 0;
   for (std::size_t k = 1; k < profile.size() && edge == 0; ++k)
     if (profile[k].z < profile[k - 1].z - kChinEdge) edge = k;
+  const bool sharp = edge != 0;
+  float ahead = profile.empty() ? 0.0f : profile[0].z;
+  for (std::size_t k = 1; k < profile.size() && edge == 0; ++k) {
+    if (profile[k].z < ahead - kChinEdge) edge = k;
+    ahead = std::max(ahead, profile[k].z);
+  }
   if (edge == 0) return;  // no chin to be found on this mesh: no chin sites rather than invented ones
-  // Up from the edge while the profile still comes forward: the chin's front, below the hollow
-  // under the lower lip (or kChinHeight up, on a face without one).
+  // The chin's front: below the hollow under the lower lip, the most forward point above the edge;
+  // on a face without that hollow, where the profile followed up from the edge stops coming
+  // forward (at most kChinHeight up).
+  std::size_t hollow = 0;
+  while (hollow + 1 < edge && profile[hollow + 1].z <= profile[hollow].z + 0.0003f) ++hollow;
   std::size_t front = edge - 1;
-  while (front > 0 && profile[front - 1].z >= profile[front].z && profile[front - 1].y <= profile[edge - 1].y + kChinHeight)
-    --front;
+  if (hollow + 1 < edge && profile[hollow].z + 0.0005f < profile[edge - 1].z) {
+    for (std::size_t k = hollow; k < edge; ++k)
+      if (profile[k].z > profile[front].z) front = k;
+  } else {
+    while (front > 0 && profile[front - 1].z >= profile[front].z && profile[front - 1].y <= profile[edge - 1].y + kChinHeight)
+      --front;
+  }
   const ProfilePoint chin = profile[front];
   add_site(a, mesh, {"chin", skull, vec3(x, chin.y, back_z), vec3(0, 0, 1), true}, out);
   // Straight up from in front of the throat, between the chin's front and the neck below it.
   const float ray_y = profile[edge].y - kUnderChinRay;
-  float throat_z = profile[edge].z;
+  // (Behind a sharp edge the underside is already far back; below a rounded chin the edge is still
+  // on the chin's front, and the throat is found from the ray's height alone.)
+  float throat_z = sharp ? profile[edge].z : -1.0f;
   for (const ProfilePoint& p : profile)
     if (std::abs(p.y - ray_y) < kProfileStep) throat_z = std::max(throat_z, p.z);
-  const float ray_z = std::max(0.5f * (chin.z + profile[edge].z), throat_z + 0.005f);
+  if (throat_z < -0.5f) throat_z = profile[edge].z;
+  const float ray_z = sharp ? std::max(0.5f * (chin.z + profile[edge].z), throat_z + 0.005f)
+                            : std::max(0.5f * (chin.z + throat_z), throat_z + 0.005f);
   if (ray_z < chin.z) add_site(a, mesh, {"under_chin", skull, vec3(x, ray_y, ray_z), vec3(0, 1, 0)}, out);
   const int vc7 = a.find("vc7"), vc4 = a.find("vc4");
   if (vc7 >= 0) {
     const float neck_y = 0.5f * (profile[edge].y + a.at(vc7).y);
     add_site(a, mesh, {"neck", vc4 >= 0 ? vc4 : vc7, vec3(x, neck_y, a.at(vc7).z), vec3(0, 0, 1)}, out);
   }
+}
+
+// Heights of the nose tip and the lips on the face's midline profile: horizontal rays from the
+// front, kProfileStep apart, from just below the eyes down past the mouth. The nose tip is the
+// profile's most forward point; the mouth line is the dip below it that is deepest for its
+// distance from where faces have their mouth (`expected`, from the head's proportions), since
+// lips that stand a little apart let a ray far into the mouth while a closed mouth is a shallow
+// groove no deeper than the one under the lower lip; the lips are the most forward points just
+// above and below it. Fractions of the head's height alone put these wrongly on any face whose
+// proportions differ from the one they were measured on; nullopt when the profile shows no dip
+// (a face without lips).
+struct MouthProfile {
+  float nose, upper_lip, mouth, lower_lip;
+};
+std::optional<MouthProfile> mouth_profile(const Mesh& mesh, float x, float back_z, float top, float bottom,
+                                          float expected, float scale) {
+  std::vector<float> ys, zs;
+  for (float y = top; y > bottom; y -= kProfileStep)
+    if (const auto hit = cast_ray(mesh, vec3(x, y, back_z + kOutside), vec3(0, 0, -1))) ys.push_back(y), zs.push_back(hit->point.z);
+  if (zs.size() < 8) return std::nullopt;
+  const std::size_t n = zs.size();
+  std::size_t tip = 0;
+  for (std::size_t i = 1; i < n / 2; ++i)
+    if (zs[i] > zs[tip]) tip = i;
+  const std::size_t lip_rays = static_cast<std::size_t>(0.12f * scale / kProfileStep);  // a lip's height and more
+  std::size_t mouth = 0;
+  float best = 0.0f;
+  for (std::size_t m = tip + 2; m + 1 < n; ++m) {
+    if (!(zs[m] <= zs[m - 1] && zs[m] <= zs[m + 1])) continue;
+    float above = zs[m], below = zs[m];
+    for (std::size_t i = m; i > tip && i + lip_rays > m; --i) above = std::max(above, zs[i]);
+    for (std::size_t i = m; i < n && i < m + lip_rays; ++i) below = std::max(below, zs[i]);
+    const float depth = std::min(above, below) - zs[m];
+    if (depth < 0.0008f) continue;
+    const float score = depth / (1.0f + std::abs(ys[m] - expected) / (0.1f * scale));
+    if (score > best) best = score, mouth = m;
+  }
+  if (mouth == 0) return std::nullopt;
+  std::size_t upper = mouth, lower = mouth;
+  for (std::size_t i = mouth; i > tip && i + lip_rays > mouth; --i)
+    if (zs[i] > zs[upper]) upper = i;
+  for (std::size_t i = mouth; i < n && i < mouth + lip_rays; ++i)
+    if (zs[i] > zs[lower]) lower = i;
+  return MouthProfile{ys[tip], ys[upper], ys[mouth], ys[lower]};
 }
 
 }  // namespace
@@ -152,10 +218,16 @@ std::vector<BodySite> find_body_sites(const Skeleton& skeleton, const Mesh& mesh
     rays.push_back({"head_top", skull, level(0.0f), up});
     rays.push_back({"forehead", skull, level(0.5f), fwd, true});
     rays.push_back({"eyebrows", skull, level(0.22f), fwd, true});
-    rays.push_back({"nose", skull, level(-0.38f), fwd, true});
-    rays.push_back({"upper_lip", skull, level(-0.62f), fwd, true});
-    rays.push_back({"lips", skull, level(-0.70f), fwd, true});
-    rays.push_back({"lower_lip", skull, level(-0.78f), fwd, true});
+    // Nose and lips where the midline profile has them; fractions of the head's height otherwise.
+    const auto profile = mouth_profile(mesh, axis.x, axis.z, eyes.y - 0.15f * e, eyes.y - 1.0f * e, eyes.y - 0.62f * e, e);
+    auto at_height = [&](float y) { return vec3(axis.x, y, axis.z); };
+    rays.push_back({"nose", skull, profile ? at_height(profile->nose) : level(-0.38f), fwd, true});
+    rays.push_back({"upper_lip", skull, profile ? at_height(profile->upper_lip) : level(-0.62f), fwd, true});
+    // The lips' site halfway between the two lips: where they meet, or on their edge when they
+    // stand apart (a ray at the mouth line itself would then go into the mouth).
+    rays.push_back({"lips", skull, profile ? at_height(0.5f * (profile->upper_lip + profile->lower_lip)) : level(-0.70f),
+                    fwd, true});
+    rays.push_back({"lower_lip", skull, profile ? at_height(profile->lower_lip) : level(-0.78f), fwd, true});
     for (int side = 0; side < 2; ++side) {
       const float x = side == 0 ? 1.0f : -1.0f;
       const std::string p = side == 0 ? "l_" : "r_";

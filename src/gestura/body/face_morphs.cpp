@@ -51,6 +51,7 @@ struct Face {
   float k;
   vec3 jaw;          // temporomandibular joint
   vec3 eye[2];       // [0] left (+X), [1] right
+  FaceLandmarks marks;  // mouth, lips, brows and cheeks of the sculpted head
   // The eye opening as seen from the eye's centre: for a lateral offset dx, the elevation angles
   // (radians about the eye's x axis, up > 0) of the upper and lower lid margins on the eyeball;
   // tabulated over |dx| < opening_half_width, both 0 outside.
@@ -59,7 +60,10 @@ struct Face {
   std::array<float, kOpeningSamples> upper{}, lower{};
 
   vec3 v(float x, float y, float z) const { return vec3(x, y, z) * k; }
-  float mouth_y() const { return proportions::kMouthLineY * k; }
+  float mouth_y() const { return marks.mouth_y; }
+  // A point relative to the mouth: x across, y up from the mouth line, z from the lips' front.
+  vec3 mouth(float x, float y, float z) const { return vec3(x * k, marks.mouth_y + y * k, marks.lip_front + z * k); }
+  float corner_x() const { return 0.95f * marks.mouth_half_width; }
   vec3 tongue_centre() const {
     return v(proportions::kTongueCentre[0], proportions::kTongueCentre[1], proportions::kTongueCentre[2]);
   }
@@ -123,13 +127,14 @@ vec3 mouth_wide(const Face& f, const vec3& p, float amount) {
   vec3 d(0.0f);
   for (float s : {1.0f, -1.0f})
     d += vec3(s * 0.006f * f.k * amount, 0, -0.002f * f.k * amount) *
-         falloff(p, f.v(s * 0.025f, 1.527f, 0.091f), f.v(0.026f, 0.020f, 0.025f));
+         falloff(p, vec3(s * f.corner_x(), f.mouth_y() + 0.0015f * f.k, f.marks.lip_front - 0.010f * f.k),
+                 f.v(0.026f, 0.020f, 0.025f));
   return d;
 }
 
 // Lips gathered towards the mouth centre and pushed forward.
 vec3 mouth_round(const Face& f, const vec3& p, float amount) {
-  const vec3 c = f.v(0, 1.5255f, 0.100f);
+  const vec3 c = f.mouth(0.0f, 0.0f, -0.003f);
   const float w = falloff(p, c, f.v(0.040f, 0.028f, 0.035f));
   if (w <= 0.0f) return vec3(0.0f);
   return vec3(-(p.x - c.x) * 0.45f, -(p.y - c.y) * 0.2f, 0.008f * f.k) * (w * amount);
@@ -137,7 +142,7 @@ vec3 mouth_round(const Face& f, const vec3& p, float amount) {
 
 // Lips pressed together: the upper lip down, the lower up, both slightly in.
 vec3 mouth_press(const Face& f, const vec3& p, float amount) {
-  const vec3 up = f.v(0, 1.533f, 0.100f), lo = f.v(0, 1.518f, 0.099f);
+  const vec3 up = f.mouth(0.0f, 0.0075f, -0.003f), lo = f.mouth(0.0f, -0.0075f, -0.004f);
   const vec3 r = f.v(0.030f, 0.010f, 0.020f);
   return (vec3(0, -0.0025f * f.k, -0.0015f * f.k) * falloff(p, up, r) +
           vec3(0, 0.0030f * f.k, -0.0010f * f.k) * falloff(p, lo, r)) *
@@ -146,7 +151,16 @@ vec3 mouth_press(const Face& f, const vec3& p, float amount) {
 
 // Lower lip tucked up and back under the upper teeth (F, V).
 vec3 lower_lip_tuck(const Face& f, const vec3& p, float amount) {
-  return vec3(0, 0.004f * f.k, -0.005f * f.k) * falloff(p, f.v(0, 1.517f, 0.099f), f.v(0.028f, 0.010f, 0.020f)) * amount;
+  return vec3(0, 0.004f * f.k, -0.005f * f.k) * falloff(p, f.mouth(0.0f, -0.0085f, -0.004f), f.v(0.028f, 0.010f, 0.020f)) * amount;
+}
+
+// The lips part: the upper lip lifts off the teeth, the lower lip drops a little (the open vowels:
+// the jaw's share of the opening is the jaw bone's).
+vec3 lips_part(const Face& f, const vec3& p, float amount) {
+  const vec3 r = f.v(0.028f, 0.009f, 0.022f);
+  return (vec3(0, 0.0022f * f.k, 0.0006f * f.k) * falloff(p, f.mouth(0.0f, 0.0060f, -0.004f), r) +
+          vec3(0, -0.0016f * f.k, 0.0004f * f.k) * falloff(p, f.mouth(0.0f, -0.0065f, -0.005f), r)) *
+         amount;
 }
 
 // The tongue's shift (metres at 1.70 m, in the closed jaw's frame): its front moves by `move`, its
@@ -158,12 +172,14 @@ vec3 tongue_shift(const Face& f, const vec3& p, vec3 move) {
 
 // Corner of the mouth up/out (smile) or down (frown) on one side, with the cheek following.
 vec3 mouth_corner(const Face& f, const vec3& p, float side, vec3 move, float cheek) {
-  return move * f.k * falloff(p, f.v(side * 0.025f, 1.527f, 0.091f), f.v(0.022f, 0.018f, 0.022f)) +
-         vec3(0, 0.003f, 0.0015f) * (f.k * cheek) * falloff(p, f.v(side * 0.040f, 1.562f, 0.082f), f.v(0.026f, 0.022f, 0.025f));
+  const vec3 corner(side * f.corner_x(), f.mouth_y() + 0.0015f * f.k, f.marks.lip_front - 0.012f * f.k);
+  const vec3 apex(side * f.marks.cheek.x, f.marks.cheek.y, f.marks.cheek.z);
+  return move * f.k * falloff(p, corner, f.v(0.022f, 0.018f, 0.022f)) +
+         vec3(0, 0.003f, 0.0015f) * (f.k * cheek) * falloff(p, apex, f.v(0.026f, 0.022f, 0.025f));
 }
 
 vec3 brow(const Face& f, const vec3& p, float side, float x, vec3 move) {
-  return move * f.k * falloff(p, f.v(side * x, 1.630f, 0.086f), f.v(0.022f, 0.020f, 0.030f));
+  return move * f.k * falloff(p, vec3(side * x * f.k, f.marks.brow_y, f.marks.brow_z), f.v(0.022f, 0.020f, 0.030f));
 }
 
 // The lids turn about the eye's centre, so they slide over the eyeball instead of squashing it.
@@ -178,12 +194,12 @@ vec3 lids(const Face& f, const vec3& p, int eye, float upper, float lower) {
   if (gap <= 0.0f) return vec3(0.0f);
   const float elevation = std::atan2(q.y, q.z);
   const float lid_surface = (proportions::kEyeballRadius + proportions::kLidThickness) * f.k;
-  const float near = 1.0f - smoothstep(lid_surface + 0.002f * f.k, lid_surface + 0.009f * f.k, glm::length(q));
+  const float near = 1.0f - smoothstep(lid_surface + 0.003f * f.k, lid_surface + 0.010f * f.k, glm::length(q));
   if (near <= 0.0f) return vec3(0.0f);
   const float middle = 0.5f * (up + low);
   const float is_upper = smoothstep(middle - deg(6.0f), middle + deg(6.0f), elevation);
   // Closing lids overlap a little, so a full blink leaves no slit.
-  const float overlap = deg(3.0f) * smoothstep(0.0f, deg(10.0f), gap);
+  const float overlap = deg(6.0f) * smoothstep(0.0f, deg(10.0f), gap);
   float angle = 0.0f;
   if (is_upper > 0.0f) {
     const float reach = 1.0f - smoothstep(up + deg(25.0f), up + deg(70.0f), elevation);
@@ -201,7 +217,7 @@ vec3 lids(const Face& f, const vec3& p, int eye, float upper, float lower) {
 vec3 cheek_puff(const Face& f, const vec3& p) {
   vec3 d(0.0f);
   for (float s : {1.0f, -1.0f})
-    d += vec3(s * 0.007f, -0.001f, 0.003f) * f.k * falloff(p, f.v(s * 0.042f, 1.545f, 0.070f), f.v(0.030f, 0.030f, 0.035f));
+    d += vec3(s * 0.007f, -0.001f, 0.003f) * f.k * falloff(p, f.mouth(s * 0.042f, 0.0195f, -0.021f), f.v(0.030f, 0.030f, 0.035f));
   return d;
 }
 
@@ -221,32 +237,32 @@ std::vector<MorphRecipe> recipes(const Face& f) {
   std::vector<MorphRecipe> r;
   // Visemes shape only the lips and the tongue: the jaw opening of each phoneme is the jaw bone's
   // (face/viseme_track.hpp adds it to jaw_open), so mouthing and expressions never open it twice.
-  auto viseme = [&](const char* name, float wide, float round, float press, float tuck, vec3 tongue_move) {
+  auto viseme = [&](const char* name, float wide, float round, float press, float tuck, float part, vec3 tongue_move) {
     r.push_back({name, [=, &f](const FacePoint& fp) {
                    if (fp.part == Part::Eyeball) return vec3(0.0f);
                    vec3 d = fp.part == Part::Tongue ? tongue_shift(f, fp.p, tongue_move) : vec3(0.0f);
                    if (fp.part == Part::Soft)
                      d += mouth_wide(f, fp.p, wide) + mouth_round(f, fp.p, round) + mouth_press(f, fp.p, press) +
-                          lower_lip_tuck(f, fp.p, tuck);
+                          lower_lip_tuck(f, fp.p, tuck) + lips_part(f, fp.p, part);
                    return d;
                  }});
   };
-  //       name  wide round press tuck  tongue front (m at 1.70 m)
-  viseme("sil", 0.0f, 0.0f, 0.3f, 0.0f, vec3(0.0f));
-  viseme("PP", 0.0f, 0.1f, 1.0f, 0.0f, vec3(0.0f));
-  viseme("FF", 0.2f, 0.0f, 0.0f, 1.0f, vec3(0.0f));
-  viseme("TH", 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.009f, 0.016f));
-  viseme("DD", 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.006f, 0.004f));
-  viseme("kk", 0.3f, 0.0f, 0.0f, 0.0f, vec3(0, 0.003f, -0.002f));
-  viseme("CH", 0.0f, 0.6f, 0.0f, 0.0f, vec3(0, 0.004f, 0.0f));
-  viseme("SS", 0.6f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.002f));
-  viseme("nn", 0.2f, 0.0f, 0.0f, 0.0f, vec3(0, 0.006f, 0.003f));
-  viseme("RR", 0.0f, 0.4f, 0.0f, 0.0f, vec3(0, 0.003f, -0.002f));
-  viseme("aa", 0.1f, 0.0f, 0.0f, 0.0f, vec3(0.0f));
-  viseme("E", 0.6f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.0f));
-  viseme("ih", 0.4f, 0.0f, 0.0f, 0.0f, vec3(0, 0.002f, 0.0f));
-  viseme("oh", 0.0f, 0.7f, 0.0f, 0.0f, vec3(0.0f));
-  viseme("ou", 0.0f, 1.0f, 0.0f, 0.0f, vec3(0.0f));
+  //       name  wide round press tuck  part  tongue front (m at 1.70 m)
+  viseme("sil", 0.0f, 0.0f, 0.3f, 0.0f, 0.0f, vec3(0.0f));
+  viseme("PP", 0.0f, 0.1f, 1.0f, 0.0f, 0.0f, vec3(0.0f));
+  viseme("FF", 0.2f, 0.0f, 0.0f, 1.0f, 0.3f, vec3(0.0f));
+  viseme("TH", 0.2f, 0.0f, 0.0f, 0.0f, 0.6f, vec3(0, 0.009f, 0.016f));
+  viseme("DD", 0.3f, 0.0f, 0.0f, 0.0f, 0.5f, vec3(0, 0.006f, 0.004f));
+  viseme("kk", 0.3f, 0.0f, 0.0f, 0.0f, 0.5f, vec3(0, 0.003f, -0.002f));
+  viseme("CH", 0.0f, 0.6f, 0.0f, 0.0f, 0.6f, vec3(0, 0.004f, 0.0f));
+  viseme("SS", 0.6f, 0.0f, 0.0f, 0.0f, 0.5f, vec3(0, 0.002f, 0.002f));
+  viseme("nn", 0.2f, 0.0f, 0.0f, 0.0f, 0.4f, vec3(0, 0.006f, 0.003f));
+  viseme("RR", 0.0f, 0.4f, 0.0f, 0.0f, 0.5f, vec3(0, 0.003f, -0.002f));
+  viseme("aa", 0.1f, 0.0f, 0.0f, 0.0f, 1.0f, vec3(0.0f));
+  viseme("E", 0.6f, 0.0f, 0.0f, 0.0f, 0.8f, vec3(0, 0.002f, 0.0f));
+  viseme("ih", 0.4f, 0.0f, 0.0f, 0.0f, 0.7f, vec3(0, 0.002f, 0.0f));
+  viseme("oh", 0.0f, 0.7f, 0.0f, 0.0f, 0.8f, vec3(0.0f));
+  viseme("ou", 0.0f, 1.0f, 0.0f, 0.0f, 0.5f, vec3(0.0f));
 
   const char* suffix[2] = {"_L", "_R"};
   for (int e = 0; e < 2; ++e) {
@@ -328,7 +344,8 @@ const std::vector<ExpressionEntry>& expression_table() {
 
 }  // namespace
 
-std::vector<MorphTarget> build_face_morphs(const Skeleton& skeleton, const Mesh& mesh, float scale) {
+std::vector<MorphTarget> build_face_morphs(const Skeleton& skeleton, const Mesh& mesh, const FaceLandmarks& marks) {
+  const float scale = marks.k;
   std::vector<mat4> model(skeleton.size());
   local_to_model(skeleton, rest_pose(skeleton), model);
   auto at = [&](const char* name) {
@@ -336,7 +353,7 @@ std::vector<MorphTarget> build_face_morphs(const Skeleton& skeleton, const Mesh&
     if (j < 0) throw Error(std::string("face morphs: skeleton has no joint '") + name + "'");
     return vec3(model[static_cast<std::size_t>(j)][3]);
   };
-  Face f{scale, at("temporomandibular"), {at("l_eyeball_joint"), at("r_eyeball_joint")}};
+  Face f{scale, at("temporomandibular"), {at("l_eyeball_joint"), at("r_eyeball_joint")}, marks};
   tabulate_eye_opening(f);
   const int jaw = skeleton.find("temporomandibular");
   if (mesh.materials.size() != mesh.vertex_count() || mesh.weights.size() != mesh.vertex_count())

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "gestura/body/head_sculpt.hpp"
 #include "gestura/body/mesh.hpp"
 #include "gestura/skeleton/skeleton.hpp"
 
@@ -30,9 +31,10 @@ inline constexpr std::array<std::string_view, 21> kExpressionMorphNames{
     "cheekPuff",     "mouthSmile_L",  "mouthSmile_R",  "mouthFrown_L",  "mouthFrown_R", "mouthPucker",
     "mouthPress",    "mouthOpen",     "tongueOut"};
 
-// All morphs above, visemes first. `scale` = avatar height / 1.70 m. Only vertices of the head move.
-// `mesh` needs its materials (they tell the rigid parts apart) and skin weights (the jaw's).
-std::vector<MorphTarget> build_face_morphs(const Skeleton& skeleton, const Mesh& mesh, float scale);
+// All morphs above, visemes first, placed by the head's landmarks (head_sculpt.hpp). Only vertices
+// of the head move. `mesh` needs its materials (they tell the rigid parts apart) and skin weights
+// (the jaw's).
+std::vector<MorphTarget> build_face_morphs(const Skeleton& skeleton, const Mesh& mesh, const FaceLandmarks& marks);
 
 // Fills every morph's normal_deltas: the change of the area-weighted vertex normal when the morph
 // is applied at full weight (computed on the tessellation, so rest and morphed normals compare).

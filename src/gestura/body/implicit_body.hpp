@@ -7,6 +7,7 @@
 // Every primitive carries the joint it rides on and the material of the surface it makes; the
 // skin-weight and material passes ask which primitives are near a surface point.
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -19,6 +20,22 @@ enum class PrimitiveShape : std::uint8_t {
   Ellipsoid,  // centre a, semi-axes `radii` in the frame `axes` (columns = local x, y, z)
   RoundBox,   // centre a, half extents `radii` (before rounding) in `axes`, corner radius radius_a
   HalfSpace,  // points with dot(p − a, axes[1]) < 0 are inside ("below the plane")
+  Sculpt,     // a shape written as code (`sculpt`), in the frame at a with axes `axes`
+};
+
+// A shape too rich for the simple primitives (a head from its profile and contours, a lofted
+// trunk): a signed, roughly metric distance in its own frame, and the box that holds it there.
+// Immutable and shared, so bodies holding it copy cheaply.
+class Sculpt {
+ public:
+  virtual ~Sculpt() = default;
+  virtual float distance(const vec3& local) const = 0;
+  virtual void bounds(vec3& lo, vec3& hi) const = 0;  // local frame
+  // The material of the surface near `local` (its own regions: lips on a face); by default the
+  // primitive's.
+  virtual int material(const vec3& local) const { (void)local; return -1; }
+  // Size of the shape where its influence on skin weights blends (cf. a capsule's radius).
+  virtual float size() const = 0;
 };
 
 enum class BlendOp : std::uint8_t { Union, Subtract, Intersect };
@@ -34,17 +51,20 @@ struct Primitive {
   std::int16_t joint = 0;       // bone the primitive rides on
   std::uint8_t material = 0;    // MaterialId of the surface it makes
   bool skinned = true;          // takes part in skin weights (false for carved cavities, planes)
+  std::shared_ptr<const Sculpt> sculpt;  // the shape of a Sculpt primitive
   vec3 lo{0.0f}, hi{0.0f};      // bounding box of the primitive itself; filled by finish()
 };
 
 // Signed distance (approximate for ellipsoids) from p to one primitive, ignoring its op.
 float primitive_distance(const Primitive& primitive, const vec3& p);
+// The material of a primitive's surface near p (a sculpt's own regions, else the primitive's).
+std::uint8_t primitive_material(const Primitive& primitive, const vec3& p);
 
 struct ImplicitBody {
   std::vector<Primitive> primitives;
   vec3 lo{0.0f}, hi{0.0f};  // bounds of the union primitives; filled by finish()
 
-  // Computes bounding boxes; call after the last primitive is added.
+  // Computes bounding boxes and the index below; call after the last primitive is added.
   void finish();
 
   // The field at p. `band` > 0 allows skipping primitives farther than band: the result is then
@@ -54,6 +74,23 @@ struct ImplicitBody {
 
   // Distances from p to every union primitive (others: +inf), for weights and materials.
   void distances(const vec3& p, std::span<float> out) const;
+
+  // Uniform grids over the bounds: for each cell, in order, the primitives that can change the
+  // field within `band` of it (the rest are too far to matter: a blend reaches only so far), so
+  // field() looks at a few instead of all of them. A coarse grid for the polygoniser's coarse
+  // lattice, a fine one for everything near the surface (fine lattices, gradients). Built by finish().
+  struct Index {
+    float band = 0.0f;
+    vec3 origin{0.0f};
+    float cell = 0.0f;
+    glm::ivec3 cells{0};
+    std::vector<std::uint32_t> start;  // per cell, into items; one extra at the end
+    std::vector<std::uint16_t> items;
+    void build(const ImplicitBody& body, float band, float cell);
+    // The primitives for p, or false when p lies outside the grid or band exceeds its own.
+    bool find(const vec3& p, float band, std::uint32_t& first, std::uint32_t& last) const;
+  };
+  Index coarse_index, fine_index;
 };
 
 }  // namespace gestura

@@ -14,9 +14,10 @@ namespace gestura {
 using JointIndices = glm::u16vec4;
 
 // Coarse surface regions: let renderers colour skin, clothing, hair, eyes, lips, teeth separately.
-// Mouth is the lining of the oral cavity (dark: it lies in the shadow of the lips).
-enum class MaterialId : std::uint8_t { Skin = 0, Cloth = 1, Hair = 2, EyeWhite = 3, Iris = 4, Lips = 5, Teeth = 6, Tongue = 7, Brow = 8, Pupil = 9, Mouth = 10 };
-inline constexpr int kMaterialCount = 11;
+// Cloth is the top (shirt), Trousers what is worn below its hem. Mouth is the lining of the oral
+// cavity (dark: it lies in the shadow of the lips); Nail the nail plates of fingers and thumbs.
+enum class MaterialId : std::uint8_t { Skin = 0, Cloth = 1, Hair = 2, EyeWhite = 3, Iris = 4, Lips = 5, Teeth = 6, Tongue = 7, Brow = 8, Pupil = 9, Mouth = 10, Nail = 11, Trousers = 12 };
+inline constexpr int kMaterialCount = 13;
 
 // A morph target (ukrainian-sign-language-3d-model.txt eq. 7: V' = V + Σ w·ΔV): sparse offsets.
 struct MorphTarget {
@@ -34,6 +35,9 @@ struct Mesh {
   std::vector<vec4> weights;
   std::vector<std::uint32_t> indices;   // triangles, counter-clockwise seen from outside
   std::vector<MorphTarget> morphs;
+  // The colour the mesh was made to be shown in, per MaterialId (sRGB, 0..1): kMaterialCount
+  // entries, or none (a renderer's or exporter's own defaults apply).
+  std::vector<vec3> material_colors;
 
   std::size_t vertex_count() const { return positions.size(); }
   std::size_t triangle_count() const { return indices.size() / 3; }

@@ -78,6 +78,7 @@ float primitive_size(const Primitive& p) {
     case PrimitiveShape::Capsule: return 0.5f * (p.radius_a + p.radius_b);
     case PrimitiveShape::Ellipsoid: return std::min(p.radii.x, std::min(p.radii.y, p.radii.z));
     case PrimitiveShape::RoundBox: return p.radius_a + std::min(p.radii.x, std::min(p.radii.y, p.radii.z));
+    case PrimitiveShape::Sculpt: return p.sculpt->size();
     case PrimitiveShape::HalfSpace: break;
   }
   return 0.0f;

@@ -14,7 +14,7 @@ namespace {
 // A glm::mat4 is 16 column-major floats: one 256-bit register holds columns 0,1 and another
 // columns 2,3. Blending four joints is then 8 FMAs, and transforming (x, y, z, 1) is
 // lo·(x x x x y y y y) + hi·(z z z z 1 1 1 1) followed by adding the two 128-bit halves.
-GESTURA_AVX2 [[gnu::always_inline]] inline void blend(const float* base, const JointIndices& j, const vec4& w,
+[[gnu::always_inline]] GESTURA_AVX2 inline void blend(const float* base, const JointIndices& j, const vec4& w,
                                                      __m256& lo, __m256& hi) {
   const float* m0 = base + 16 * j.x;
   const float* m1 = base + 16 * j.y;
@@ -33,7 +33,7 @@ GESTURA_AVX2 [[gnu::always_inline]] inline void blend(const float* base, const J
 }
 
 // lo·(a a a a b b b b) + hi·(c c c c d d d d), halves summed: the blended matrix times (a, b, c, d).
-GESTURA_AVX2 [[gnu::always_inline]] inline __m128 transform(__m256 lo, __m256 hi, const float* v, __m256 fourth) {
+[[gnu::always_inline]] GESTURA_AVX2 inline __m128 transform(__m256 lo, __m256 hi, const float* v, __m256 fourth) {
   const __m256 ab = _mm256_blend_ps(_mm256_broadcast_ss(v), _mm256_broadcast_ss(v + 1), 0xF0);
   const __m256 cd = _mm256_blend_ps(_mm256_broadcast_ss(v + 2), fourth, 0xF0);
   const __m256 r = _mm256_fmadd_ps(lo, ab, _mm256_mul_ps(hi, cd));
@@ -41,23 +41,23 @@ GESTURA_AVX2 [[gnu::always_inline]] inline __m128 transform(__m256 lo, __m256 hi
 }
 
 // 1/√x to about 1e-7 relative: the 12-bit estimate refined by one Newton step (cheaper than sqrt + div).
-GESTURA_AVX2 [[gnu::always_inline]] inline __m128 inverse_sqrt(__m128 x) {
+[[gnu::always_inline]] GESTURA_AVX2 inline __m128 inverse_sqrt(__m128 x) {
   const __m128 y = _mm_rsqrt_ps(x);
   return _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), y), _mm_fnmadd_ps(_mm_mul_ps(x, y), y, _mm_set1_ps(3.0f)));
 }
-GESTURA_AVX2 [[gnu::always_inline]] inline __m256 inverse_sqrt(__m256 x) {
+[[gnu::always_inline]] GESTURA_AVX2 inline __m256 inverse_sqrt(__m256 x) {
   const __m256 y = _mm256_rsqrt_ps(x);
   return _mm256_mul_ps(_mm256_mul_ps(_mm256_set1_ps(0.5f), y),
                        _mm256_fnmadd_ps(_mm256_mul_ps(x, y), y, _mm256_set1_ps(3.0f)));
 }
 
-GESTURA_AVX2 [[gnu::always_inline]] inline void store3(float* out, __m128 r) {
+[[gnu::always_inline]] GESTURA_AVX2 inline void store3(float* out, __m128 r) {
   _mm_storel_pi(reinterpret_cast<__m64*>(out), r);
   _mm_store_ss(out + 2, _mm_movehl_ps(r, r));
 }
 
 // Eight packed vec3 (24 floats) ↔ x, y, z registers; lane i is vertex i.
-GESTURA_AVX2 [[gnu::always_inline]] inline void load8(const float* p, __m256& x, __m256& y, __m256& z) {
+[[gnu::always_inline]] GESTURA_AVX2 inline void load8(const float* p, __m256& x, __m256& y, __m256& z) {
   const __m256 a = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p)), _mm_loadu_ps(p + 12), 1);
   const __m256 b = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p + 4)), _mm_loadu_ps(p + 16), 1);
   const __m256 c = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p + 8)), _mm_loadu_ps(p + 20), 1);
@@ -69,7 +69,7 @@ GESTURA_AVX2 [[gnu::always_inline]] inline void load8(const float* p, __m256& x,
   z = _mm256_shuffle_ps(yz, c, _MM_SHUFFLE(3, 0, 3, 1));
 }
 
-GESTURA_AVX2 [[gnu::always_inline]] inline void store8(float* p, __m256 x, __m256 y, __m256 z) {
+[[gnu::always_inline]] GESTURA_AVX2 inline void store8(float* p, __m256 x, __m256 y, __m256 z) {
   const __m256 xy = _mm256_shuffle_ps(x, y, _MM_SHUFFLE(2, 0, 2, 0));  // x0 x2 y0 y2
   const __m256 yz = _mm256_shuffle_ps(y, z, _MM_SHUFFLE(3, 1, 3, 1));  // y1 y3 z1 z3
   const __m256 zx = _mm256_shuffle_ps(z, x, _MM_SHUFFLE(3, 1, 2, 0));  // z0 z2 x1 x3
@@ -85,7 +85,7 @@ GESTURA_AVX2 [[gnu::always_inline]] inline void store8(float* p, __m256 x, __m25
 }
 
 // Four 128-bit rows (one per vertex in each lane) → four registers of their x, y, z, w.
-GESTURA_AVX2 [[gnu::always_inline]] inline void transpose4(__m256 r0, __m256 r1, __m256 r2, __m256 r3, __m256& x,
+[[gnu::always_inline]] GESTURA_AVX2 inline void transpose4(__m256 r0, __m256 r1, __m256 r2, __m256 r3, __m256& x,
                                                           __m256& y, __m256& z, __m256& w) {
   const __m256 t0 = _mm256_unpacklo_ps(r0, r1), t1 = _mm256_unpackhi_ps(r0, r1);
   const __m256 t2 = _mm256_unpacklo_ps(r2, r3), t3 = _mm256_unpackhi_ps(r2, r3);
@@ -144,7 +144,7 @@ namespace {
 
 // Blends one vertex's four dual quaternions (one 256-bit register each: real | dual), each weight
 // negated when its rotation lies in the other hemisphere from the first influence's.
-GESTURA_AVX2 [[gnu::always_inline]] inline __m256 blend_dual(const float* dq, const JointIndices& j, const vec4& w) {
+[[gnu::always_inline]] GESTURA_AVX2 inline __m256 blend_dual(const float* dq, const JointIndices& j, const vec4& w) {
   const __m256 q0 = _mm256_loadu_ps(dq + 8 * j.x), q1 = _mm256_loadu_ps(dq + 8 * j.y);
   const __m256 q2 = _mm256_loadu_ps(dq + 8 * j.z), q3 = _mm256_loadu_ps(dq + 8 * j.w);
   const __m128 r0 = _mm256_castps256_ps128(q0);
@@ -162,7 +162,7 @@ GESTURA_AVX2 [[gnu::always_inline]] inline __m256 blend_dual(const float* dq, co
 }
 
 // v + 2·r × (r × v + w·v), eight vectors at once.
-GESTURA_AVX2 [[gnu::always_inline]] inline void rotate8(__m256 rx, __m256 ry, __m256 rz, __m256 rw, __m256& x,
+[[gnu::always_inline]] GESTURA_AVX2 inline void rotate8(__m256 rx, __m256 ry, __m256 rz, __m256 rw, __m256& x,
                                                        __m256& y, __m256& z) {
   const __m256 cx = _mm256_fmadd_ps(rw, x, _mm256_fmsub_ps(ry, z, _mm256_mul_ps(rz, y)));
   const __m256 cy = _mm256_fmadd_ps(rw, y, _mm256_fmsub_ps(rz, x, _mm256_mul_ps(rx, z)));

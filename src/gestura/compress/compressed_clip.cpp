@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 namespace {
@@ -239,10 +240,7 @@ CompressedClip load_gcl(const std::string& path) {
 }
 
 void save_gcl(const std::string& path, const CompressedClip& clip) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw Error(SourceLocation{path}, "cannot write file");
-  out.write(reinterpret_cast<const char*>(clip.bytes().data()), static_cast<std::streamsize>(clip.bytes().size()));
-  if (!out) throw Error(SourceLocation{path}, "write failed");
+  write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(clip.bytes().data()), clip.bytes().size()));
 }
 
 }  // namespace gestura

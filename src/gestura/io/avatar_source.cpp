@@ -7,6 +7,7 @@
 #include <limits>
 #include <string_view>
 
+#include "gestura/body/avatar_look.hpp"
 #include "gestura/io/avatar_import.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/body/skinning.hpp"
@@ -150,7 +151,7 @@ Avatar load_makehuman_avatar(const std::string& directory) {
 }
 
 Avatar load_avatar(const std::string& spec, const AvatarParams& params, std::vector<std::string>* notes) {
-  if (spec == "default") return build_avatar(params);
+  if (const AvatarLook* look = find_look(spec)) return build_avatar(with_given(look->params, params));
   if (is_avatar_file(spec)) {
     ImportedAvatar imported = load_file_avatar(spec);
     for (const std::string& note : imported.notes) {
@@ -164,7 +165,8 @@ Avatar load_avatar(const std::string& spec, const AvatarParams& params, std::vec
     if (dir.empty()) throw Error("avatar 'makehuman:': give the MakeHuman asset directory, e.g. makehuman:DIR");
     return load_makehuman_avatar(dir);
   }
-  throw Error("unknown avatar '" + spec + "' (use 'default', 'makehuman:DIR' or an avatar file FILE.vrm, FILE.glb, FILE.gltf)");
+  throw Error("unknown avatar '" + spec + "' (use a built-in look: " + look_names() +
+              "; makehuman:DIR; or an avatar file FILE.vrm, FILE.glb, FILE.gltf)");
 }
 
 }  // namespace gestura

@@ -2,6 +2,8 @@
 // Where an avatar comes from, by a short spec the command line can carry:
 //
 //   "default"         the generated virtual human (build_avatar with `params`)
+//   "ana", "ben", …   a built-in look of it (avatar_look.hpp); `params` that differ from the
+//                     defaults change the look
 //   "makehuman:DIR"   the MakeHuman base mesh and default rig in DIR (base.obj, rigs/default.mhskel,
 //                     rigs/default_weights.mhw), standing on y = 0 and facing +Z like the default
 //   "FILE.vrm", "FILE.glb", "FILE.gltf"

@@ -9,6 +9,8 @@
 
 #include "gestura/anim/sampler.hpp"
 #include "gestura/core/error.hpp"
+#include "gestura/core/output_limits.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 namespace {
@@ -149,9 +151,7 @@ std::string write_bap(const BapFile& file) {
 }
 
 void save_bap(const std::string& path, const BapFile& file) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw Error(SourceLocation{path}, "cannot write file");
-  out << write_bap(file);
+  write_file_atomically(path, write_bap(file));
 }
 
 namespace {
@@ -198,6 +198,7 @@ Clip bap_to_clip(const BapFile& file, const Skeleton& skeleton) {
 
 BapFile clip_to_bap(const Clip& clip, const Skeleton& skeleton, float fps, const std::string& name) {
   if (!(fps > 0.0f && fps <= 10000.0f)) throw Error("clip_to_bap: frame rate must be in (0, 10000]");
+  check_output_length(clip.duration, fps, "BAP clip '" + name + "'");
   const double count = std::floor(static_cast<double>(clip.duration) * fps + 0.5) + 1.0;
   if (count > kBapMaxFrames) throw Error("clip_to_bap: more than " + std::to_string(kBapMaxFrames) + " frames");
   const int frames = static_cast<int>(count);

@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/output_limits.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/io/bvh.hpp"
 
 namespace gestura {
@@ -181,6 +182,7 @@ BvhFile make_bvh(const Skeleton& skeleton, const Clip& clip, float frame_time) {
     for (BvhChannel r : {BvhChannel::Zrotation, BvhChannel::Xrotation, BvhChannel::Yrotation}) c.push(r);
   }
   const double span = std::max(clip.duration, clip.end_time());
+  check_output_length(span, 1.0 / frame_time, "BVH clip '" + clip.name + "'");
   const double frames = std::floor(span / frame_time + 0.5) + 1.0;
   if (!(frames <= static_cast<double>(kBvhMaxFrames)))
     throw Error("clip '" + clip.name + "' needs more than " + std::to_string(kBvhMaxFrames) + " BVH frames");
@@ -200,11 +202,7 @@ std::string write_bvh(const BvhFile& bvh) {
 }
 
 void save_bvh(const std::string& path, const BvhFile& bvh) {
-  const std::string text = write_bvh(bvh);
-  std::ofstream file(path, std::ios::binary);
-  if (!file) throw Error(path + ": cannot create the file");
-  file.write(text.data(), static_cast<std::streamsize>(text.size()));
-  if (!file) throw Error(path + ": cannot write the file");
+  write_file_atomically(path, write_bvh(bvh));
 }
 
 }  // namespace gestura

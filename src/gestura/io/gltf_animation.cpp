@@ -13,7 +13,9 @@
 #include <nlohmann/json.hpp>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/io/gltf_reader.hpp"
+#include "gestura/io/json_excerpt.hpp"
 
 namespace gestura {
 namespace {
@@ -295,11 +297,7 @@ void save_gltf(const std::string& path, const Skeleton& skeleton, const Clip& cl
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext != ".glb" && ext != ".gltf") throw Error(path + ": glTF files end in .glb or .gltf");
   const GltfDocument doc = make_gltf(skeleton, clip, mesh, options);
-  const std::string bytes = ext == ".glb" ? pack_glb(doc) : pack_gltf_embedded(doc);
-  std::ofstream file(path, std::ios::binary);
-  if (!file) throw Error(path + ": cannot open for writing");
-  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!file) throw Error(path + ": write failed");
+  write_file_atomically(path, ext == ".glb" ? pack_glb(doc) : pack_gltf_embedded(doc));
 }
 
 GltfAnimation read_gltf_animation(const std::string& bytes, const std::string& source) {
@@ -315,9 +313,9 @@ GltfAnimation read_gltf_animation(const std::string& bytes, const std::string& s
     if (!nodes[i]["children"].is_array()) r.fail(where, "children is not an array");
     for (const json& c : nodes[i]["children"]) {
       if (!c.is_number_integer() || c.get<long long>() < 0 || c.get<long long>() >= static_cast<long long>(nodes.size()))
-        r.fail(where, "has a child that is not a node index: " + c.dump());
+        r.fail(where, "has a child that is not a node index: " + json_excerpt(c));
       const auto ci = c.get<std::size_t>();
-      if (parent[ci] >= 0 || ci == i) r.fail(where, "node " + c.dump() + " has two parents or is its own child");
+      if (parent[ci] >= 0 || ci == i) r.fail(where, "node " + json_excerpt(c) + " has two parents or is its own child");
       parent[ci] = static_cast<int>(i);
     }
   }
@@ -406,7 +404,7 @@ GltfAnimation read_gltf_animation(const std::string& bytes, const std::string& s
       if (!target.contains("node")) continue;  // allowed by the specification: ignore
       const json& node = target["node"];
       if (!node.is_number_integer() || node.get<long long>() < 0 || node.get<long long>() >= static_cast<long long>(nodes.size()))
-        r.fail(where, "targets a missing node " + node.dump());
+        r.fail(where, "targets a missing node " + json_excerpt(node));
       const json& si = ch.contains("sampler") ? ch["sampler"] : json();
       if (!si.is_number_integer() || si.get<long long>() < 0 || si.get<long long>() >= static_cast<long long>(samplers.size()))
         r.fail(where, "refers to a missing sampler");

@@ -3,11 +3,11 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 namespace {
@@ -29,6 +29,8 @@ constexpr std::array<MaterialLook, kMaterialCount> kLooks{{
     {"brow", {0.18f, 0.11f, 0.07f, 1.0f}, 0.9f},
     {"pupil", {0.02f, 0.02f, 0.02f, 1.0f}, 0.2f},
     {"mouth", {0.20f, 0.06f, 0.06f, 1.0f}, 0.6f},
+    {"nail", {0.88f, 0.70f, 0.64f, 1.0f}, 0.35f},
+    {"trousers", {0.12f, 0.12f, 0.14f, 1.0f}, 0.9f},
 }};
 
 // Binary chunk under construction: each view starts 4-byte aligned.
@@ -154,9 +156,13 @@ std::vector<std::uint8_t> encode_glb(const Skeleton& skeleton, const Mesh& mesh,
   for (int m = 0; m < kMaterialCount; ++m) {
     if (by_material[m].empty()) continue;
     const MaterialLook& look = kLooks[static_cast<std::size_t>(m)];
+    // The mesh's own colours (sRGB) are given to glTF as it wants them, linear.
+    vec4 base = look.base_colour;
+    if (mesh.material_colors.size() == static_cast<std::size_t>(kMaterialCount))
+      base = vec4(glm::pow(mesh.material_colors[static_cast<std::size_t>(m)], vec3(2.2f)), 1.0f);
     materials.push_back({{"name", look.name},
                          {"pbrMetallicRoughness",
-                          {{"baseColorFactor", {look.base_colour.x, look.base_colour.y, look.base_colour.z, look.base_colour.w}},
+                          {{"baseColorFactor", {base.x, base.y, base.z, base.w}},
                            {"metallicFactor", 0.0},
                            {"roughnessFactor", look.roughness}}}});
     const auto& idx = by_material[m];
@@ -233,10 +239,7 @@ std::vector<std::uint8_t> encode_glb(const Skeleton& skeleton, const Mesh& mesh,
 
 void write_glb(const std::string& path, const Skeleton& skeleton, const Mesh& mesh, const std::string& name) {
   const std::vector<std::uint8_t> bytes = encode_glb(skeleton, mesh, name);
-  std::ofstream file(path, std::ios::binary);
-  if (!file) throw Error(SourceLocation{path}, "cannot open for writing");
-  file.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  if (!file) throw Error(SourceLocation{path}, "write failed");
+  write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 }  // namespace gestura

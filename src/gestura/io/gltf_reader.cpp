@@ -5,6 +5,7 @@
 #include <map>
 
 #include "gestura/core/error.hpp"
+#include "gestura/io/json_excerpt.hpp"
 
 namespace gestura {
 namespace {
@@ -117,9 +118,9 @@ const json& GltfReader::array(const char* key) const {
 const json& GltfReader::item(const char* key, const json& index, const std::string& referrer) const {
   const json& a = array(key);
   if (!index.is_number_integer() || index.get<long long>() < 0 || index.get<long long>() >= static_cast<long long>(a.size()))
-    fail(referrer, std::string("refers to a missing ") + key + " entry " + index.dump());
+    fail(referrer, std::string("refers to a missing ") + key + " entry " + json_excerpt(index));
   const json& o = a[index.get<std::size_t>()];
-  if (!o.is_object()) fail(std::string(key) + "[" + index.dump() + "]", "not an object");
+  if (!o.is_object()) fail(std::string(key) + "[" + json_excerpt(index) + "]", "not an object");
   return o;
 }
 
@@ -133,7 +134,7 @@ double GltfReader::number(const json& o, const char* key, const std::string& whe
 // Every element of an accessor as floats (normalised integer types scaled to [0,1] / [-1,1]).
 std::vector<float> GltfReader::accessor(const json& index, const std::string& referrer, int* components_out) const {
   const json& a = item("accessors", index, referrer);
-  const std::string where = "accessors[" + index.dump() + "]";
+  const std::string where = "accessors[" + json_excerpt(index) + "]";
   static const std::map<std::string, int> kTypes = {{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}, {"MAT4", 16}};
   const std::string type = a.value("type", std::string());
   const auto t = kTypes.find(type);
@@ -189,7 +190,7 @@ std::vector<float> GltfReader::elements(const json& view, double offset, std::si
   if (size == 0) fail(where, "unknown componentType " + std::to_string(ct));
   std::vector<float> out(count * static_cast<std::size_t>(components), 0.0f);
   const json& v = item("bufferViews", view, where);
-  const std::string vwhere = "bufferViews[" + view.dump() + "]";
+  const std::string vwhere = "bufferViews[" + json_excerpt(view) + "]";
   const json& b = v.contains("buffer") ? v["buffer"] : json();
   if (!b.is_number_integer() || b.get<long long>() < 0 || b.get<long long>() >= static_cast<long long>(buffers_.size()))
     fail(vwhere, "refers to a missing buffer");

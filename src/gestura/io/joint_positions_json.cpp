@@ -1,16 +1,18 @@
 #include "gestura/io/joint_positions_json.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <vector>
 
 #include "gestura/anim/sampler.hpp"
 #include "gestura/core/error.hpp"
+#include "gestura/core/output_limits.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 
 std::string joint_positions_json(const Skeleton& skeleton, const Clip& clip, float fps) {
   if (!(fps > 0.0f && fps <= 1000.0f)) throw Error("fps must be positive (got " + std::to_string(fps) + ")");
+  check_output_length(clip.duration, fps, "joint positions");
   const int frames = static_cast<int>(std::floor(clip.duration * fps + 1e-4f)) + 1;
   std::string out = "{\"fps\": " + std::to_string(static_cast<int>(std::lround(fps))) + ", \"joints\": [";
   for (std::size_t j = 0; j < skeleton.size(); ++j) out += (j ? ", \"" : "\"") + skeleton.names[j] + "\"";
@@ -35,21 +37,7 @@ std::string joint_positions_json(const Skeleton& skeleton, const Clip& clip, flo
 }
 
 void write_joint_positions_json(const std::string& path, const Skeleton& skeleton, const Clip& clip, float fps) {
-  const std::string text = joint_positions_json(skeleton, clip, fps);
-  const std::string temp = path + ".part";
-  {
-    std::ofstream file(temp, std::ios::binary);
-    if (!file) throw Error(path + ": cannot write here");
-    file.write(text.data(), static_cast<std::streamsize>(text.size()));
-    if (!file) {
-      std::remove(temp.c_str());
-      throw Error(path + ": write failed");
-    }
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    std::remove(temp.c_str());
-    throw Error(path + ": cannot replace the file");
-  }
+  write_file_atomically(path, joint_positions_json(skeleton, clip, fps));
 }
 
 }  // namespace gestura

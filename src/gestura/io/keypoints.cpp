@@ -6,6 +6,7 @@
 
 #include "gestura/anim/sampler.hpp"
 #include "gestura/core/error.hpp"
+#include "gestura/core/output_limits.hpp"
 #include "gestura/skeleton/joint_names.hpp"
 
 namespace gestura {
@@ -73,6 +74,7 @@ constexpr std::array<std::uint16_t, 2> kHandLimbs[] = {
 std::vector<vec3> sample_joint_positions(const Skeleton& skeleton, const Clip& clip, float fps, int* frame_count) {
   if (!(fps > 0.0f) || fps > 1000.0f) throw Error("keypoints: fps must be in (0, 1000], got " + std::to_string(fps));
   const float duration = std::max(clip.duration, 0.0f);
+  check_output_length(duration, fps, "keypoints");
   const double n = std::floor(double(duration) * fps + 0.5) + 1.0;
   if (n > 1e7) throw Error("keypoints: more than 10,000,000 frames");
   const int frames = static_cast<int>(n);

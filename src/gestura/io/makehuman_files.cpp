@@ -39,6 +39,8 @@ nlohmann::json parse_json(std::string_view text, const std::string& name) {
     std::string message = e.what();
     const std::size_t colon = message.rfind(": ");  // drop nlohmann's "[json.exception…] parse error at…"
     throw Error(where, "invalid JSON: " + (colon == std::string::npos ? message : message.substr(colon + 2)));
+  } catch (const nlohmann::json::exception& e) {  // e.g. a number past a double's range
+    throw Error(SourceLocation{name}, std::string("invalid JSON: ") + e.what());
   }
 }
 

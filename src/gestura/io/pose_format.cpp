@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 namespace {
@@ -68,7 +69,7 @@ class Reader {
   void floats(std::vector<float>& out, std::size_t n, const char* what) {
     need(n * sizeof(float), what);
     out.resize(n);
-    std::memcpy(out.data(), bytes_.data() + at_, n * sizeof(float));
+    if (n > 0) std::memcpy(out.data(), bytes_.data() + at_, n * sizeof(float));  // an empty vector's data() may be null
     at_ += n * sizeof(float);
   }
   std::size_t left() const { return bytes_.size() - at_; }
@@ -111,7 +112,7 @@ std::string encode_pose(const PoseData& pose) {
                 " and " + std::to_string(cells));
   if (!std::isfinite(pose.fps) || !(pose.fps > 0.0f)) throw Error(".pose: fps must be positive");
   Writer w;
-  w.f32(pose.version);
+  w.f32(0.2f);  // the body below is version 0.2's, whatever version the data was read from
   w.u16(pose.width, "width");
   w.u16(pose.height, "height");
   w.u16(pose.depth, "depth");
@@ -143,11 +144,7 @@ std::string encode_pose(const PoseData& pose) {
 }
 
 void save_pose(const std::string& path, const PoseData& pose) {
-  const std::string bytes = encode_pose(pose);
-  std::ofstream file(path, std::ios::binary);
-  if (!file) throw Error(path + ": cannot open for writing");
-  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!file) throw Error(path + ": write failed");
+  write_file_atomically(path, encode_pose(pose));
 }
 
 PoseData decode_pose(const std::string& bytes, const std::string& source) {

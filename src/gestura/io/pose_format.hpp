@@ -46,7 +46,8 @@ struct PoseData {
   std::size_t point_count() const;
 };
 
-// Throws gestura::Error naming the part that does not fit the format (a name over 65,535 bytes,
+// Writes version 0.2 (a pose read from a 0.1 file too: `version` is what was read, not what is
+// written). Throws gestura::Error naming the part that does not fit the format (a name over 65,535 bytes,
 // more than 65,535 points, a limb index past the points, data sizes that disagree, no component).
 std::string encode_pose(const PoseData& pose);
 void save_pose(const std::string& path, const PoseData& pose);

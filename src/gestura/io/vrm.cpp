@@ -10,6 +10,7 @@
 #include "gestura/io/gltf_animation.hpp"
 #include "gestura/io/gltf_reader.hpp"
 #include "gestura/skeleton/joint_names.hpp"
+#include "gestura/io/json_excerpt.hpp"
 
 namespace gestura {
 namespace {
@@ -67,7 +68,7 @@ std::string bone_name_1_0(const std::string& bone0) {
 
 std::size_t index_in(const GltfReader& r, const json& value, std::size_t size, const std::string& where, const char* what) {
   if (!value.is_number_integer() || value.get<long long>() < 0 || value.get<long long>() >= static_cast<long long>(size))
-    r.fail(where, std::string("refers to a missing ") + what + " " + value.dump());
+    r.fail(where, std::string("refers to a missing ") + what + " " + json_excerpt(value));
   return value.get<std::size_t>();
 }
 
@@ -202,7 +203,7 @@ VrmAvatar read_any(const std::string& bytes, const std::string& source, bool pla
     std::vector<mat4> skin_ibm;
     if (nodes[n].contains("skin")) {
       const json& skin = r.item("skins", nodes[n]["skin"], nwhere);
-      const std::string swhere = "skins[" + nodes[n]["skin"].dump() + "]";
+      const std::string swhere = "skins[" + json_excerpt(nodes[n]["skin"]) + "]";
       if (!skin.contains("joints") || !skin["joints"].is_array() || skin["joints"].empty()) r.fail(swhere, "needs joints");
       for (const json& jn : skin["joints"]) {
         const int j = joint_of[index_in(r, jn, nodes.size(), swhere, "joint node")];
@@ -368,7 +369,7 @@ VrmAvatar read_any(const std::string& bytes, const std::string& source, bool pla
           const auto m = mesh_of_node.find(n);
           if (m == mesh_of_node.end()) r.fail(where, "binds node " + std::to_string(n) + ", which has no mesh");
           const auto morph = morph_of.find({m->second, b["index"].is_number_integer() ? b["index"].get<std::size_t>() : ~std::size_t(0)});
-          if (morph == morph_of.end()) r.fail(where, "binds morph target " + b["index"].dump() + " that the mesh does not have");
+          if (morph == morph_of.end()) r.fail(where, "binds morph target " + json_excerpt(b["index"]) + " that the mesh does not have");
           const float weight = b.contains("weight") && b["weight"].is_number() ? b["weight"].get<float>() : 1.0f;
           if (!std::isfinite(weight)) r.fail(where, "weight is not finite");
           binds.push_back({morph->second, weight});

@@ -13,7 +13,7 @@ DefaultLexicon::DefaultLexicon() {
   builtin_ = std::make_unique<Lexicon>(load_builtin_lexicon(files));
   layers_.push_layer(*builtin_);
   if (const std::string path = default_user_lexicon_path(); std::filesystem::exists(path)) {
-    user_ = std::make_unique<Lexicon>(Lexicon::open(path));
+    user_ = std::make_unique<Lexicon>(Lexicon::open_read_only(path));
     layers_.push_layer(*user_);
   }
 }

@@ -1,6 +1,13 @@
 #include "gestura/lexicon/lexicon.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include <pugixml.hpp>
 
 #include "gestura/core/error.hpp"
 #include "gestura/lexicon/schema.hpp"
@@ -30,6 +37,25 @@ std::string like_escaped(std::string_view text) {
   return out;
 }
 
+// Stored SiGML must be one well-formed element, nested no deeper than real signs come near: a
+// hostile entry 300,000 elements deep once made `lexicon export` indent its way to 16 GB of memory.
+void validate_sigml(const SignEntry& e) {
+  pugi::xml_document doc;
+  if (!doc.load_buffer(e.notation.data(), e.notation.size()) || !doc.first_child())
+    throw Error("gloss '" + e.gloss + "': its SiGML notation is not well-formed XML");
+  struct DepthCheck : pugi::xml_tree_walker {
+    bool too_deep = false;
+    bool for_each(pugi::xml_node&) override {
+      too_deep = depth() >= kMaxStoredSigmlDepth;
+      return !too_deep;
+    }
+  } check;
+  doc.traverse(check);
+  if (check.too_deep)
+    throw Error("gloss '" + e.gloss + "': its SiGML elements nest deeper than " +
+                std::to_string(kMaxStoredSigmlDepth) + " (kMaxStoredSigmlDepth)");
+}
+
 void validate(const SignEntry& e) {
   if (e.gloss.empty()) throw Error("sign entry has an empty gloss");
   if (e.gloss.find_first_of("\n\r\t") != std::string::npos)
@@ -38,6 +64,7 @@ void validate(const SignEntry& e) {
   if (e.variant < 0) throw Error("gloss '" + e.gloss + "': variant must be 1 or more");
   if (e.notation_kind == NotationKind::clip ? e.clip.empty() : e.notation.empty())
     throw Error("gloss '" + e.gloss + "' has no " + std::string(to_string(e.notation_kind)) + " notation");
+  if (e.notation_kind == NotationKind::sigml) validate_sigml(e);
   for (const Keyword& k : e.keywords) {
     if (k.word.empty()) throw Error("gloss '" + e.gloss + "' has an empty keyword");
     if (!is_spoken_language_code(k.language))
@@ -50,11 +77,66 @@ void validate(const SignEntry& e) {
 
 Lexicon::Lexicon(sqlite::Database db) : db_(std::move(db)) {
   db_.exec("PRAGMA foreign_keys = ON");
-  lexicon_schema::migrate(db_);
+  if (!db_.read_only()) {
+    lexicon_schema::migrate(db_);
+    return;
+  }
+  const int version = lexicon_schema::version_of(db_);
+  if (version == lexicon_schema::current_version()) return;
+  if (version > lexicon_schema::current_version())
+    throw Error(SourceLocation{db_.path()}, "lexicon schema version " + std::to_string(version) +
+                                                " is newer than this program supports (" +
+                                                std::to_string(lexicon_schema::current_version()) + ")");
+  throw Error(SourceLocation{db_.path()},
+              version == 0 ? "not a gestura lexicon (no schema version)"
+                           : "lexicon schema version " + std::to_string(version) +
+                                 " is older than this program's; it cannot be upgraded while read-only (open it "
+                                 "for writing once, e.g. with lexicon add or import)");
+}
+
+void Lexicon::require_writable() const {
+  if (db_.read_only())
+    throw Error(SourceLocation{db_.path()}, "the lexicon was opened read-only; adding, importing and removing need "
+                                            "it opened for writing");
+}
+
+namespace {
+
+bool writable(const std::string& path) {
+  const std::string folder = std::filesystem::path(path).parent_path().string();
+  return ::access(path.c_str(), W_OK) == 0 && ::access(folder.empty() ? "." : folder.c_str(), W_OK) == 0;
+}
+
+}  // namespace
+
+Lexicon Lexicon::open_read_only(const std::string& path, int busy_timeout_ms) {
+  {
+    // A file from an older version is upgraded once, as opening it for writing always did, when it
+    // can be written; a read-only one must already be current (the constructor says so).
+    sqlite::Database probe(path, sqlite::Access::read, busy_timeout_ms);
+    const int version = lexicon_schema::version_of(probe);
+    if (version > 0 && version < lexicon_schema::current_version() && writable(path)) open(path, busy_timeout_ms);
+  }
+  return Lexicon(sqlite::Database(path, sqlite::Access::read, busy_timeout_ms));
 }
 
 Lexicon Lexicon::open(const std::string& path, int busy_timeout_ms) {
+  // SQLite would say "unable to open database file" or "attempt to write a readonly database"
+  // somewhere later; say what is wrong before anything is tried. (access() also sees read-only
+  // mounts and immutable files, which stop root as well.)
+  if (path != ":memory:" && std::filesystem::exists(path)) {
+    if (!writable(path))
+      throw Error(SourceLocation{path}, std::string("the lexicon is read-only (") + std::strerror(errno) +
+                                            "): it can be listed, searched and exported, but adding, importing "
+                                            "and removing need the file and its folder writable");
+  }
   sqlite::Database db(path, true, busy_timeout_ms);
+  // Nothing is written into a damaged file: a write could spread the damage over pages that are
+  // still good. Reading (open_read_only) still works, so what is left can be exported.
+  if (const std::string problems = db.integrity_problems(); !problems.empty())
+    throw Error(SourceLocation{path}, "the lexicon database is damaged (quick_check: " + problems +
+                                          "); it is left as it is and not written to. Export what can still be "
+                                          "read (gestura lexicon export) and import it into a new file");
   // WAL lets readers in other processes keep a consistent snapshot while one writer commits.
   {
     auto mode = db.prepare("PRAGMA journal_mode = WAL");
@@ -66,6 +148,7 @@ Lexicon Lexicon::open(const std::string& path, int busy_timeout_ms) {
 Lexicon Lexicon::in_memory() { return Lexicon(sqlite::Database(":memory:", true)); }
 
 std::int64_t Lexicon::add(SignEntry e, OnConflict on_conflict) {
+  require_writable();
   validate(e);
   sqlite::Transaction tx(db_);
   if (e.variant == 0) {
@@ -107,6 +190,7 @@ std::int64_t Lexicon::add(SignEntry e, OnConflict on_conflict) {
 }
 
 std::size_t Lexicon::remove(std::string_view gloss, std::string_view language, std::optional<int> variant) {
+  require_writable();
   sqlite::Transaction tx(db_);
   auto drop = db_.prepare(variant ? "DELETE FROM signs WHERE gloss = ?1 AND lang = ?2 AND variant = ?3"
                                   : "DELETE FROM signs WHERE gloss = ?1 AND lang = ?2");
@@ -191,6 +275,7 @@ std::size_t Lexicon::size() {
 }
 
 void Lexicon::atomically(const std::function<void()>& body) {
+  require_writable();
   sqlite::Transaction tx(db_);
   body();
   tx.commit();

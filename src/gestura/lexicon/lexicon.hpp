@@ -16,13 +16,23 @@
 namespace gestura {
 
 enum class OnConflict { fail, replace };
+
+// The deepest nesting of elements a stored SiGML notation may have (real signs: under 10).
+inline constexpr int kMaxStoredSigmlDepth = 64;
 enum class SearchMode { prefix, substring };
 
 class Lexicon {
  public:
-  // Opens or creates the database file, upgrading its schema. Waits `busy_timeout_ms` for a lock
-  // held by another connection, then fails with an Error naming the file.
+  // Opens or creates the database file for reading and writing, upgrading its schema. Waits
+  // `busy_timeout_ms` for a lock held by another connection, then fails with an Error naming the
+  // file. A file that fails SQLite's quick_check is refused (nothing is written into a damaged
+  // database); so is a read-only one.
   static Lexicon open(const std::string& path, int busy_timeout_ms = 2000);
+  // Opens an existing database for reading only: never writes to the file or its folder, so
+  // read-only files, folders and mounts and immutable files can be listed and searched. A file of
+  // an older schema is upgraded first when it can be written; a read-only one must be current.
+  // add, remove and atomically throw an Error naming the file.
+  static Lexicon open_read_only(const std::string& path, int busy_timeout_ms = 2000);
   // A private database in memory (the built-in layer, tests).
   static Lexicon in_memory();
 
@@ -57,6 +67,7 @@ class Lexicon {
 
  private:
   explicit Lexicon(sqlite::Database db);
+  void require_writable() const;
   std::vector<SignEntry> query(std::string_view where_and_order, const std::vector<std::string>& params);
   void load_keywords(SignEntry& entry);
 

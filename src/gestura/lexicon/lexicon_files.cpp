@@ -5,11 +5,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
+#include <optional>
 #include <sstream>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/file_extension.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 
@@ -168,18 +172,31 @@ nlohmann::json entry_to_json(const SignEntry& e) {
 
 std::size_t import_jsonl(Lexicon& lexicon, std::istream& in, const std::string& name, const ImportOptions& options) {
   std::size_t count = 0;
+  std::map<std::string, int> occurrences;  // language + gloss → entries so far in this file
   lexicon.atomically([&] {
     int line_number = 0;
     for (std::string line; std::getline(in, line);) {
       ++line_number;
       if (trimmed(line).empty()) continue;
+      std::optional<Error> bad;
       try {
         const auto object = nlohmann::json::parse(line);
-        lexicon.add(entry_from_json(object, options), options.on_conflict);
+        SignEntry entry = entry_from_json(object, options);
+        // A gloss the file repeats without naming variants is a homonym (another sign with the same
+        // gloss), not a correction: it becomes the next variant instead of replacing the first.
+        const int seen = ++occurrences[entry.language + '\n' + entry.gloss];
+        if (!object.contains("variant")) entry.variant = seen;
+        if (options.check) options.check(entry);
+        lexicon.add(std::move(entry), options.on_conflict);
       } catch (const nlohmann::json::exception& e) {
-        throw Error(at(name, line_number), std::string("bad JSON: ") + e.what());
+        bad.emplace(at(name, line_number), std::string("bad JSON: ") + e.what());
       } catch (const Error& e) {
-        throw Error(at(name, line_number), e.what());
+        bad.emplace(at(name, line_number), e.what());
+      }
+      if (bad) {
+        if (!options.skip_bad) throw *bad;
+        options.skip_bad(*bad);
+        continue;
       }
       ++count;
     }
@@ -203,19 +220,26 @@ void export_jsonl(std::span<const SignEntry> entries, std::ostream& out) {
 std::size_t import_sigml(Lexicon& lexicon, const std::string& path, const ImportOptions& options) {
   if (options.language.empty())
     throw Error(SourceLocation{path}, "SiGML files do not name their sign language; give one (e.g. --lang ins)");
-  const std::string text = read_file(path);
+  ImportOptions with_source = options;
+  if (with_source.source.empty()) with_source.source = std::filesystem::path(path).filename().string();
+  return import_sigml_text(lexicon, read_file(path), path, with_source);
+}
+
+std::size_t import_sigml_text(Lexicon& lexicon, std::string_view text, const std::string& path,
+                              const ImportOptions& options) {
+  if (options.language.empty())
+    throw Error(SourceLocation{path}, "SiGML files do not name their sign language; give one (e.g. --lang ins)");
   pugi::xml_document doc;
   const auto parsed = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
   if (!parsed)
     throw Error(at(path, line_of(text, parsed.offset)), std::string("bad XML: ") + parsed.description());
   const pugi::xml_node root = doc.child("sigml");
   if (!root) throw Error(SourceLocation{path}, "not a SiGML file: the root element must be <sigml>");
-  const std::string source =
-      options.source.empty() ? std::filesystem::path(path).filename().string() : options.source;
+  const std::string source = options.source.empty() ? path : options.source;
   std::size_t count = 0;
   lexicon.atomically([&] {
     for (const pugi::xml_node sign : root.children("hns_sign")) {
-      const int line = line_of(text, sign.offset_debug());
+      const std::ptrdiff_t offset = sign.offset_debug();  // its line is counted only for an error
       try {
         SignEntry e;
         e.gloss = sign.attribute("gloss").value();
@@ -230,9 +254,13 @@ std::size_t import_sigml(Lexicon& lexicon, const std::string& path, const Import
         e.keywords.push_back(Keyword{keyword});
         e.source = source;
         e.licence = options.licence;
+        if (options.check) options.check(e);
         lexicon.add(std::move(e), options.on_conflict);
       } catch (const Error& e) {
-        throw Error(at(path, line), e.what());
+        const Error bad(at(path, line_of(text, offset)), e.what());
+        if (!options.skip_bad) throw bad;
+        options.skip_bad(bad);
+        continue;
       }
       ++count;
     }
@@ -285,6 +313,14 @@ std::size_t import_file(Lexicon& lexicon, const std::string& path, const ImportO
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext == ".sigml" || ext == ".xml") return import_sigml(lexicon, path, options);
   return import_jsonl(lexicon, path, options);
+}
+
+std::size_t export_file(std::span<const SignEntry> entries, const std::string& path) {
+  std::ostringstream out;
+  const bool sigml = has_extension(path, ".sigml");
+  const std::size_t count = sigml ? export_sigml(entries, out) : (export_jsonl(entries, out), entries.size());
+  write_file_atomically(path, out.str());
+  return count;
 }
 
 Lexicon load_builtin_lexicon(const std::string& jsonl_path) {

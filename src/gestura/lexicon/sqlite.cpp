@@ -1,5 +1,6 @@
 #include "gestura/lexicon/sqlite.hpp"
 
+#include <cstdio>
 #include <utility>
 
 #include "gestura/core/error.hpp"
@@ -15,22 +16,71 @@ std::string describe(sqlite3* db, int code) {
     message += " (the database is locked by another connection; try again when it is done)";
   else if (primary == SQLITE_NOTADB || primary == SQLITE_CORRUPT)
     message += " (the file is not a valid SQLite lexicon database)";
+  else if (primary == SQLITE_READONLY)
+    message += " (the file or its folder is read-only: reading works, adding, importing and removing do not)";
   return message;
+}
+
+// "file:" URI of a path: the characters that URIs give a meaning escaped.
+std::string file_uri(const std::string& path) {
+  std::string uri = "file:";
+  for (const unsigned char c : path) {
+    if (c == '?' || c == '#' || c == '%' || c < 0x20 || c >= 0x7f) {
+      char hex[4];
+      std::snprintf(hex, sizeof hex, "%%%02X", c);
+      uri += hex;
+    } else {
+      uri += static_cast<char>(c);
+    }
+  }
+  return uri;
 }
 
 }  // namespace
 
-Database::Database(const std::string& path, bool create, int busy_timeout_ms) : path_(path) {
-  const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_NOMUTEX;
-  const int rc = sqlite3_open_v2(path.c_str(), &db_, flags, nullptr);
+Database::Database(const std::string& path, bool create, int busy_timeout_ms)
+    : Database(path, create ? Access::create : Access::write, busy_timeout_ms) {}
+
+Database::Database(const std::string& path, Access access, int busy_timeout_ms) : path_(path) {
+  if (access != Access::read) {
+    open_with(path, SQLITE_OPEN_READWRITE | (access == Access::create ? SQLITE_OPEN_CREATE : 0), busy_timeout_ms);
+    return;
+  }
+  read_only_ = true;
+  open_with(path, SQLITE_OPEN_READONLY, busy_timeout_ms);
+  // Reading the schema is the first access to the file (and, for a WAL database, to its shared
+  // memory index, which a read-only folder cannot hold): if that fails, read it as immutable.
+  if (sqlite3_exec(db_, "SELECT count(*) FROM sqlite_schema", nullptr, nullptr, nullptr) == SQLITE_OK) return;
+  const int primary = sqlite3_errcode(db_) & 0xff;
+  if (primary != SQLITE_CANTOPEN && primary != SQLITE_READONLY && primary != SQLITE_IOERR) return;  // reported on use
+  sqlite3_close_v2(db_);
+  db_ = nullptr;
+  immutable_ = true;
+  open_with(file_uri(path) + "?immutable=1", SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, busy_timeout_ms);
+}
+
+void Database::open_with(const std::string& name, int flags, int busy_timeout_ms) {
+  const int rc = sqlite3_open_v2(name.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr);
   if (rc != SQLITE_OK) {
     const std::string message = describe(db_, rc);
     sqlite3_close(db_);
     db_ = nullptr;
-    throw Error(SourceLocation{path}, "cannot open lexicon database: " + message);
+    throw Error(SourceLocation{path_}, "cannot open lexicon database: " + message);
   }
   sqlite3_extended_result_codes(db_, 1);
   sqlite3_busy_timeout(db_, busy_timeout_ms);
+}
+
+std::string Database::integrity_problems() {
+  std::string problems;
+  auto check = prepare("PRAGMA quick_check(5)");
+  while (check.step()) {
+    const std::string line = check.text(0);
+    if (line == "ok") continue;
+    if (!problems.empty()) problems += "; ";
+    problems += line;
+  }
+  return problems;
 }
 
 Database::~Database() {
@@ -39,7 +89,11 @@ Database::~Database() {
 }
 
 Database::Database(Database&& other) noexcept
-    : db_(std::exchange(other.db_, nullptr)), path_(std::move(other.path_)), cache_(std::move(other.cache_)) {}
+    : db_(std::exchange(other.db_, nullptr)),
+      path_(std::move(other.path_)),
+      read_only_(other.read_only_),
+      immutable_(other.immutable_),
+      cache_(std::move(other.cache_)) {}
 
 Database& Database::operator=(Database&& other) noexcept {
   if (this != &other) {
@@ -47,6 +101,8 @@ Database& Database::operator=(Database&& other) noexcept {
     sqlite3_close_v2(db_);
     db_ = std::exchange(other.db_, nullptr);
     path_ = std::move(other.path_);
+    read_only_ = other.read_only_;
+    immutable_ = other.immutable_;
     cache_ = std::move(other.cache_);
   }
   return *this;

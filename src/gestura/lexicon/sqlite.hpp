@@ -16,11 +16,18 @@ namespace gestura::sqlite {
 
 class Statement;
 
+// How a file is opened. `read` never writes, not even the shared-memory index of a WAL database:
+// when the file or its folder cannot be written (read-only media, a read-only mount, no
+// permission), it falls back to SQLite's immutable mode, which reads the main file as it is,
+// without locks (a WAL log left by a crashed writer is then not seen).
+enum class Access { create, write, read };
+
 class Database {
  public:
   // Opens (and creates when `create` is true) the file at `path`; ":memory:" gives a private in-memory
   // database. Waits up to `busy_timeout_ms` for another connection's lock before failing.
   Database(const std::string& path, bool create, int busy_timeout_ms = 2000);
+  Database(const std::string& path, Access access, int busy_timeout_ms = 2000);
   ~Database();
   Database(const Database&) = delete;
   Database& operator=(const Database&) = delete;
@@ -38,13 +45,21 @@ class Database {
 
   const std::string& path() const { return path_; }
   sqlite3* handle() const { return db_; }
+  bool read_only() const { return read_only_; }
+  bool immutable() const { return immutable_; }
+
+  // PRAGMA quick_check: empty when the file is sound, else SQLite's first findings (a few lines).
+  std::string integrity_problems();
 
   // Throws gestura::Error naming the file; `what` says which operation failed.
   [[noreturn]] void fail(const std::string& what) const;
 
  private:
+  void open_with(const std::string& name, int flags, int busy_timeout_ms);
+
   sqlite3* db_ = nullptr;
   std::string path_;
+  bool read_only_ = false, immutable_ = false;
   std::unordered_map<std::string, std::unique_ptr<Statement>> cache_;
 };
 

@@ -26,11 +26,14 @@ Look::Look() {
   set(MaterialId::Pupil, {0.02f, 0.02f, 0.02f}, {0.0f, 0.0f, 1.5f, 300.0f});
   // The oral cavity: a dark red that reads as the shadowed inside of the mouth (no shadows are cast).
   set(MaterialId::Mouth, {0.22f, 0.07f, 0.07f}, {0.3f, 0.2f, 0.05f, 20.0f});
+  // Nails: paler and pinker than the skin, with a sheen.
+  set(MaterialId::Nail, {0.93f, 0.76f, 0.70f}, {0.4f, 0.2f, 0.35f, 60.0f});
+  set(MaterialId::Trousers, {0.14f, 0.14f, 0.16f}, {0.2f, 0.0f, 0.04f, 8.0f});
 }
 
 namespace {
-constexpr const char* kMaterialNames[kMaterialCount] = {"skin", "cloth", "hair", "eye-white", "iris",
-                                                         "lips", "teeth", "tongue", "brow", "pupil", "mouth"};
+constexpr const char* kMaterialNames[kMaterialCount] = {"skin", "cloth", "hair", "eye-white", "iris", "lips",
+                                                         "teeth", "tongue", "brow", "pupil", "mouth", "nail", "trousers"};
 }
 
 const char* material_name(MaterialId material) { return kMaterialNames[static_cast<std::size_t>(material)]; }
@@ -48,6 +51,14 @@ void apply_color_setting(Look& look, const std::string& setting) {
   const auto eq = setting.find('=');
   if (eq == std::string::npos) throw Error("bad --color '" + setting + "' (expected MATERIAL=#rrggbb)");
   look.set_color(parse_material(setting.substr(0, eq)), parse_hex_color(setting.substr(eq + 1)));
+}
+
+Look look_for(const Look& look, const Mesh& mesh) {
+  Look out = look;
+  if (mesh.material_colors.size() != static_cast<std::size_t>(kMaterialCount)) return out;
+  for (std::size_t m = 0; m < out.colors.size(); ++m)
+    if (!look.color_given[m]) out.colors[m] = mesh.material_colors[m];
+  return out;
 }
 
 vec3 parse_hex_color(const std::string& text) {

@@ -22,16 +22,25 @@ struct Look {
   std::array<vec3, kMaterialCount> colors{};
   std::array<SurfaceResponse, kMaterialCount> surfaces{};
 
+  // Colours given by the user (set_color); the others yield to a mesh's own (Mesh::material_colors).
+  std::array<bool, kMaterialCount> color_given{};
+
   Look();  // the defaults described above
-  void set_color(MaterialId material, const vec3& srgb) { colors[static_cast<std::size_t>(material)] = srgb; }
+  void set_color(MaterialId material, const vec3& srgb) {
+    colors[static_cast<std::size_t>(material)] = srgb;
+    color_given[static_cast<std::size_t>(material)] = true;
+  }
 };
 
-// skin, cloth, hair, eye-white, iris, lips, teeth, tongue, brow, pupil, mouth (the oral cavity).
+// skin, cloth, hair, eye-white, iris, lips, teeth, tongue, brow, pupil, mouth (the oral cavity), nail,
+// trousers.
 const char* material_name(MaterialId material);
 // Throws gestura::Error listing the names when `name` is none of them.
 MaterialId parse_material(const std::string& name);
 // "MATERIAL=#rrggbb" (e.g. "cloth=#202830") applied to `look`; throws gestura::Error otherwise.
 void apply_color_setting(Look& look, const std::string& setting);
+// `look` with the mesh's own colours (Mesh::material_colors) where the user gave none.
+Look look_for(const Look& look, const Mesh& mesh);
 
 // "#rrggbb" or "rrggbb" → sRGB 0..1; throws gestura::Error naming the text otherwise.
 vec3 parse_hex_color(const std::string& text);

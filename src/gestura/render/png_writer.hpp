@@ -3,7 +3,7 @@
 #include <string>
 
 #include "gestura/render/image.hpp"
-#include "gestura/render/staged_file.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 

@@ -4,12 +4,13 @@
 #include <cmath>
 
 #include "gestura/core/error.hpp"
+#include "gestura/core/output_limits.hpp"
+#include "gestura/core/staged_file.hpp"
 #include "gestura/core/file_extension.hpp"
 #include "gestura/render/encoder_thread.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/progress.hpp"
-#include "gestura/render/staged_file.hpp"
 #include "gestura/render/video_writer.hpp"
 
 namespace gestura {
@@ -136,6 +137,8 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job, 
   validate(job);
   Animator animator(subject);
   const bool png = ends_with_png(job.output);
+  const float duration = subject.clip ? animator.duration() : job.rest_seconds;
+  if (!png) check_output_length(duration, job.fps, job.output);
   // Open the output first: an unwritable path fails before any rendering.
   std::optional<StagedFile> still;
   std::optional<VideoWriter> video;
@@ -149,7 +152,6 @@ RenderReport render_to_file(const RenderSubject& subject, const RenderJob& job, 
   RenderReport report;
   report.renderer = context.description();
   Image frame;
-  const float duration = subject.clip ? animator.duration() : job.rest_seconds;
   const JobFraming framing(subject, job, static_cast<float>(job.fps), frame_count(duration, job.fps));
   const FramingBox& box = framing.box;
 

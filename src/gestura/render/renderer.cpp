@@ -296,6 +296,7 @@ Renderer::~Renderer() {
 void Renderer::upload(const Mesh& mesh) {
   const std::size_t n = mesh.vertex_count();
   if (n == 0 || mesh.indices.empty()) throw Error("renderer: the mesh is empty");
+  look_ = look_for(look_, mesh);  // the avatar's own colours, where the user gave none
   if (mesh.normals.size() != n || mesh.materials.size() != n || mesh.joints.size() != n || mesh.weights.size() != n)
     throw Error("renderer: mesh arrays differ in length (positions " + std::to_string(n) + ", normals " +
                 std::to_string(mesh.normals.size()) + ", materials " + std::to_string(mesh.materials.size()) +
@@ -660,6 +661,8 @@ PixelRect Renderer::covered_rect(std::span<const View> views, std::span<const ma
   }
   return all;
 }
+
+unsigned Renderer::resolved_texture() const { return gl_->resolve_color; }
 
 void Renderer::read_pixels(Image& out) { read_framebuffer(gl_->resolve_fbo, width_, height_, out); }
 

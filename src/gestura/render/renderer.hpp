@@ -75,6 +75,9 @@ class Renderer {
   // Blits the resolved frame into the default framebuffer (the window), scaled to fit.
   void present(int framebuffer_width, int framebuffer_height);
   std::size_t max_gpu_joints() const { return max_gpu_joints_; }
+  // The GL texture holding the resolved frame (rows bottom to top), for a UI that shows it as an
+  // image (the studio's preview panel); 0 before the first resize().
+  unsigned resolved_texture() const;
   // Blocks until the GL has finished drawing (for measuring draw time alone).
   void finish();
 

@@ -15,7 +15,8 @@ extern "C" {
 #include <optional>
 
 #include "gestura/core/error.hpp"
-#include "gestura/render/staged_file.hpp"
+#include "gestura/core/output_limits.hpp"
+#include "gestura/core/staged_file.hpp"
 
 namespace gestura {
 namespace {
@@ -106,6 +107,14 @@ struct VideoWriter::State {
     throw Error("cannot write " + file->target() + ": " + what + (code < 0 ? " (" + av_message(code) + ")" : ""));
   }
 
+  // The muxer buffers its writes and keeps the first error in the I/O context; a full disk shows
+  // there before any call returns it.
+  void check_written() const {
+    if (container->pb->error < 0) fail("writing failed", container->pb->error);
+    check_output_size(static_cast<std::uint64_t>(std::max<std::int64_t>(0, avio_tell(container->pb))),
+                      "cannot write " + file->target());
+  }
+
   // Sends one frame (or nullptr to flush) and writes every packet the encoder returns.
   void encode(AVFrame* input) {
     int rc = avcodec_send_frame(codec, input);
@@ -115,6 +124,7 @@ struct VideoWriter::State {
       packet->stream_index = stream->index;
       rc = av_interleaved_write_frame(container, packet);
       if (rc < 0) fail("writing a packet failed", rc);
+      check_written();
     }
     if (rc != AVERROR(EAGAIN) && rc != AVERROR_EOF) fail("encoding failed", rc);
   }
@@ -228,9 +238,12 @@ void VideoWriter::finish() {
   State& s = *state_;
   if (s.finished) return;
   s.encode(nullptr);
-  const int rc = av_write_trailer(s.container);
+  int rc = av_write_trailer(s.container);
   if (rc < 0) s.fail("cannot finish the file", rc);
-  avio_closep(&s.container->pb);
+  avio_flush(s.container->pb);
+  s.check_written();
+  rc = avio_closep(&s.container->pb);
+  if (rc < 0) s.fail("cannot finish the file", rc);
   s.finished = true;
   s.file->commit();
 }

@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 #include "gestura/core/error.hpp"
@@ -261,6 +262,13 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
       last_end = (*span)[1];
     }
     out.glosses.push_back({g.gloss, source, (*span)[0], (*span)[1]});
+    if (builder.now() > kMaxSaySeconds) {
+      char text_limit[160];
+      std::snprintf(text_limit, sizeof text_limit,
+                    "the utterance would last more than %.0f s (kMaxSaySeconds), passed at gloss %zu of %zu",
+                    static_cast<double>(kMaxSaySeconds), i + 1, n);
+      throw Error(std::string(text_limit) + " ('" + g.gloss + "'); split the text into shorter pieces or sign it faster");
+    }
   }
 
   out.plan = builder.finish(std::max(first_start, 0.0f), last_end);

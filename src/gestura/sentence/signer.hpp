@@ -54,6 +54,9 @@ struct SentencePerformance {
 // silently, so a caller sees exactly what will be signed.
 inline constexpr std::size_t kMaxSayBytes = 16 * 1024;
 inline constexpr std::size_t kMaxSayGlosses = 300;
+// The longest one utterance may last: 30 minutes, six seconds for each of kMaxSayGlosses glosses
+// at the slowest tempo. Planning stops at the gloss that passes it, before any motion is made.
+inline constexpr float kMaxSaySeconds = 30.0f * 60.0f;
 
 class Signer {
  public:
@@ -62,8 +65,8 @@ class Signer {
   Signer(const Signer&) = delete;  // the motion cache refers to this signer's rig
   Signer& operator=(const Signer&) = delete;
 
-  // Throws gestura::Error for empty text, text over kMaxSayBytes or kMaxSayGlosses glosses,
-  // invalid UTF-8, a sign language without a lexicon, and a speed outside 0.25–2.
+  // Throws gestura::Error for empty text, text over kMaxSayBytes or kMaxSayGlosses glosses, an
+  // utterance that would last over kMaxSaySeconds, invalid UTF-8, a sign language without a lexicon, and a speed outside 0.25–2.
   // The first utterance that uses a sign performs its citation form by IK and stores it (per
   // signer, so per avatar); later ones reuse it. Safe to call from several threads.
   SentencePerformance say(std::string_view text, const SayOptions& options = {}) const;

@@ -123,7 +123,11 @@ SubtitleTrack fit_subtitles(const std::vector<SubtitleCue>& cues, const SignFunc
     const std::optional<std::array<float, 2>> signing = signing_interval(best.performance);
     Clip clip = std::move(best.performance.clip);
     clip.duration = static_cast<float>(best.performance.duration);
-    place_clip(track.clip, clip, static_cast<float>(start), skeleton);
+    try {
+      place_clip(track.clip, clip, start, skeleton);
+    } catch (const Error& e) {  // a programme past the longest timeline: name the cue
+      throw Error(SourceLocation{"", cue.line, 0, -1}, "cue " + std::to_string(cue.index) + ": " + e.what());
+    }
     if (signing) {
       // Close cues are coarticulated: the hands go from the previous cue's last sign straight to
       // this cue's first sign instead of resting in between.

@@ -7,6 +7,7 @@
 
 #include "gestura/core/error.hpp"
 #include "gestura/core/utf8.hpp"
+#include "gestura/sign/sign_limits.hpp"
 
 namespace gestura::sign {
 namespace {
@@ -1161,7 +1162,9 @@ std::optional<Site> site_of_symbol(Symbol symbol) {
 }
 
 HamSign parse_hamnosys(std::span<const Symbol> symbols, const ParseOptions& options) {
-  return Parser(symbols, options).parse();
+  HamSign sign = Parser(symbols, options).parse();
+  check_sign_limits(sign);  // no later stage sees a sign that asks for unbounded work
+  return sign;
 }
 
 HamSign parse_hamnosys_unicode(std::string_view utf8, const ParseOptions& options) {

@@ -5,6 +5,7 @@
 #include <pugixml.hpp>
 
 #include "gestura/core/error.hpp"
+#include "gestura/sign/sign_limits.hpp"
 
 namespace gestura::sign {
 namespace {
@@ -364,6 +365,11 @@ SigmlEntry read_entry(const Context& ctx, const pugi::xml_node& node) {
       sign.line = entry.line;
       sign.gestural = true;
       GesturalReader(ctx, sign).read(node);
+      try {
+        check_sign_limits(sign.manual);
+      } catch (const Error& e) {
+        fail_at(ctx.file, sign.line, 0, "sign '" + sign.gloss + "': " + e.message());
+      }
       entry.sign = std::move(sign);
     }
   } catch (const Error& e) {

@@ -7,6 +7,7 @@
 #include "gestura/core/error.hpp"
 #include "gestura/sign/body_repair.hpp"
 #include "gestura/sign/place_resolver.hpp"
+#include "gestura/sign/sign_limits.hpp"
 #include "gestura/sign/two_hand_timeline.hpp"
 
 namespace gestura {
@@ -274,7 +275,13 @@ void check(const sign::HamSign& sign, float speed) {
 
 }  // namespace
 
-SignPlan plan_schedule(const CitationSchedule& schedule, const SigningRig& rig) { return Planner(schedule, rig).run(); }
+SignPlan plan_schedule(const CitationSchedule& schedule, const SigningRig& rig) {
+  SignPlan plan = Planner(schedule, rig).run();
+  // The notation's caps (sign_limits.hpp) bound the actions; slow manners and a slow tempo still
+  // multiply their time, so the planned citation form has its own cap.
+  sign::check_sign_duration(plan.duration());
+  return plan;
+}
 
 SignPlan plan_citation(const sign::HamSign& sign, const SigningRig& rig, const ScheduleOptions& options) {
   check(sign, options.speed);

@@ -28,8 +28,9 @@ struct PlanOptions {
 };
 
 // The sign on its own: moved into from rest, and back to rest, as `options` say; sign_start and
-// sign_end bracket the citation form. Throws gestura::Error for a speed outside 0.25–4 or a sign
-// without a manual part.
+// sign_end bracket the citation form. Throws gestura::Error for a speed outside 0.25–4, a sign
+// without a manual part, notation it cannot perform (with the symbol index), and naming
+// sign::kMaxSignSeconds for a citation form that would last longer (sign/sign_limits.hpp).
 SignPlan plan_sign(const sign::HamSign& sign, const SigningRig& rig, const PlanOptions& options = {});
 
 // The sign in citation form: time 0 at its first posture (sign_start = 0), sign_end at the end of
@@ -38,7 +39,7 @@ SignPlan plan_citation(const sign::HamSign& sign, const SigningRig& rig, const S
 
 // A schedule laid out on the rig: places resolved, the body's rules applied, timed. Throws
 // gestura::Error for a schedule that does not start with a PostureStep (read_citation_schedule's
-// all do) or has no tempo.
+// all do), has no tempo, or would last longer than sign::kMaxSignSeconds.
 SignPlan plan_schedule(const CitationSchedule& schedule, const SigningRig& rig);
 
 // `citation` moved into from rest at its first posture and back to rest after its end, each hand

@@ -44,6 +44,10 @@ struct Sentence {
   bool negated = false;
   std::size_t first = 0, last = 0;  // glosses [first, last)
   std::size_t begin = 0, end = 0;   // byte span in the input
+  // The English parse the translation rests on (link-grammar): the constituent tree and the
+  // subject/verb/object links, e.g. "(S (NP my head) (VP hurts)); subject 'head' → verb 'hurts'".
+  // Empty when the sentence did not parse and the rule tables alone were used.
+  std::string parse;
 };
 
 struct Translation {

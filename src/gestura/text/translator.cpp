@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <optional>
 
+#include "gestura/text/english_parse.hpp"
 #include "gestura/text/english_words.hpp"
 #include "gestura/text/lemmatizer.hpp"
 #include "gestura/text/tokenizer.hpp"
+#include "gestura/text/wordnet.hpp"
 #include "gestura/core/utf8.hpp"
 
 namespace gestura {
@@ -77,8 +79,9 @@ std::vector<std::string_view> split(std::string_view text, char by) {
 
 class SentenceTranslator {
  public:
-  SentenceTranslator(std::vector<Word> words, bool question, SignInventory& inventory, std::vector<WordNote>& notes)
-      : w_(std::move(words)), question_(question), inventory_(inventory), notes_(notes) {
+  SentenceTranslator(std::vector<Word> words, english::ParsedSentence parse, bool question, SignInventory& inventory,
+                     std::vector<WordNote>& notes)
+      : w_(std::move(words)), parse_(std::move(parse)), question_(question), inventory_(inventory), notes_(notes) {
     while (first_word_ < w_.size() && w_[first_word_].kind != TokenKind::word &&
            w_[first_word_].kind != TokenKind::number)
       ++first_word_;
@@ -100,6 +103,11 @@ class SentenceTranslator {
   const Word* at(std::size_t k) const { return k < w_.size() ? &w_[k] : nullptr; }
   bool word_is(std::size_t k, std::string_view lower) const {
     return k < w_.size() && w_[k].kind == TokenKind::word && w_[k].lower == lower;
+  }
+
+  // What the parser says of word k, or nullptr when the sentence did not parse.
+  const english::ParsedWord* parsed(std::size_t k) const {
+    return parse_.parsed && k < parse_.words.size() ? &parse_.words[k] : nullptr;
   }
 
   void note(const Word& w, std::string reason) { notes_.push_back(WordNote{w.text, w.begin, w.end, std::move(reason)}); }
@@ -126,7 +134,7 @@ class SentenceTranslator {
       case TokenKind::sentence_end:
         break;
     }
-    if (phrase() || number_words() || month_date()) return;
+    if (phrase() || number_words() || month_date() || lexicon_phrase()) return;
     word();
   }
 
@@ -158,6 +166,39 @@ class SentenceTranslator {
       for (std::size_t k = 0; k < p->words.size(); ++k) note(w_[i_ + k], reason);
       i_ += p->words.size();
       return true;
+    }
+    return false;
+  }
+
+  // A keyword of several words in the lexicon ("train station", "wake up", "next to"), longest first;
+  // the first or the last word may be inflected ("woke up", "credit cards").
+  bool lexicon_phrase() {
+    if (inventory_.open_vocabulary()) return false;  // it would take any run of words as one sign
+    constexpr std::size_t kLongest = 4;
+    for (std::size_t n = kLongest; n >= 2; --n) {
+      if (i_ + n > w_.size()) continue;
+      bool words = true;
+      for (std::size_t k = 0; k < n && words; ++k) words = w_[i_ + k].kind == TokenKind::word;
+      if (!words) continue;
+      std::string middle;
+      for (std::size_t k = 1; k + 1 < n; ++k) middle += w_[i_ + k].lower + " ";
+      for (const LemmaCandidate& first : lemma_candidates(w_[i_].lower))
+        for (const LemmaCandidate& last : lemma_candidates(w_[i_ + n - 1].lower)) {
+          const std::string text = first.lemma + " " + middle + last.lemma;
+          const auto gloss = inventory_.gloss_for(text);
+          if (!gloss) continue;
+          const Word& from = w_[i_];
+          const Word& to = w_[i_ + n - 1];
+          const Role role = english::is_wh_word(from.lower) && question_ ? Role::wh : Role::plain;
+          if (role == Role::wh) has_wh_ = true;
+          std::string said;
+          for (std::size_t k = 0; k < n; ++k) said += (k ? " " : "") + w_[i_ + k].text;
+          const std::string reason = quoted(said) + " → " + *gloss + ": lexicon phrase " + quoted(text);
+          emit(GlossToken{*gloss, GlossKind::sign, from.begin, to.end, {}, reason}, role);
+          for (std::size_t k = 0; k < n; ++k) note(w_[i_ + k], reason);
+          i_ += n;
+          return true;
+        }
     }
     return false;
   }
@@ -366,12 +407,26 @@ class SentenceTranslator {
   bool is_do_support() const {
     if (!english::is_auxiliary_do(w_[i_].lower)) return false;
     if (word_is(i_ + 1, "not")) return true;
+    // The parse knows: 'do' linked to a later verb (I link) supports it; 'do' with an object is DO.
+    if (const english::ParsedWord* p = parsed(i_)) return p->do_support;
     if (!question_) return false;
     if (sentence_initial()) return true;
     // "where do you live", "how many dogs do you have": do between the wh-phrase and the subject.
     const Word* next = at(i_ + 1);
     return (next && next->kind == TokenKind::word && english::pronoun_gloss(next->lower)) ||
            (i_ > 0 && w_[i_ - 1].kind == TokenKind::word && english::is_wh_word(w_[i_ - 1].lower));
+  }
+
+  // A perfect that reports a completed action (have eaten) is FINISH; one of duration or experience
+  // (have been waiting, have lived here for years, has never seen, haven't seen) is not.
+  bool completed_action() const {
+    const english::ParsedWord* p = parsed(i_);
+    if (p && p->participle >= 0 && w_[static_cast<std::size_t>(p->participle)].lower == "been") return false;
+    return std::none_of(w_.begin(), w_.end(), [](const Word& w) {
+      return w.kind == TokenKind::word && (w.lower == "for" || w.lower == "since" || w.lower == "never" ||
+                                           w.lower == "not" || w.lower == "long" || w.lower == "ever" ||
+                                           w.lower == "yet");
+    });
   }
 
   bool next_is_content_word() const {
@@ -417,7 +472,8 @@ class SentenceTranslator {
     const Word& w = w_[i_];
     const std::string& l = w.lower;
     if (is_do_support()) {
-      drop(w, "do-support (ASL has no auxiliary 'do')");
+      drop(w, parsed(i_) ? "do-support (parse: I link to the verb; ASL has no auxiliary 'do')"
+                         : "do-support (ASL has no auxiliary 'do')");
       ++i_;
       return;
     }
@@ -442,8 +498,15 @@ class SentenceTranslator {
       ++i_;
       return;
     }
-    if ((l == "have" || l == "has" || l == "had") && next_is_participle()) {
-      const std::string reason = quoted(w.text) + " → FINISH: perfect 'have', a completed action";
+    if ((l == "have" || l == "has" || l == "had") && parsed(i_) && parsed(i_)->perfect && !completed_action()) {
+      drop(w, "auxiliary 'have' of a perfect that lasts up to now or is an experience (been, for, since, never, "
+              "not), no completed action (parse: PP link to the participle)");
+      ++i_;
+      return;
+    }
+    if ((l == "have" || l == "has" || l == "had") && (parsed(i_) ? parsed(i_)->perfect : next_is_participle())) {
+      const std::string reason = quoted(w.text) + " → FINISH: perfect 'have', a completed action" +
+                                 (parsed(i_) ? " (parse: PP link to the participle)" : "");
       note(w, reason);
       emit(make("FINISH", GlossKind::sign, w, reason), Role::plain);
       ++i_;
@@ -488,12 +551,37 @@ class SentenceTranslator {
     }
     ++i_;
     const bool looks_like_name = w.capitalized && !all_caps_ && l != "i" && !sentence_initial_word(w);
+    const auto candidates = lemma_candidates(l);
     if (looks_like_name) {
+      // A capitalised word with a sign of its own (a place, a holiday, "Sundays") is signed.
       if (!inventory_.open_vocabulary())
-        if (const auto gloss = inventory_.gloss_for(l)) return sign(w, *gloss, quoted(w.text) + " → " + *gloss);
+        for (const LemmaCandidate& c : candidates)
+          if (const auto gloss = inventory_.gloss_for(c.lemma))
+            return sign(w, *gloss, quoted(w.text) + " → " + *gloss + (c.rule.empty() ? "" : ": " + std::string(c.rule)));
       return fingerspell(w, "name (capitalized)");
     }
-    const auto candidates = lemma_candidates(l);
+    // The parse gives the part of speech, and WordNet the lemmas of that part of speech: "left" as a
+    // verb is LEAVE, as an adjective LEFT; "saw" as a verb is SEE.
+    const english::ParsedWord* p = parsed(i_ - 1);
+    const english::PartOfSpeech pos = p ? p->pos : english::PartOfSpeech::unknown;
+    const std::string as = p && pos != english::PartOfSpeech::unknown ? std::string(english::to_string(pos)) + ", " : "";
+    // Modals (might, may) keep the lexicon's own sign (MAYBE), not a verb lemma's.
+    const std::vector<std::string> wn_lemmas = p && p->modal ? std::vector<std::string>{} : wordnet::lemmas(l, pos);
+    const auto by_wordnet = [&]() -> std::optional<std::pair<std::string, std::string>> {
+      if (inventory_.open_vocabulary()) return std::nullopt;
+      for (const std::string& lemma : wn_lemmas)
+        if (const auto gloss = inventory_.gloss_for(lemma))
+          return std::pair{*gloss, lemma == l ? std::string("a WordNet lemma") : "WordNet lemma " + quoted(lemma)};
+      return std::nullopt;
+    };
+    // A verb takes its WordNet lemma first (left → LEAVE, leaves → LEAVE, not LEFT or LEAF).
+    if (pos == english::PartOfSpeech::verb)
+      if (const auto found = by_wordnet()) return sign(w, found->first, quoted(w.text) + " → " + found->first + ": " + as + found->second);
+    // A form the lexicon lists as written ("glasses", "hearing", "news", "oranges") keeps its own
+    // sign; other forms are looked up by their lemma.
+    if (!inventory_.open_vocabulary())
+      if (const auto gloss = inventory_.gloss_for(l)) return sign(w, *gloss, quoted(w.text) + " → " + *gloss);
+    if (const auto found = by_wordnet()) return sign(w, found->first, quoted(w.text) + " → " + found->first + ": " + as + found->second);
     for (const LemmaCandidate& c : candidates)
       if (const auto gloss = inventory_.gloss_for(c.lemma))
         return sign(w, *gloss, quoted(w.text) + " → " + *gloss + (c.rule.empty() ? "" : ": " + std::string(c.rule)));
@@ -501,6 +589,14 @@ class SentenceTranslator {
       if (const auto other = english::synonym(c.lemma))
         if (const auto gloss = inventory_.gloss_for(*other))
           return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": synonym " + quoted(*other));
+    // Synonyms from WordNet, in the word's part of speech and its most frequent sense only, so that a
+    // noun never takes a verb's sign and "picnic" never becomes a breeze (its third sense).
+    if (!inventory_.open_vocabulary() && pos != english::PartOfSpeech::unknown)
+      for (const std::string& lemma : wn_lemmas)
+        for (const std::string& other : wordnet::synonyms(lemma, pos, 1))
+          if (const auto gloss = inventory_.gloss_for(other))
+            return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": " + as + "WordNet synonym " + quoted(other) +
+                                       " (its most frequent sense)");
     fingerspell(w, "no sign in the lexicon");
   }
 
@@ -512,6 +608,7 @@ class SentenceTranslator {
   }
 
   std::vector<Word> w_;
+  english::ParsedSentence parse_;
   std::size_t first_word_ = 0;  // index of the first word or number
   bool question_;
   SignInventory& inventory_;
@@ -537,6 +634,51 @@ std::vector<Word> words_of(const std::vector<Token>& tokens, std::size_t from, s
         continue;
       }
     out.push_back(Word{t.kind, t.text, lower, t.begin, t.end, capital});
+  }
+  return out;
+}
+
+// Parses one sentence's words with link-grammar: words and numbers as written, pauses as their
+// punctuation, then the terminator.
+english::ParsedSentence parse_words(const std::vector<Word>& words, std::string_view terminator) {
+  std::vector<std::string> text;
+  std::vector<std::size_t> index;  // words[index[k]] is text[k]
+  for (std::size_t k = 0; k < words.size(); ++k) {
+    const Word& w = words[k];
+    if (w.kind == TokenKind::word || w.kind == TokenKind::number) {
+      // A contraction goes to the parser as written ("didn't", "I'm"): link-grammar knows them, and
+      // "why did not you come" would not parse. Its later parts share its span and are left out.
+      if (k > 0 && words[k - 1].kind == TokenKind::word && words[k - 1].begin == w.begin) continue;
+      text.push_back(w.text);
+      index.push_back(k);
+    } else if (w.kind == TokenKind::pause && (w.text == "," || w.text == ";" || w.text == ":")) {
+      text.push_back(w.text);
+      index.push_back(k);
+    }
+  }
+  if (text.empty()) return {};
+  if (!terminator.empty()) text.emplace_back(terminator.substr(0, 1));
+  english::ParsedSentence parsed = english::parse_sentence(text);
+  english::ParsedSentence out;
+  out.parsed = parsed.parsed;
+  out.tree = std::move(parsed.tree);
+  out.roles = std::move(parsed.roles);
+  out.clauses = parsed.clauses;
+  out.words.resize(words.size());
+  // The parser's word indices (participle) → this sentence's word indices.
+  for (auto& w : parsed.words)
+    if (w.participle >= 0) w.participle = static_cast<int>(index[static_cast<std::size_t>(w.participle)]);
+  for (auto& parts : parsed.parts)
+    for (auto& w : parts)
+      if (w.participle >= 0) w.participle = static_cast<int>(index[static_cast<std::size_t>(w.participle)]);
+  for (std::size_t k = 0; k < index.size(); ++k) {
+    if (k < parsed.words.size()) out.words[index[k]] = parsed.words[k];
+    // The later words of an expanded contraction ("I'm" → I am) take the parts link-grammar split off.
+    if (k >= parsed.parts.size()) continue;  // not parsed: no parts
+    for (std::size_t j = 0; j < parsed.parts[k].size(); ++j) {
+      const std::size_t at = index[k] + 1 + j;
+      if (at < words.size() && words[at].begin == words[index[k]].begin) out.words[at] = parsed.parts[k][j];
+    }
   }
   return out;
 }
@@ -571,6 +713,8 @@ std::size_t reorder_clause(std::vector<Item>& clause, bool wh_question) {
 
 Translation translate_to_gloss(std::string_view english, SignInventory& inventory) {
   Translation out;
+  constexpr std::size_t kMaxParsedSentences = 2000;
+  std::size_t parsed_sentences = 0;
   const std::vector<Token> tokens = tokenize(english);
   std::size_t start = 0;
   while (start < tokens.size()) {
@@ -584,7 +728,12 @@ Translation translate_to_gloss(std::string_view english, SignInventory& inventor
                               words[1].kind == TokenKind::word &&
                               (english::pronoun_gloss(words[1].lower) || english::is_auxiliary(words[1].lower));
     const bool question = question_mark || aux_question;
-    SentenceTranslator translator(std::move(words), question, inventory, out.notes);
+    // Parsing is bounded per text so that megabytes of input stay quick; later sentences use the rules.
+    english::ParsedSentence parse = ++parsed_sentences <= kMaxParsedSentences ? parse_words(words, terminator)
+                                                                              : english::ParsedSentence{};
+    std::string parse_text = parse.tree;
+    if (!parse.roles.empty()) parse_text += "; " + parse.roles;
+    SentenceTranslator translator(std::move(words), std::move(parse), question, inventory, out.notes);
     std::vector<Item> items = translator.run();
     while (!items.empty() && items.back().role == Role::pause) items.pop_back();
 
@@ -592,6 +741,7 @@ Translation translate_to_gloss(std::string_view english, SignInventory& inventor
     sentence.type = question ? (translator.has_wh() ? SentenceType::wh_question : SentenceType::yes_no_question)
                     : terminator.find('!') != std::string_view::npos ? SentenceType::exclamation
                                                                     : SentenceType::statement;
+    sentence.parse = std::move(parse_text);
     sentence.begin = start < tokens.size() ? tokens[start].begin : english.size();
     sentence.end = end < tokens.size() ? tokens[end].end : tokens[end - 1].end;
 

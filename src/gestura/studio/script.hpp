@@ -1,0 +1,37 @@
+#pragma once
+// `gestura studio --script FILE`: UI actions, one per line, replayed one per frame boundary by the
+// running studio (the same actions the menus, buttons and keys call). '#' starts a comment.
+//
+//   open GLOSS [LANG [VARIANT]]   new   duplicate   save   delete   undo   redo
+//   set FIELD VALUE...            FIELD: gloss lang variant names keywords meaning source licence
+//   select-symbol INDEX           palette NAME (as a click on the palette: replaces the selected
+//   replace-symbol INDEX NAME     symbol, else appends)
+//   insert-symbol INDEX NAME      remove-symbol INDEX
+//   search TEXT...                filter FIELD VALUE (lang, handshape, location; '-' clears)
+//   panel NAME                    camera front|side|three-quarter|top
+//   time SECONDS   play   pause   wait FRAMES
+//   import FILE   export FILE     recover   discard-recovery
+//   export-sign FILE (.bvh .glb .gltf .json .png .gif .mp4 .webm: the sign as performed; the next
+//   step waits until it is written)
+//   screenshot FILE.png           dump FILE.json (the studio's state, for tests)
+//   kill (the process kills itself with SIGKILL, as a crash would)   quit
+//   learning mode: mode learn|edit   topic NAME   word GLOSS   sentence TEXT...   quiz SEED
+//   answer GLOSS   next-question   views one|side|three-quarter|top   speed X
+//   pose editor: mode pose   pose-joint NAME   pose-angles X Y Z (degrees)   pose-hand r|l HANDSHAPE
+//   pose-mirror   pose-morph NAME WEIGHT   (undo / redo act on the pose in pose mode)
+#include <string>
+#include <vector>
+
+namespace gestura::studio {
+
+struct ScriptStep {
+  int line = 0;
+  std::string action;
+  std::vector<std::string> args;  // words; for set/search the rest of the line is one argument
+};
+
+// Throws gestura::Error naming file:line for an unknown action or a wrong number of arguments.
+std::vector<ScriptStep> parse_script(const std::string& text, const std::string& file_name);
+std::vector<ScriptStep> read_script(const std::string& path);
+
+}  // namespace gestura::studio
