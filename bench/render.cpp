@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "gestura/body/avatar.hpp"
+#include "gestura/render/edge_filter.hpp"
 #include "gestura/render/encoder_thread.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/renderer.hpp"
@@ -37,15 +38,16 @@ struct Scene {
   HeadlessGlContext context;
   RenderSubject figure = avatar_subject();
   Animator animator{figure};
-  Renderer renderer{Look{}, 4};  // RenderJob's default
-  Renderer two_samples{Look{}, 2};
-  Renderer single_sample{Look{}, 1};
-  Renderer no_occluders{Look{}, 4};  // the depth cues' capsules left out: what they cost
+  Renderer renderer{Look{}, Antialiasing::Msaa4};  // RenderJob's default
+  Renderer two_samples{Look{}, Antialiasing::Msaa2};
+  Renderer edge_filter{Look{}, Antialiasing::EdgeFilter};
+  Renderer single_sample{Look{}, Antialiasing::None};
+  Renderer no_occluders{Look{}, Antialiasing::Msaa4};  // the depth cues' capsules left out: what they cost
   std::vector<View> views;
   Scene() {
     views.push_back({preset_camera(CameraPreset::Front, framing_box(figure.mesh, figure.skeleton),
                                    float(kWidth) / kHeight), {0, 0, kWidth, kHeight}});
-    for (Renderer* r : {&renderer, &two_samples, &single_sample, &no_occluders}) {
+    for (Renderer* r : {&renderer, &two_samples, &edge_filter, &single_sample, &no_occluders}) {
       r->upload(figure.mesh);
       if (r != &no_occluders) r->set_occluders(find_occluders(figure.skeleton, figure.mesh));
       r->resize(kWidth, kHeight);
@@ -55,12 +57,19 @@ struct Scene {
       }
     }
   }
-  Renderer& with_samples(std::int64_t samples) {
-    return samples == 4 ? renderer : samples == 2 ? two_samples : samples == 1 ? single_sample : no_occluders;
+  // By bench argument: 0 4× MSAA, 1 2× MSAA, 2 edge filter, 3 one sample, 4 4× MSAA without occluders.
+  Renderer& by_arg(std::int64_t arg) {
+    Renderer* all[] = {&renderer, &two_samples, &edge_filter, &single_sample, &no_occluders};
+    return *all[std::clamp<std::int64_t>(arg, 0, 4)];
   }
-  void draw(int frame, SkinningDevice device) {
+  static const char* name(std::int64_t arg) {
+    const char* names[] = {"4x MSAA", "2x MSAA (4 on llvmpipe)", "1 sample + edge filter", "1 sample",
+                           "4x MSAA, no occluders"};
+    return names[std::clamp<std::int64_t>(arg, 0, 4)];
+  }
+  void draw(int frame, SkinningDevice device, Renderer* with = nullptr) {
     animator.pose_at(static_cast<float>(frame % 60) / 30.0f);
-    renderer.render(views, animator.skinning(), animator.morph_weights(), device);
+    (with ? *with : renderer).render(views, animator.skinning(), animator.morph_weights(), device);
   }
 };
 
@@ -93,13 +102,14 @@ void set_counters(benchmark::State& state) {
   state.counters["triangles"] = static_cast<double>(scene().figure.mesh.triangle_count());
 }
 
-// Draw only (pose, skin, draw, MSAA resolve), waiting for the GL to finish. Args: skinning device
-// (0 GPU, 1 CPU), MSAA samples (4, 2 or 1; 0 = 4 samples without the occluder capsules' shadows and
-// ambient occlusion, for their cost).
+// Draw only (pose, skin, draw, MSAA resolve or edge filter), waiting for the GL to finish. Args:
+// skinning device (0 GPU, 1 CPU), antialiasing (Scene::by_arg: 0 4× MSAA, 1 2× MSAA, 2 one sample +
+// edge filter, 3 one sample, 4 = 4× MSAA without the occluder capsules' shadows and ambient
+// occlusion, for their cost).
 void BM_R1_Draw(benchmark::State& state) {
   Scene& s = scene();
   const auto device = static_cast<SkinningDevice>(state.range(0));
-  Renderer& renderer = s.with_samples(state.range(1));
+  Renderer& renderer = s.by_arg(state.range(1));
   int frame = 0;
   const CpuMeter meter;
   for (auto _ : state) {
@@ -110,14 +120,13 @@ void BM_R1_Draw(benchmark::State& state) {
   meter.report(state);
   set_counters(state);
   state.SetLabel(std::string(device == SkinningDevice::Gpu ? "gpu skinning" : "cpu skinning + upload") + ", " +
-                 (state.range(1) == 0 ? std::string("4 samples, no occluders") : std::to_string(state.range(1)) + " sample(s)") +
-                 "; " + s.context.description());
+                 Scene::name(state.range(1)) + "; " + s.context.description());
 }
 // Draw at a quarter of the pixels (640×360, 4× MSAA): how much of a frame scales with pixels and
 // how much with vertices and triangles.
 void BM_R1_DrawQuarterPixels(benchmark::State& state) {
   Scene& s = scene();
-  static Renderer small{Look{}, 4};
+  static Renderer small{Look{}, Antialiasing::Msaa4};
   static const bool ready = [&] {
     small.upload(s.figure.mesh);
     small.set_occluders(find_occluders(s.figure.skeleton, s.figure.mesh));
@@ -139,24 +148,46 @@ void BM_R1_DrawQuarterPixels(benchmark::State& state) {
 }
 BENCHMARK(BM_R1_DrawQuarterPixels)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-BENCHMARK(BM_R1_Draw)->Args({0, 4})->Args({0, 0})->Args({0, 2})->Args({1, 2})->Args({0, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_R1_Draw)->Args({0, 0})->Args({0, 2})->Args({0, 3})->Args({0, 4})->Args({0, 1})->Args({1, 0})->Args({1, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// A full headless frame: draw + glReadPixels into an Image.
+// A full headless frame: draw + glReadPixels into an Image (+ the edge filter). Args: skinning
+// device (0 GPU, 1 CPU), antialiasing (Scene::by_arg).
 void BM_R1_DrawAndReadback(benchmark::State& state) {
   Scene& s = scene();
   const auto device = static_cast<SkinningDevice>(state.range(0));
+  Renderer& renderer = s.by_arg(state.range(1));
   Image image;
   int frame = 0;
   const CpuMeter meter;
   for (auto _ : state) {
-    s.draw(frame++, device);
-    s.renderer.read_pixels(image);
+    s.draw(frame++, device, &renderer);
+    renderer.read_pixels(image);
   }
   meter.report(state);
   set_counters(state);
-  state.SetLabel(device == SkinningDevice::Gpu ? "gpu skinning" : "cpu skinning + upload");
+  state.SetLabel(std::string(device == SkinningDevice::Gpu ? "gpu skinning, " : "cpu skinning + upload, ") +
+                 Scene::name(state.range(1)));
 }
-BENCHMARK(BM_R1_DrawAndReadback)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_R1_DrawAndReadback)->Args({0, 0})->Args({0, 2})->Args({1, 0})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The edge filter alone (render/edge_filter.hpp) over a drawn one-sample frame, the figure's rectangle.
+void BM_R1_EdgeFilter(benchmark::State& state) {
+  Scene& s = scene();
+  s.draw(10, SkinningDevice::Gpu, &s.single_sample);
+  Image drawn;
+  s.single_sample.read_pixels(drawn);
+  Image image = drawn;
+  EdgeFilterScratch scratch;
+  const CpuMeter meter;
+  for (auto _ : state) {
+    std::copy(drawn.rgba.begin(), drawn.rgba.end(), image.rgba.begin());
+    smooth_edges(image, {0, 0, kWidth, kHeight}, scratch);
+  }
+  meter.report(state);
+  set_counters(state);
+  state.SetLabel("whole 1280x720 image (copy included)");
+}
+BENCHMARK(BM_R1_EdgeFilter)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Readback alone (the frame is already drawn).
 void BM_R1_Readback(benchmark::State& state) {
@@ -197,13 +228,15 @@ void BM_R1_Encode(benchmark::State& state) {
 }
 BENCHMARK(BM_R1_Encode)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// Export end to end (4x MSAA, as `gestura render`): pose, draw, read back, encode — frames per second of video written. Args:
-// format (0 mp4, 1 webm, 2 gif), encoder on its own thread (1, as render_to_file does) or inline (0).
+// Export end to end (as `gestura render`): pose, draw, read back, encode — frames per second of
+// video written. Args: format (0 mp4, 1 webm, 2 gif), encoder on its own thread (1, as
+// render_to_file does) or inline (0), antialiasing (Scene::by_arg: 0 4× MSAA, 2 edge filter).
 void BM_R1_Export(benchmark::State& state) {
   Scene& s = scene();
   const std::string path = (std::filesystem::temp_directory_path() / "gestura_bench_export.").string() +
                            kExtensions[state.range(0)];
   const bool threaded = state.range(1) == 1;
+  Renderer& renderer = s.by_arg(state.range(2));
   Image image;
   {
     VideoWriter writer(path, kWidth, kHeight, 30);
@@ -212,8 +245,8 @@ void BM_R1_Export(benchmark::State& state) {
     int frame = 0;
     const CpuMeter meter;
     for (auto _ : state) {
-      s.draw(frame++, SkinningDevice::Gpu);
-      s.renderer.read_pixels(image);
+      s.draw(frame++, SkinningDevice::Gpu, &renderer);
+      renderer.read_pixels(image);
       if (encoder) encoder->submit(image);
       else writer.write(image);
     }
@@ -223,9 +256,18 @@ void BM_R1_Export(benchmark::State& state) {
   }
   std::remove(path.c_str());
   set_counters(state);
-  state.SetLabel(std::string(kExtensions[state.range(0)]) + (threaded ? ", encoder thread" : ", inline encode"));
+  state.SetLabel(std::string(kExtensions[state.range(0)]) + (threaded ? ", encoder thread, " : ", inline encode, ") +
+                 Scene::name(state.range(2)));
 }
-BENCHMARK(BM_R1_Export)->Args({0, 0})->Args({0, 1})->Args({1, 1})->Args({2, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_R1_Export)
+    ->Args({0, 0, 0})
+    ->Args({0, 1, 0})
+    ->Args({0, 1, 2})
+    ->Args({1, 1, 0})
+    ->Args({1, 1, 2})
+    ->Args({2, 1, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace gestura

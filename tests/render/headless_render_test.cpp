@@ -2,6 +2,7 @@
 // body is, presets see different things, GPU and CPU skinning agree, morphs and colours apply.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
@@ -215,6 +216,43 @@ TEST_F(HeadlessRender, BackgroundChangeRepaintsTheWholeImage) {
   EXPECT_EQ(int(blue.pixel(0, kH - 1)[2]), 102);
   look_ = Look{};
   EXPECT_EQ(draw(CameraPreset::Front).rgba, fresh.rgba);
+}
+
+// One sample is one sample (asked for a multisampled target of 1, Mesa gives 4); all three draw
+// the same figure; the edge filter changes only pixels beside an edge, and some of them.
+TEST_F(HeadlessRender, OneSampleAndTheEdgeFilterDrawTheSameFigureAsMultisampling) {
+  const View view{preset_camera(CameraPreset::Front, box_, float(kW) / kH), {0, 0, kW, kH}};
+  auto draw_with = [&](Antialiasing antialiasing) {
+    Renderer renderer(look_, antialiasing);
+    renderer.upload(figure_->mesh);
+    renderer.resize(kW, kH);
+    EXPECT_EQ(renderer.samples(), antialiasing == Antialiasing::Msaa4 ? 4 : 1);
+    renderer.render({&view, 1}, animator_->skinning(), animator_->morph_weights());
+    Image image;
+    renderer.read_pixels(image);
+    return image;
+  };
+  const Image msaa = draw_with(Antialiasing::Msaa4), single = draw_with(Antialiasing::None),
+              filtered = draw_with(Antialiasing::EdgeFilter);
+  const int covered = coverage(msaa);
+  EXPECT_NEAR(coverage(single), covered, covered / 30);
+  EXPECT_NEAR(coverage(filtered), covered, covered / 30);
+  int changed = 0;
+  for (int y = 1; y + 1 < kH; ++y)
+    for (int x = 1; x + 1 < kW; ++x) {
+      if (std::equal(filtered.pixel(x, y), filtered.pixel(x, y) + 4, single.pixel(x, y))) continue;
+      ++changed;
+      bool beside_edge = false;  // some neighbour within 2 pixels differs strongly in the unfiltered image
+      for (int dy = -2; dy <= 2 && !beside_edge; ++dy)
+        for (int dx = -2; dx <= 2 && !beside_edge; ++dx) {
+          const int nx = std::clamp(x + dx, 0, kW - 1), ny = std::clamp(y + dy, 0, kH - 1);
+          int difference = 0;
+          for (int c = 0; c < 3; ++c) difference += std::abs(int(single.pixel(nx, ny)[c]) - int(single.pixel(x, y)[c]));
+          beside_edge = difference >= 10;  // the filter's contrast threshold is 1/24 of the luma range
+        }
+      EXPECT_TRUE(beside_edge) << x << "," << y;
+    }
+  EXPECT_GT(changed, 50);
 }
 
 TEST_F(HeadlessRender, TooFewSkinningMatricesAndTooManyMorphWeightsAreErrors) {

@@ -19,7 +19,7 @@ RenderJob render_job(const RenderRequest& request) {
   for (const std::string& setting : request.color)
     as_field_error(ErrorCategory::usage, "color", [&] { apply_color_setting(job.look, setting); });
   job.rest_seconds = request.seconds;
-  job.msaa_samples = request.msaa;
+  job.msaa_samples = request.msaa.value_or(0);
   job.skinning = request.cpu_skinning ? SkinningDevice::Cpu : SkinningDevice::Gpu;
   return job;
 }

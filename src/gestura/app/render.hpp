@@ -22,7 +22,7 @@ struct RenderRequest {
   std::vector<std::string> color;  // MATERIAL=#rrggbb
   float time = 0.0f;
   float seconds = 2.0f;
-  int msaa = 4;
+  std::optional<int> msaa;  // unset: by output (RenderJob::msaa_samples 0)
   bool cpu_skinning = false;
 
   template <class Self, class Visit>
@@ -34,7 +34,7 @@ struct RenderRequest {
     visit(self.color, FieldInfo{.name = "color", .help = "colour of skin, cloth, hair, eye-white, iris, lips, teeth, tongue, brow, pupil or mouth (repeatable)", .value = "MATERIAL=#rrggbb", .group = "Output"});
     visit(self.time, FieldInfo{.name = "time", .help = "the time a single PNG shows (s)", .value = "S", .min = 0, .max = 3600, .group = "Output"});
     visit(self.seconds, FieldInfo{.name = "seconds", .help = "animation length at rest (s)", .value = "S", .min = 0, .max = 3600, .group = "Output"});
-    visit(self.msaa, FieldInfo{.name = "msaa", .help = "samples per pixel for edge smoothing: 1, 2 or 4", .value = "N", .min = 1, .max = 4, .group = "Output"});
+    visit(self.msaa, FieldInfo{.name = "msaa", .help = "edge smoothing: 4 or 2 samples per pixel (multisampling), or 1 sample and an edge filter (half the cost on a CPU renderer)", .value = "N", .min = 1, .max = 4, .group = "Output", .unset = "1 for video, 4 for .png"});
     visit(self.cpu_skinning, FieldInfo{.name = "cpu_skinning", .help = "skin on the CPU and upload (comparison path)", .group = "Output"});
   }
 };

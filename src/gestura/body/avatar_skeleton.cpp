@@ -90,11 +90,16 @@ void add_arm(Builder& b, int vt1, const SideDims& s) {
   // Buryanov & Kotiuk (2010), the last with the fingertip's pad (docs/avatar.md).
   // Thumb: carpometacarpal joint on the palm side near the wrist, its metacarpal pointing down,
   // forward and towards the palm, the phalanges curving back towards "down" beside the index.
+  // The sign layer's thumb poses and this joint's limits are angles from this rest thumb: its CMC
+  // 1.1 cm (0.060 L) on the palm side, the metacarpal 22° out of the palm plane, the phalanges 18°
+  // and 15°, which puts the flat hand's thumb (pressed back to the limit) with its tip ~2 cm from
+  // the palm plane, beside the palm rather than under it. Set deeper (1.6 cm, 26°), it hung 3 cm
+  // below the palm, and a palm laid on the other hand met it with the thumb tip, 10 cm off.
   {
-    const vec3 cmc = hand_point(0.135f, 0.165f, -0.085f);
-    const vec3 d1 = glm::normalize(down * 0.80f + fwd * 0.34f - dorsal * 0.42f);
-    const vec3 d2 = glm::normalize(down * 0.88f + fwd * 0.20f - dorsal * 0.36f);
-    const vec3 d3 = glm::normalize(down * 0.93f + fwd * 0.12f - dorsal * 0.26f);
+    const vec3 cmc = hand_point(0.135f, 0.165f, -0.060f);
+    const vec3 d1 = glm::normalize(down * 0.80f + fwd * 0.34f - dorsal * 0.349f);
+    const vec3 d2 = glm::normalize(down * 0.88f + fwd * 0.20f - dorsal * 0.300f);
+    const vec3 d3 = glm::normalize(down * 0.93f + fwd * 0.12f - dorsal * 0.248f);
     const int t1 = b.add(p + "thumb1", wrist, cmc,
                          limits(dofs(RotationOrder::ZXY, kX | kY | kZ, {-20, -45, -60}, {50, 15, 15})));
     const vec3 mcp = cmc + d1 * (0.250f * s.hand * s.phalanx);

@@ -38,12 +38,17 @@ struct RenderJob {
   float still_time = 0.0f;                     // the time a single PNG shows
   float rest_seconds = 2.0f;                   // animation length when the subject has no clip
   SkinningDevice skinning = SkinningDevice::Gpu;
-  int msaa_samples = 4;                        // 1, 2 or 4: on llvmpipe 4 costs no more CPU than 1 (bench R1)
+  int msaa_samples = 0;                        // 1, 2 or 4 (llvmpipe: 2 is 4; 4 costs about twice 1, bench R1);
+                                               // 0: by output (job_antialiasing: video 1, PNG 4)
+  bool edge_filter = true;                     // with 1 sample: edges smoothed by the edge filter
 };
 
 // Throws gestura::Error for a bad combination (sheet with a video, unknown extension, sizes out of
 // range, odd sizes for MP4/WebM) before anything is rendered.
 void validate(const RenderJob& job);
+
+// The renderer's antialiasing for the job's msaa_samples, edge_filter and output.
+Antialiasing job_antialiasing(const RenderJob& job);
 
 // The number of frames an animation of `seconds` at `fps` has: frames at 0, 1/fps, … up to and
 // including the end (at least 1).

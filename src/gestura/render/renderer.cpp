@@ -10,6 +10,7 @@
 #include "gestura/core/error.hpp"
 #include "gestura/body/morph.hpp"
 #include "gestura/body/skinning.hpp"
+#include "gestura/render/edge_filter.hpp"
 
 namespace gestura {
 namespace {
@@ -199,6 +200,10 @@ void check_gl(const char* what) {
 
 }  // namespace
 
+Antialiasing antialiasing_for_samples(int samples) {
+  return samples >= 4 ? Antialiasing::Msaa4 : samples >= 2 ? Antialiasing::Msaa2 : Antialiasing::None;
+}
+
 struct Renderer::Gl {
   GLuint program = 0;
   GLint u_view_projection = -1, u_skin_on_gpu = -1, u_morphs_active = -1, u_eye = -1, u_view_direction = -1,
@@ -213,10 +218,12 @@ struct Renderer::Gl {
   GLsizei index_count = 0;
 };
 
-Renderer::Renderer(const Look& look, int msaa_samples) : gl_(std::make_unique<Gl>()), look_(look) {
+Renderer::Renderer(const Look& look, Antialiasing antialiasing) : gl_(std::make_unique<Gl>()), look_(look) {
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  samples_ = std::clamp(msaa_samples, 1, std::max(1, static_cast<int>(max_samples)));
+  const int asked = antialiasing == Antialiasing::Msaa4 ? 4 : antialiasing == Antialiasing::Msaa2 ? 2 : 1;
+  samples_ = std::clamp(asked, 1, std::max(1, static_cast<int>(max_samples)));
+  edge_filter_ = antialiasing == Antialiasing::EdgeFilter;
 
   GLint block_bytes = 0;
   glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &block_bytes);
@@ -256,6 +263,7 @@ Renderer::Renderer(const Look& look, int msaa_samples) : gl_(std::make_unique<Gl
   glUniformBlockBinding(g.program, glGetUniformBlockIndex(g.program, "Joints"), kJointBlockBinding);
   glUniform1i(loc("u_morph_deltas"), kMorphDeltaUnit);
   glUniform1i(loc("u_morph_weights"), kMorphWeightUnit);
+
 
   GLuint buffers[11];
   glGenBuffers(11, buffers);
@@ -448,13 +456,22 @@ void Renderer::resize(int width, int height) {
     glGenRenderbuffers(1, &g.msaa_depth);
     glGenTextures(1, &g.resolve_color);
   }
-  glBindRenderbuffer(GL_RENDERBUFFER, g.msaa_color);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, g.msaa_depth);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT24, width, height);
+  // One sample: plain (not multisampled) storage. Asked for one sample, Mesa gives its smallest
+  // multisampled count instead (4 on llvmpipe).
+  const bool single = samples_ == 1;
   glBindFramebuffer(GL_FRAMEBUFFER, g.msaa_fbo);
+  glBindRenderbuffer(GL_RENDERBUFFER, g.msaa_color);
+  if (single) glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  else glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, width, height);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, g.msaa_color);
+  glBindRenderbuffer(GL_RENDERBUFFER, g.msaa_depth);
+  if (single) glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+  else glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT24, width, height);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, g.msaa_depth);
+  glBindRenderbuffer(GL_RENDERBUFFER, g.msaa_color);
+  GLint allocated = 0;
+  glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &allocated);
+  allocated_samples_ = std::max(1, static_cast<int>(allocated));
   const GLenum msaa_status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   glBindTexture(GL_TEXTURE_2D, g.resolve_color);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
@@ -664,7 +681,13 @@ PixelRect Renderer::covered_rect(std::span<const View> views, std::span<const ma
 
 unsigned Renderer::resolved_texture() const { return gl_->resolve_color; }
 
-void Renderer::read_pixels(Image& out) { read_framebuffer(gl_->resolve_fbo, width_, height_, out); }
+void Renderer::read_pixels(Image& out) {
+  read_framebuffer(gl_->resolve_fbo, width_, height_, out);
+  // Edges exist only where the figure is: outside its rectangle the image is background.
+  if (edge_filter_ && !resolved_rect_.empty())
+    smooth_edges(out, {resolved_rect_.x0, height_ - resolved_rect_.y1, resolved_rect_.x1, height_ - resolved_rect_.y0},
+                 edge_scratch_);
+}
 
 void Renderer::read_window_pixels(Image& out, int framebuffer_width, int framebuffer_height) {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);

@@ -10,14 +10,16 @@
 //         of (delta, morph index) entries per vertex, weights in another texture buffer).
 //   Cpu — morphs and linear blend skinning on the CPU (body/morph, body/skinning), the result
 //         streamed to the GPU every frame (comparison and fallback beyond max_gpu_joints()).
-// Frames go to a 4× MSAA offscreen target, resolved to a texture; read_pixels() reads it back,
-// present() blits it into the window.
+// Frames go to an offscreen target (4× MSAA by default, or one sample; see Antialiasing), resolved
+// to a texture; read_pixels() reads it back (and runs the edge filter if asked), present() blits
+// it into the window.
 #include <cstdint>
 #include <memory>
 #include <span>
 
 #include "gestura/body/mesh.hpp"
 #include "gestura/render/camera.hpp"
+#include "gestura/render/edge_filter.hpp"
 #include "gestura/render/image.hpp"
 #include "gestura/render/look.hpp"
 #include "gestura/render/occluders.hpp"
@@ -43,9 +45,19 @@ struct View {
   Viewport viewport;  // pixels in the render target, origin top-left
 };
 
+// How edges are smoothed. Msaa4 / Msaa2: the GL's multisampling (llvmpipe has only 4 samples, so
+// Msaa2 is 4 there); on llvmpipe a 4-sample frame costs about twice a one-sample frame (bench R1).
+// EdgeFilter: one sample per pixel; read_pixels() then smooths the image's edges on the CPU
+// (render/edge_filter.hpp, FXAA-like), where a GL pass cost llvmpipe as much as multisampling.
+// present() shows the frame unfiltered. None: one sample, stair-stepped edges.
+enum class Antialiasing : std::uint8_t { Msaa4, Msaa2, EdgeFilter, None };
+
+// The antialiasing `--msaa N` names: 4 and 2 samples, or 1 (none).
+Antialiasing antialiasing_for_samples(int samples);
+
 class Renderer {
  public:
-  explicit Renderer(const Look& look = Look{}, int msaa_samples = 4);  // throws gestura::Error on GL failure
+  explicit Renderer(const Look& look = Look{}, Antialiasing antialiasing = Antialiasing::Msaa4);  // throws gestura::Error on GL failure
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -78,6 +90,8 @@ class Renderer {
   // The GL texture holding the resolved frame (rows bottom to top), for a UI that shows it as an
   // image (the studio's preview panel); 0 before the first resize().
   unsigned resolved_texture() const;
+  // Samples per pixel of the drawing target as the GL allocated it (after resize()).
+  int samples() const { return allocated_samples_; }
   // Blocks until the GL has finished drawing (for measuring draw time alone).
   void finish();
 
@@ -90,7 +104,9 @@ class Renderer {
   std::unique_ptr<Gl> gl_;
   Look look_;
   Mesh mesh_;
-  int samples_;
+  int samples_;               // per pixel in the drawing target (1: not multisampled)
+  bool edge_filter_ = false;  // one sample, then the edge filter
+  int allocated_samples_ = 0;
   int width_ = 0, height_ = 0;
   std::size_t joint_limit_ = 0;
   std::size_t max_gpu_joints_ = 0;
@@ -101,6 +117,7 @@ class Renderer {
   PixelRect resolved_rect_;          // where the last frame drew in the resolved image  // 1 + the largest joint index any vertex uses
   std::vector<vec3> scratch_positions_, scratch_normals_, skinned_positions_, skinned_normals_;
   std::vector<float> morph_scratch_;  // the caller's weights padded to one per morph target
+  EdgeFilterScratch edge_scratch_;
 };
 
 }  // namespace gestura

@@ -61,10 +61,27 @@ float BodyRepair::clearance(std::span<const vec3> points, const vec3& at) const 
   return nearest;
 }
 
+namespace {
+float distance_to_segment(const vec3& p, const vec3& a, const vec3& b) {
+  const vec3 ab = b - a;
+  const float len2 = glm::dot(ab, ab);
+  const float t = len2 > 0.0f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+  return glm::distance(p, a + t * ab);
+}
+}  // namespace
+
+// A finger counts along its length (knuckle to tip), not at its points alone: an index held up
+// with its middle close to the nose has its ends 5 cm from the nose and from the face's capsule
+// (the nose stands 2.3 cm out of it), and was taken for a hand out in space and moved aside.
 bool BodyRepair::near_a_body_site(std::span<const vec3> points, const vec3& at) const {
-  for (const vec3& site : body_site_points_)
+  for (const vec3& site : body_site_points_) {
     for (const vec3& p : points)
       if (glm::distance(at + p, site) < kAtBody) return true;
+    if (points.size() < kHandPointCount) continue;
+    for (std::size_t f = 0; f < 4; ++f)  // index .. little finger: knuckle to tip
+      if (distance_to_segment(site, at + points[kKnucklePoints + f], at + points[kTipPoints + 1 + f]) < kAtBody)
+        return true;
+  }
   return false;
 }
 
