@@ -82,9 +82,9 @@ TEST_P(Framing, FrontKeepsElbowsAndRaisedHandsInViewAtEveryMoment) {
   EXPECT_GT(ndc(camera, crown).y, 0.6f);
   EXPECT_LT(ndc(camera, crown).y, 1.0f);
   EXPECT_NEAR(ndc(camera, vec3(model[static_cast<std::size_t>(joint("skullbase"))][3])).x, 0.0f, 0.02f);
-  // The hips near the bottom edge (a little above it when wide signs need the camera further back);
-  // the knees are not in the picture.
-  EXPECT_LE(ndc(camera, vec3(model[static_cast<std::size_t>(joint("l_hip"))][3])).y, -0.75f);
+  // The hips near the bottom edge (a little above it when wide or raised signs need the camera
+  // further back: HOUSE's roof above the head puts them at -0.74); the knees are not in the picture.
+  EXPECT_LE(ndc(camera, vec3(model[static_cast<std::size_t>(joint("l_hip"))][3])).y, -0.70f);
   EXPECT_LT(ndc(camera, vec3(model[static_cast<std::size_t>(joint("l_knee"))][3])).y, -1.0f);
 }
 

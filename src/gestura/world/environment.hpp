@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "gestura/core/triangle.hpp"
 #include "gestura/world/bvh.hpp"
 #include "gestura/world/scene_geometry.hpp"
 
@@ -67,9 +68,6 @@ bool line_of_sight(const Environment& env, const vec3& a, const vec3& b, int ign
 // Exact signed distance from `p` to the nearest primitive (negative inside one); +1e30 without
 // primitives. Meshes are not counted (they have no inside): use the BVH for them.
 float primitive_signed_distance(const Environment& env, const vec3& p, int* object = nullptr);
-
-// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5).
-vec3 closest_point_on_triangle(const vec3& p, const vec3& a, const vec3& b, const vec3& c);
 
 // Closest points between segment p0–p1 and triangle abc; returns the distance.
 float segment_triangle_distance(const vec3& p0, const vec3& p1, const vec3& a, const vec3& b, const vec3& c,
