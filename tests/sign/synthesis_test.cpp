@@ -201,7 +201,7 @@ TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body; %d off "
               "their planned key postures (IK residual over 2 cm or 25 degrees)\n", signs, deep, off);
   EXPECT_EQ(deep, 0);   // issue #5: no hand more than 1 cm inside the body (5 before the analytic swivel seed, 1 before detours)
-  EXPECT_LE(off, 15);   // ratchet: measured 15 (22 before the planner kept the performer's hand points off the body; 19 with the chin found by a fixed-height ray; 30 before hands in space took reachable places; 57 before the analytic swivel seed)
+  EXPECT_LE(off, 17);   // ratchet: measured 17 on the anatomical hands of issue 14 (the same 17 signs as the planner before the sign layer became passes); 15 on the previous avatar (22 before the planner kept the performer's hand points off the body; 19 with the chin found by a fixed-height ray; 30 before hands in space took reachable places; 57 before the analytic swivel seed)
 }
 
 TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
@@ -225,9 +225,13 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 // A hand at the body is measured at the point where it meets the body (planned_contact) since
 // the lower face joined the collision body and its sites (chin, lips) count as at the body.
 // Since the planner plans with the performer's hand points (hand_geometry.hpp; 11 of its 16
-// before): 393 off place, 199 turned.
-constexpr int kMaxOffPlace = 350;   // measured 341
-constexpr int kMaxOffTurn = 190;    // measured 182
+// before): 393 off place, 199 turned; measured 341 and 182 on the previous avatar.
+// The anatomical hands of issue 14 (re-laid finger and thumb bones, sculpted nose) measured 426
+// off place and 226 turned with the planner of the time, 409 and 227 with the sign layer as
+// passes (a flat hand's contact found among the hand's ends, hands settling in space staying
+// there).
+constexpr int kMaxOffPlace = 410;   // measured 409
+constexpr int kMaxOffTurn = 228;    // measured 227
 
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits, no hand more
 // than 1 cm inside the collision body (issue #5; 140 signs did before the analytic swivel seed,

@@ -85,6 +85,10 @@ bool BodyRepair::near_a_body_site(std::span<const vec3> points, const vec3& at) 
   return false;
 }
 
+bool BodyRepair::at_the_body(std::span<const vec3> points, const vec3& at) const {
+  return clearance(points, at) - kBodyClearance < kAtBody || near_a_body_site(points, at);
+}
+
 void BodyRepair::keep_out(Hand hand, HandState& state) {
   state.at_body = false;
   if (!state.active) return;
@@ -119,10 +123,14 @@ void BodyRepair::stop_at_surface(Hand hand, const HandState& from, HandState& to
   // through the head out at the back of it, or across the face to its other side.
   if (clearance(points, from.position) < kBodyClearance) return;
   auto at = [&](float t) { return glm::mix(from.position, to.position, t); };
+  // The bisection runs from the last sample clear of the body (the start is) to the first one deep
+  // in it: the sample just before the deep one may itself be a little inside the body already.
+  float outside = 0.0f;
   for (int k = 1; k <= kSurfaceSamples; ++k) {
     float inside = static_cast<float>(k) / kSurfaceSamples;
-    if (clearance(points, at(inside)) > -kPassThrough) continue;
-    float outside = static_cast<float>(k - 1) / kSurfaceSamples;
+    const float c = clearance(points, at(inside));
+    if (c >= kBodyClearance) outside = inside;
+    if (c > -kPassThrough) continue;
     for (int i = 0; i < kSurfaceBisections; ++i) {
       const float mid = 0.5f * (outside + inside);
       (clearance(points, at(mid)) >= kBodyClearance ? outside : inside) = mid;
@@ -143,7 +151,8 @@ void BodyRepair::settle_in_space(Hand hand, HandState& state, const HandState& o
       rig_, std::span(&turn, 1), std::clamp(room + kMinSpaceShift, kMinSpaceShift, kMaxSpaceShift), kTurnSettled,
       [&](const vec3& offset) {
         return std::abs(offset.x) <= kMaxSideShift && glm::dot(offset, movement) >= -0.5f * glm::dot(movement, movement) &&
-               clearance(points, state.position + offset) >= std::min(room, kSpaceClearance);
+               clearance(points, state.position + offset) >= std::min(room, kSpaceClearance) &&
+               !at_the_body(points, state.position + offset);
       });
   if (shift.offset == vec3(0.0f)) return;
   state.position += shift.offset;
@@ -171,7 +180,11 @@ void BodyRepair::settle_together(ByHand<HandState>& states, const ByHand<bool>& 
   const float room = both_clear(vec3(0.0f));
   const ReachableShift shift = nearest_reachable_shift(
       rig_, turns, std::clamp(room + kMinSpaceShift, kMinSpaceShift, kMaxSpaceShift), kTurnSettled,
-      [&](const vec3& offset) { return both_clear(offset) >= std::min(room, kSpaceClearance); });
+      [&](const vec3& offset) {
+        return both_clear(offset) >= std::min(room, kSpaceClearance) &&
+               !at_the_body(points[Hand::Right], states[Hand::Right].position + offset) &&
+               !at_the_body(points[Hand::Left], states[Hand::Left].position + offset);
+      });
   for (Hand hand : kBothHands) {
     states[hand].position += shift.offset;
     keep_out(hand, states[hand]);

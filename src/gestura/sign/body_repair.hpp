@@ -34,8 +34,9 @@ class BodyRepair {
 
   // A place out in the signing space is a region: the hand takes the place nearest the notated
   // one where the arm makes the notated turn, keeping to its side of the body and, when it ends a
-  // `movement`, not giving way against it by more than half of it. A hand at the body, or held to
-  // the other hand (settle_together moves such pairs), stays.
+  // `movement`, not giving way against it by more than half of it, and staying out in space (not
+  // coming to the body, or near a site, where it would be a hand at a place the notation did not
+  // name). A hand at the body, or held to the other hand (settle_together moves such pairs), stays.
   void settle_in_space(Hand hand, HandState& state, const HandState& other, const vec3& movement = vec3(0.0f));
   // The same for both hands of a posture: hands held together out in space move together. Only
   // the hands the posture places (`posed`) move.
@@ -63,6 +64,9 @@ class BodyRepair {
 
  private:
   bool near_a_body_site(std::span<const vec3> points, const vec3& at) const;
+  // Whether a hand with its palm centre at `at` is at the body, as keep_out marks it: within
+  // kAtBody of the collision body (past the planned clearance) or near a body site.
+  bool at_the_body(std::span<const vec3> points, const vec3& at) const;
 
   const SigningRig& rig_;
   Pose scratch_;

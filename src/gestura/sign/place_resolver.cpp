@@ -116,7 +116,12 @@ HandPoints PlaceResolver::hand_points(Hand hand, const HandState& state) {
 }
 
 vec3 PlaceResolver::place_at(Hand hand, const HandState& state, const SurfacePoint& site, float gap) {
-  const HandPoints points = hand_points(hand, state);
+  // The part facing the site is found among the hand's ends (palm faces, fingertips, knuckles),
+  // not its middle joints, which keep_out still keeps off the body. The anatomical thumb's base
+  // joint stands 7 mm nearer the chest than its tip on a flat hand held edge-on: as the one nearest
+  // point it became the contact, 5.6 cm below the thumb tip, and lifted the hand by as much.
+  const HandPoints all = hand_points(hand, state);
+  const std::span<const vec3> points(all.data(), kMiddleJointPoints);
   float nearest = 1e9f;
   for (const vec3& p : points) nearest = std::min(nearest, glm::dot(p, site.normal));
   vec3 contact(0.0f);

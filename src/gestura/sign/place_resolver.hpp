@@ -38,8 +38,8 @@ class PlaceResolver {
                     bool both_hands) const;
 
   // Palm-centre position that puts the part of the hand facing the site `gap` metres out from
-  // its point: the hand points nearest the body along the site's normal (averaged when several
-  // are about as near, like a flat palm) land on it.
+  // its point: the hand's ends (palm faces, tips, knuckles) nearest the body along the site's
+  // normal (averaged when several are about as near, like a flat palm) land on it.
   vec3 place_at(Hand hand, const HandState& state, const SurfacePoint& site, float gap);
 
   // Palm-centre position that puts a named part of the hand (HamNoSys "hamchin hamseqbegin
