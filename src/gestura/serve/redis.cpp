@@ -2,6 +2,9 @@
 
 #include <hiredis/hiredis.h>
 
+#include <csignal>
+#include <mutex>
+
 namespace gestura::serve {
 namespace {
 
@@ -55,6 +58,10 @@ void Redis::drop() {
 }
 
 void Redis::connect() {
+  // hiredis writes with write(2): a broker that went away would raise SIGPIPE and end the process
+  // (server or worker) instead of failing the command. Network processes never want SIGPIPE.
+  static std::once_flag ignore_sigpipe;
+  std::call_once(ignore_sigpipe, [] { std::signal(SIGPIPE, SIG_IGN); });
   drop();
   const timeval tv = to_timeval(timeout_);
   context_ = url_.socket.empty() ? redisConnectWithTimeout(url_.host.c_str(), url_.port, tv)

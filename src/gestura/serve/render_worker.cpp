@@ -94,6 +94,13 @@ void RenderWorker::run(const std::atomic<int>& stop) {
   bool lost = false;
   auto backoff = 500ms;
   long long last_seen = 0;
+  // Built before the first job is taken, so that a job's time is its render (and a worker that
+  // joins the group is ready); a failure here is met again by the first job and reported there.
+  try {
+    workspace_->signer(app::AvatarChoice{});
+  } catch (const std::exception& e) {
+    log_(me + "could not prepare the default avatar: " + e.what());
+  }
   while (stop.load() == 0) {
     try {
       if (!redis) {
