@@ -227,7 +227,7 @@ TEST_F(BrokerTest, EveryVideoArrivesAfterAWorkerIsKilledMidJob) {
   // Kill the worker rendering the first (longest) job while it is under way.
   const std::string victim_job = ids[0];
   std::string victim;
-  for (int i = 0; i < 3000 && victim.empty(); ++i) {
+  for (int i = 0; i < 12000 && victim.empty(); ++i) {
     const std::string status = job_field(victim_job, "status");
     ASSERT_TRUE(status == "queued" || status == "running") << "the long job ended before a worker could be killed: " << status << "\n" << logs();
     if (status == "running") victim = job_field(victim_job, "worker");
