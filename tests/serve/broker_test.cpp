@@ -77,9 +77,17 @@ TEST(BrokerCli, WorkerNeedsAGoodBrokerUrl) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("--broker"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("unsupported scheme 'amqp'"), std::string::npos) << r.output;
+  r = test::run_cli("worker --broker redis://:hunter2@cache:0");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("bad port '0'"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("hunter2"), std::string::npos) << "errors never show the password: " << r.output;
   r = test::run_cli("worker");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("--broker"), std::string::npos) << r.output;
+  // A server whose broker is not there says so at start.
+  r = test::run_cli("serve --port 0 --broker unix:///nonexistent/gestura-test-redis.sock");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("cannot reach the broker at unix:///nonexistent/gestura-test-redis.sock"), std::string::npos) << r.output;
   r = test::run_cli("worker --help");
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.output.find("--claim-after"), std::string::npos) << r.output;

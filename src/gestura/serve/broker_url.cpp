@@ -7,8 +7,16 @@
 namespace gestura::serve {
 namespace {
 
+// The URL as an error shows it: a password (between "://" and "@") is hidden.
+std::string shown(std::string_view url) {
+  std::string out(url);
+  const std::size_t scheme = out.find("://"), at = out.rfind('@');
+  if (scheme != std::string::npos && at != std::string::npos && at > scheme) out.replace(scheme + 3, at - scheme - 3, "***");
+  return out;
+}
+
 [[noreturn]] void bad(std::string_view url, const std::string& why) {
-  app::usage_error("broker", "'" + std::string(url) + "' " + why +
+  app::usage_error("broker", "'" + shown(url) + "' " + why +
                                  " (expected redis://HOST[:PORT][/DB] or unix:///PATH/redis.sock)");
 }
 

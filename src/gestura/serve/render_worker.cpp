@@ -295,9 +295,11 @@ void RenderWorker::process(Redis& redis, const Entry& entry, const std::atomic<i
     app::RunContext context;
     context.workspace = workspace_.get();
     context.stop = stop_render.get_token();
-    context.progress = [&shared](const app::ProgressUpdate& p) {
+    // Stages name the file being written: clients see its name, not this machine's folders.
+    context.progress = [&shared, path = file.string(), shown = id + job.extension()](const app::ProgressUpdate& p) {
       std::lock_guard lock(shared.mutex);
       shared.progress = p;
+      for (std::size_t at; (at = shared.progress.stage.find(path)) != std::string::npos;) shared.progress.stage.replace(at, path.size(), shown);
       shared.changed = true;
     };
     app::run(say, context);
@@ -312,7 +314,7 @@ void RenderWorker::process(Redis& redis, const Entry& entry, const std::atomic<i
   const std::string key = broker::job_key(id);
   if (cancelled && stopped.load() == Stopped::released) {
     // Back to the queue, claimable at once: its idle time is set past any --claim-after.
-    redis.command({"HSET", key, "status", "queued", "stage", "released by " + options_.name});
+    redis.command({"HSET", key, "status", "queued", "stage", "released by " + options_.name, "done", "0", "total", "0"});
     redis.command({"HINCRBY", key, "version", "1"});
     redis.command({"XCLAIM", broker::kStream, broker::kGroup, options_.name, "0", entry.stream_id, "IDLE", "100000000", "JUSTID"});
     log_(me + "released job " + id + " (stopping)");
@@ -339,7 +341,8 @@ void RenderWorker::process(Redis& redis, const Entry& entry, const std::atomic<i
     return finish(redis, entry);
   }
   redis.command({"SET", broker::video_key(id), video, "EX", std::to_string(broker::kKeepSeconds)});
-  redis.command({"HSET", key, "status", "done", "stage", "", "worker", options_.name});
+  const std::string frames = std::to_string(shared.progress.total);
+  redis.command({"HSET", key, "status", "done", "stage", "", "done", frames, "total", frames, "worker", options_.name});
   redis.command({"HINCRBY", key, "version", "1"});
   redis.command({"EXPIRE", key, std::to_string(broker::kKeepSeconds)});
   finish(redis, entry);
