@@ -16,6 +16,11 @@
 #include <map>
 #include <thread>
 
+#include <utility>  // before Boost.Asio 1.74, which uses std::exchange without it
+
+#include <boost/asio.hpp>
+#include <boost/beast.hpp>
+#include <boost/beast/websocket.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -287,6 +292,36 @@ TEST_F(BrokerTest, MalformedEntriesAreDeadLetteredAndTheWorkerStaysUp) {
   const test::HttpReply r = http(port(), "POST", "/api/video", R"({"text": "hello", "size": "160x90", "fps": 10})");
   ASSERT_EQ(r.status, 202) << r.body;
   const std::string good = json::parse(r.body)["id"];
+  // Its progress arrives over the WebSocket from the broker's record, until it is done.
+  {
+    namespace asio = boost::asio;
+    namespace beast = boost::beast;
+    asio::io_context io;
+    beast::websocket::stream<beast::tcp_stream> ws(io);
+    beast::get_lowest_layer(ws).connect({asio::ip::make_address("127.0.0.1"), static_cast<unsigned short>(port())});
+    ws.handshake("127.0.0.1", "/api/jobs/" + good + "/events");
+    std::string status, ended;
+    int messages = 0, with_frames = 0;
+    for (; messages < 10000; ++messages) {
+      beast::flat_buffer buffer;
+      beast::error_code ec;
+      ws.read(buffer, ec);
+      if (ec) {
+        ended = ec.message();
+        break;
+      }
+      const json m = json::parse(beast::buffers_to_string(buffer.data()));
+      status = m["status"];
+      with_frames += m["total"].get<int>() > 0;
+      if (status != "queued" && status != "running") {
+        EXPECT_EQ(m["download"], "/api/jobs/" + good + "/download");
+        EXPECT_EQ(m["done"], m["total"]);
+        break;
+      }
+    }
+    EXPECT_EQ(status, "done") << "after " << messages << " messages: " << ended;
+    EXPECT_GE(with_frames, 1) << "frame counts came through";
+  }
   ASSERT_TRUE(wait_all({not_json, names_file, good}, 120s)) << logs();
   EXPECT_EQ(job(good)["status"], "done");
 
