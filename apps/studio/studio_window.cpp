@@ -48,6 +48,7 @@
 #include "gestura/studio/script.hpp"
 #include "gestura/studio/sign_preview.hpp"
 #include "gestura/studio/studio_model.hpp"
+#include "environment_panel.hpp"
 
 namespace gestura::studio_ui {
 namespace {
@@ -139,6 +140,7 @@ class Studio {
   void set_field(const std::string& field, const std::string& value);
   void set_learning(bool on);
   void set_posing(bool on);
+  void set_environment(bool on);  // the environment and colour editors (environment_panel.hpp)
   void pose_hand(char side, sign::Symbol handshape);
   void draw_skeleton(const ImVec2& pos, const ImVec2& size);
   void draw_joint(const ImVec2& pos, const ImVec2& size);
@@ -156,7 +158,7 @@ class Studio {
   // A synthesis is running or due (script steps wait for it, so a dump sees the edit's preview).
   void start_export(const std::string& path);
   void finish_export();
-  bool preview_busy() const { return pending_.valid() || export_.valid() || (!learning_ && model_.revision() != requested_revision_); }
+  bool preview_busy() const { return (env_ && env_->busy()) || pending_.valid() || export_.valid() || (!learning_ && model_.revision() != requested_revision_); }
   void render_preview();
   void draw_ui();
   void draw_menu();
@@ -174,7 +176,7 @@ class Studio {
   void screenshot(const std::string& path);
   bool begin_panel(const char* name, const ImVec2& pos, const ImVec2& size);
   float flexion_at(float t, char side);
-  const std::string& status() const { return message_.empty() ? model_.status() : message_; }
+  const std::string& status() const { return !message_.empty() ? message_ : environment_ ? env_->status() : model_.status(); }
   void say(const std::string& text) { message_ = text; }
 
   const app::StudioRequest& request_;
@@ -253,6 +255,9 @@ class Studio {
   bool orbited_ = false;  // the learner moved the left view's camera
   CameraPreset second_view_ = CameraPreset::Side;
   std::uint64_t frame_ = 0;
+  // environment mode
+  bool environment_ = false;
+  std::unique_ptr<EnvironmentPanel> env_;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -373,6 +378,14 @@ void Studio::set_posing(bool on) {
   posing_ = on;
   rendered_ = false;
   say(on ? "pose editor: pick a joint in the tree or click it in the view" : "sign editor");
+}
+
+void Studio::set_environment(bool on) {
+  if (on) set_learning(false), set_posing(false);
+  if (on && !env_) env_ = std::make_unique<EnvironmentPanel>(workspace_->avatar(request_.avatar));
+  if (on != environment_) say(on ? "environment editor: open a scene, click in a view to select, drag the handles" : "sign editor");
+  environment_ = on;
+  rendered_ = false;
 }
 
 void Studio::pose_hand(char side, sign::Symbol handshape) {
@@ -509,6 +522,8 @@ void Studio::execute(const ScriptStep& step) {
   };
   static const char* const keeps_message[] = {"screenshot", "dump", "wait", "time", "play", "pause", "speed", "camera", "views", "panel"};
   if (std::none_of(std::begin(keeps_message), std::end(keeps_message), [&](const char* k) { return a == k; })) message_.clear();
+  if (a.rfind("env-", 0) == 0) set_environment(true);
+  if (environment_ && env_->execute(step)) return;
   if (a == "open") {
     EntryKey key{arg(0), step.args.size() > 1 ? arg(1) : "ase", step.args.size() > 2 ? number(2) : 1};
     model_.open(key);
@@ -606,10 +621,11 @@ void Studio::execute(const ScriptStep& step) {
   } else if (a == "dump") {
     write_dump(arg(0));
   } else if (a == "mode") {
-    if (arg(0) == "learn") set_learning(true);
+    if (arg(0) == "env") set_environment(true);
+    else if (set_environment(false); arg(0) == "learn") set_learning(true);
     else if (arg(0) == "edit") set_learning(false), set_posing(false);
     else if (arg(0) == "pose") set_posing(true);
-    else say("no mode '" + arg(0) + "' (learn, edit)");
+    else say("no mode '" + arg(0) + "' (learn, edit, pose, env)");
   } else if (a == "topic") {
     set_learning(true);
     select_topic(arg(0));
@@ -776,9 +792,10 @@ void Studio::draw_menu() {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Mode")) {
-    if (ImGui::MenuItem("Sign editor", "F9", !learning_ && !posing_)) set_learning(false), set_posing(false);
-    if (ImGui::MenuItem("Learning", "F10", learning_)) set_learning(true);
-    if (ImGui::MenuItem("Pose editor", "F11", posing_)) set_posing(true);
+    if (ImGui::MenuItem("Sign editor", "F9", !learning_ && !posing_ && !environment_)) set_environment(false), set_learning(false), set_posing(false);
+    if (ImGui::MenuItem("Learning", "F10", learning_)) set_environment(false), set_learning(true);
+    if (ImGui::MenuItem("Pose editor", "F11", posing_)) set_environment(false), set_posing(true);
+    if (ImGui::MenuItem("Environment editor", "F8", environment_)) set_environment(true);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
@@ -1325,6 +1342,14 @@ void Studio::draw_popups() {
 void Studio::shortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
   const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+  if (environment_) {
+    env_->shortcuts();
+    if (io.KeyCtrl && pressed(GLFW_KEY_Q)) quit_ = true;
+    if (pressed(GLFW_KEY_F9)) set_environment(false);
+    if (pressed(GLFW_KEY_F10)) set_environment(false), set_learning(true);
+    if (pressed(GLFW_KEY_F11)) set_environment(false), set_posing(true);
+    return;
+  }
   if (io.KeyCtrl) {
     if (posing_) {
       if (pressed(GLFW_KEY_Z) && !io.KeyShift) pose_editor_->undo();
@@ -1352,6 +1377,7 @@ void Studio::shortcuts() {
   if (pressed(GLFW_KEY_F4)) controls_->apply(ViewerCommand::Top);
   if (pressed(GLFW_KEY_F9)) set_learning(false), set_posing(false);
   if (pressed(GLFW_KEY_F11)) set_posing(true);
+  if (pressed(GLFW_KEY_F8)) set_environment(true);
   if (pressed(GLFW_KEY_F10)) set_learning(true);
   if (pressed(GLFW_KEY_R) && learning_) controls_->time = 0.0f, controls_->playing = true;
   if (pressed(GLFW_KEY_DELETE) && selected_symbol_ >= 0) model_.remove_symbol(selected_symbol_), selected_symbol_ = -1;
@@ -1364,6 +1390,13 @@ void Studio::draw_ui() {
   const float w = vp->WorkSize.x, h = vp->WorkSize.y - status_h;
   const float left = std::round(w * 0.2f), right = std::round(w * 0.3f), centre = w - left - right;
   const float problems_h = std::round(h * 0.2f), meta_h = std::round(h * 0.36f), notation_h = std::round(h * 0.26f);
+  if (environment_) {
+    env_->draw({0, top}, {w, h});
+    draw_status({0, top + h}, {w, status_h});
+    draw_popups();
+    shortcuts();
+    return;
+  }
   if (posing_) {
     draw_skeleton({0, top}, {left, h});
     draw_preview({left, top}, {centre, h});
@@ -1427,6 +1460,7 @@ void Studio::write_dump(const std::string& path) {
   j["recovery_offered"] = show_recovery_;
   j["selected_symbol"] = selected_symbol_;
   j["frame"] = frame_;
+  if (env_) j["environment"] = env_->dump();
   j["browse_count"] = rows_.size();
   // The user lexicon's row for the draft's key as stored now (names), null when there is none.
   j["db_names"] = nullptr;
@@ -1529,7 +1563,8 @@ int Studio::run() {
     window_.framebuffer_size(width, height);
     if (width <= 0 || height <= 0) continue;
     const bool timing = log != nullptr;  // glFinish between the parts only when measuring them
-    render_preview();
+    if (environment_) env_->render();
+    else render_preview();
     if (timing) glFinish();
     const Clock::time_point t_preview = Clock::now();
 

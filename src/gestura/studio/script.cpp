@@ -27,7 +27,14 @@ const std::map<std::string, Arity>& actions() {
       {"sentence", {1, 1, true}}, {"quiz", {1, 1}},         {"answer", {1, 1}},        {"next-question", {0, 0}},
       {"views", {1, 1}},         {"speed", {1, 1}},         {"export-sign", {1, 1}},
       {"pose-joint", {1, 1}},    {"pose-angles", {3, 3}},   {"pose-hand", {2, 2}},     {"pose-mirror", {0, 0}},
-      {"pose-morph", {2, 2}}};
+      {"pose-morph", {2, 2}},
+      // the environment and colour editors
+      {"env-open", {1, 1}},      {"env-save", {0, 1}},      {"env-select", {1, 1}},    {"env-tool", {1, 1}},
+      {"env-snap", {1, 2}},      {"env-click", {3, 3}},     {"env-drag", {5, 6}},      {"env-drag-from", {4, 5}},
+      {"env-set", {2, 4}},       {"env-add", {1, 2}},       {"env-delete", {0, 0}},    {"env-duplicate", {0, 0}},
+      {"env-group", {2, 2, true}}, {"env-colour", {1, 1, true}}, {"env-ramp", {2, 2}},   {"env-keep", {1, 1}},
+      {"env-slot", {1, 1}},      {"env-orbit", {3, 3}},     {"env-zoom", {2, 2}},      {"env-frame", {0, 0}},
+      {"env-walk", {2, 2}},      {"env-walk-time", {1, 1}}, {"env-stop", {0, 0}}};
   return table;
 }
 
