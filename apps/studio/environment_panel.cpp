@@ -976,10 +976,12 @@ bool EnvironmentPanel::execute(const studio::ScriptStep& step) {
     std::istringstream words(arg(0));
     std::vector<std::string> parts;
     for (std::string w; words >> w;) parts.push_back(w);
+    // '#' starts a comment in a script: the hex colour may come without it.
+    if (parts.size() == 1 && parts[0].size() == 6 && parts[0].find_first_not_of("0123456789abcdefABCDEF") == std::string::npos) parts[0] = "#" + parts[0];
     if (parts.size() == 1) m.colour.choose(m.editor, parse_scene_color(parts[0], "colour"));
     else if (parts.size() == 4 && parts[0] == "hsv") m.colour.choose_hsv(m.editor, vec3(std::stof(parts[1]), std::stof(parts[2]), std::stof(parts[3])));
     else if (parts.size() == 3) m.colour.choose(m.editor, vec3(std::stof(parts[0]), std::stof(parts[1]), std::stof(parts[2])));
-    else throw Error("a colour is #rrggbb, R G B (0..1) or hsv H S V (0..1)");
+    else throw Error("a colour is rrggbb, R G B (0..1) or hsv H S V (0..1)");
   } else if (a == "env-ramp") {
     if (m.editor.selection().kind != EnvItem::Object) throw Error("select an object to colour");
     m.message.clear(), m.colour.choose_ramp(m.editor, static_cast<std::size_t>(number(0)), static_cast<std::size_t>(number(1)));

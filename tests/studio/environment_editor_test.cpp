@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "gestura/core/error.hpp"
+#include "gestura/studio/colour_editor.hpp"
 #include "gestura/studio/environment_editor.hpp"
 #include "gestura/studio/environment_pick.hpp"
 #include "gestura/world/scene_json.hpp"
@@ -309,6 +310,40 @@ TEST(EnvironmentEditor, SavesAtomicallyAndAMalformedFileChangesNothing) {
   // A file that cannot be written: the error names it, the old file stays whole.
   EXPECT_THROW(editor.save(dir.file("no-such-dir/room.json")), Error);
   EXPECT_NEAR(2.5f, read_scene(dir.file("room.json")).objects[1].transform.position.x, 1e-6f);
+}
+
+TEST(ColourEditor, HsvAndRgbAgreeAndThePaletteFollowsAndColoursTheSelection) {
+  EXPECT_EQ(vec3(0, 1, 1), rgb_to_hsv(vec3(1, 0, 0)));
+  const vec3 blue = rgb_to_hsv(vec3(0, 0, 1));
+  EXPECT_NEAR(2.0f / 3.0f, blue.x, 1e-6f);
+  for (const vec3 c : {vec3(0.2f, 0.4f, 0.6f), vec3(0.9f, 0.1f, 0.5f), vec3(0.3f), vec3(0.0f), vec3(0.7f, 0.65f, 0.1f)}) {
+    const vec3 back = hsv_to_rgb(rgb_to_hsv(c));
+    EXPECT_LT(glm::length(back - c), 1e-5f) << c.x << " " << c.y << " " << c.z;
+  }
+  EXPECT_EQ("#2060c0", color_hex(vec3(0x20, 0x60, 0xc0) / 255.0f));
+
+  TempDir dir;
+  EnvironmentEditor editor = editor_with(dir, room());
+  ColourEditor colour;
+  editor.select("ball");
+  colour.follow(editor);
+  EXPECT_EQ("#51677a", color_hex(colour.palette().color()));  // the ball's fabric
+  colour.choose_ramp(editor, 0, 3);                             // four steps of red up
+  const vec3 chosen = editor.scene().materials.at("ball").color;
+  EXPECT_NEAR(0x51 / 255.0f + 4.0f / 16.0f, chosen.x, 1e-5f);
+  EXPECT_EQ(chosen, colour.palette().color());
+  EXPECT_EQ(vec3(0x8a, 0x5a, 0x36) / 255.0f, editor.scene().materials.at("wood").color);  // others keep theirs
+  colour.store(0);
+  colour.choose_hsv(editor, vec3(0.0f, 0.0f, 1.0f));
+  EXPECT_EQ(vec3(1.0f), editor.scene().materials.at("ball").color);
+  colour.choose_slot(editor, 0);
+  EXPECT_EQ(chosen, editor.scene().materials.at("ball").color);
+  EXPECT_THROW(colour.choose_slot(editor, 1), Error);  // empty
+  EXPECT_THROW(colour.choose_ramp(editor, 6, 0), Error);
+  // Undo takes the colour back and the palette follows it.
+  ASSERT_TRUE(editor.undo());
+  colour.follow(editor);
+  EXPECT_EQ(vec3(1.0f), colour.palette().color());
 }
 
 }  // namespace
