@@ -478,7 +478,12 @@ std::optional<vec3> EnvironmentEditor::selected_color() const {
   std::string material;
   for (std::size_t n = 1; n <= selection_.path.size(); ++n) {
     const std::vector<int> prefix(selection_.path.begin(), selection_.path.begin() + static_cast<std::ptrdiff_t>(n));
-    if (const SceneObject* o = object_at(scene_, prefix); o && !o->material.empty()) material = o->material;
+    if (const SceneObject* o = object_at(scene_, prefix)) {
+      if (!o->material.empty()) material = o->material;
+      // An instance without a material of its own is drawn in its prototype's.
+      else if (const auto p = scene_.prototypes.find(o->instance); !o->instance.empty() && p != scene_.prototypes.end() && !p->second.material.empty())
+        material = p->second.material;
+    }
   }
   if (material.empty()) material = kDefaultMaterial;
   const auto it = scene_.materials.find(material);

@@ -19,6 +19,12 @@
 //   answer GLOSS   next-question   views one|side|three-quarter|top   speed X
 //   pose editor: mode pose   pose-joint NAME   pose-angles X Y Z (degrees)   pose-hand r|l HANDSHAPE
 //   pose-mirror   pose-morph NAME WEIGHT   (undo / redo act on the pose in pose mode)
+//   environment editor (docs/studio.md): mode env   env-open FILE   env-save [FILE]   env-select ITEM
+//   env-tool T   env-snap M [DEG]   env-click VIEW X Y   env-drag VIEW X0 Y0 X1 Y1 [AXIS]
+//   env-drag-from VIEW ITEM DX DY [AXIS]   env-set FIELD X [Y Z]   env-add KIND [NAME]   env-delete
+//   env-duplicate   env-group NAME OBJECT...   env-colour RRGGBB|R G B|hsv H S V   env-ramp R I
+//   env-keep S   env-slot S   env-orbit VIEW DYAW DPITCH   env-zoom VIEW F   env-frame
+//   env-walk CHARACTER TARGET   env-walk-time S   env-stop   (undo / redo act on the scene in env mode)
 #include <string>
 #include <vector>
 
