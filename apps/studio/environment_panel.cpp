@@ -293,7 +293,8 @@ struct EnvironmentPanel::Impl {
     return out;
   }
 
-  void press(int v, vec2 p, int force_axis = -1) {
+  // `whole`: a click on a part of a group selects the group (Shift+click).
+  void press(int v, vec2 p, int force_axis = -1, bool whole = false) {
     if (preview) return;
     const Ray ray = pixel_ray(camera(v), p, view_size(v));
     message.clear();
@@ -305,7 +306,9 @@ struct EnvironmentPanel::Impl {
         if (distance_to_segment(p, hs[i].from + d * 12.0f, hs[i].to) < kHandleGrab) axis = static_cast<int>(i);
       }
     if (axis < 0) {
-      editor.select(editor.pick(ray, &geometry));
+      EnvSelection picked = editor.pick(ray, &geometry);
+      if (whole && picked.kind == EnvItem::Object) picked.path.resize(1);
+      editor.select(picked);
       colour.follow(editor);
       if (editor.selection().empty()) return;
       hs = handles(v);
@@ -457,7 +460,7 @@ void EnvironmentPanel::Impl::open(const std::string& path) {
     message.clear();
     path_field = path;
     stop_walk();
-    framed = false;
+    frame_all();  // the views frame the new scene (now: a script's next step may click in them)
     colour.follow(editor);
   } catch (const Error& e) {
     // Nothing changed: the scene being edited, its file and its history are as they were.
@@ -633,7 +636,7 @@ void EnvironmentPanel::Impl::draw_views(const ImVec2& pos, const ImVec2& size) {
     const ImGuiIO& io = ImGui::GetIO();
     const vec2 mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
     const int under = view_at(mouse);
-    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) press(under, in_view(under, mouse));
+    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) press(under, in_view(under, mouse), -1, io.KeyShift);
     if (drag && ImGui::IsMouseDown(ImGuiMouseButton_Left) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) move_to(in_view(drag->view, mouse));
     if (drag && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) release();
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) orbit_view = under;
