@@ -100,6 +100,7 @@ struct EnvironmentPanel::Impl {
     for (const vec3& p : avatar.mesh.positions) avatar_height = std::max(avatar_height, p.y);
     avatar_height = std::max(avatar_height, 0.5f);
     for (int v = 0; v < 4; ++v) views[static_cast<std::size_t>(v)].orthographic = v >= 2;
+    message = "environment editor: open a scene, click in a view to select, drag the handles (W move, E rotate, R scale)";
   }
 
   const Avatar& avatar;
@@ -868,6 +869,10 @@ void EnvironmentPanel::shortcuts() {
 }
 
 bool EnvironmentPanel::busy() const { return impl_->performing.valid(); }
+void EnvironmentPanel::undo() { impl_->message.clear(), impl_->editor.undo(); }
+void EnvironmentPanel::redo() { impl_->message.clear(), impl_->editor.redo(); }
+std::string EnvironmentPanel::undo_label() const { return impl_->editor.undo_label(); }
+std::string EnvironmentPanel::redo_label() const { return impl_->editor.redo_label(); }
 const std::string& EnvironmentPanel::status() const { return impl_->status(); }
 
 bool EnvironmentPanel::execute(const studio::ScriptStep& step) {

@@ -35,6 +35,11 @@ class EnvironmentPanel {
   // gestura::Error for bad arguments (the studio reports it with the line).
   bool execute(const studio::ScriptStep& step);
   bool busy() const;  // a walk being performed for the preview
+  // The Edit menu's undo and redo in this mode, and what they would undo / redo ("" when nothing).
+  void undo();
+  void redo();
+  std::string undo_label() const;
+  std::string redo_label() const;
   nlohmann::json dump() const;
   const std::string& status() const;
 

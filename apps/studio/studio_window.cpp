@@ -383,7 +383,7 @@ void Studio::set_posing(bool on) {
 void Studio::set_environment(bool on) {
   if (on) set_learning(false), set_posing(false);
   if (on && !env_) env_ = std::make_unique<EnvironmentPanel>(workspace_->avatar(request_.avatar));
-  if (on != environment_) say(on ? "environment editor: open a scene, click in a view to select, drag the handles" : "sign editor");
+  if (on != environment_) say(on ? "" : "sign editor");  // the environment editor's own status line shows
   environment_ = on;
   rendered_ = false;
 }
@@ -779,7 +779,13 @@ void Studio::draw_menu() {
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) quit_ = true;
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Edit")) {
+  if (environment_ && ImGui::BeginMenu("Edit")) {  // the scene's history in the environment editor
+    const std::string undo = "Undo " + env_->undo_label(), redo = "Redo " + env_->redo_label();
+    if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, !env_->undo_label().empty())) env_->undo(), message_.clear();
+    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, !env_->redo_label().empty())) env_->redo(), message_.clear();
+    ImGui::EndMenu();
+  }
+  if (!environment_ && ImGui::BeginMenu("Edit")) {
     const std::string undo = "Undo " + model_.history().undo_label(), redo = "Redo " + model_.history().redo_label();
     if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, model_.history().can_undo())) model_.undo(), message_.clear(), refresh_browse();
     if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, model_.history().can_redo())) model_.redo(), message_.clear(), refresh_browse();
