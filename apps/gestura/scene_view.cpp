@@ -85,6 +85,7 @@ int show_scene(const app::SceneViewRequest& request, const app::RunContext& cont
     std::vector<View> views = scene_views({viewer.cameras[viewer.camera]}, loaded.scene, animator.bounds(), animator.views(), width, height);
     // The characters view glides between its shots; a new camera, or a jump in time, cuts.
     const bool cut = viewer.camera != shown_camera || std::abs(viewer.controls.time - shown_time) > 0.25f;
+    glide.keep_inside(animator.bounds().min + vec3(0.35f), animator.bounds().max - vec3(0.35f));
     if (viewer.cameras[viewer.camera] == "characters") views[0].camera = glide.follow(views[0].camera, cut ? 0.0f : static_cast<float>(viewer.controls.time - shown_time));
     shown_camera = viewer.camera, shown_time = viewer.controls.time;
     renderer.render(views, animator.objects(), animator.frames());

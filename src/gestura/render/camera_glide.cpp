@@ -61,6 +61,8 @@ Camera CameraGlide::follow(const Camera& shot, float dt) {
   c.target = vec3(target_[0].value, target_[1].value, target_[2].value);
   const float p = std::clamp(pitch_.value, deg(-89.0f), deg(89.0f));
   c.eye = c.target + distance_.value * vec3(std::cos(p) * std::sin(yaw_.value), std::sin(p), std::cos(p) * std::cos(yaw_.value));
+  for (int axis : {0, 2})
+    if (inside_min_[axis] <= inside_max_[axis]) c.eye[axis] = std::clamp(c.eye[axis], inside_min_[axis], inside_max_[axis]);
   c.view = glm::lookAt(c.eye, c.target, vec3(0, 1, 0));
   c.projection = glm::perspective(std::clamp(fov_.value, deg(5.0f), deg(150.0f)), lens.aspect, lens.near, lens.far);
   return c;

@@ -18,6 +18,9 @@ class CameraGlide {
   // The camera `dt` seconds after the last call, heading for `shot`. The first call after
   // construction or reset(), and any call with dt <= 0, takes the shot as it is (a cut).
   Camera follow(const Camera& shot, float dt);
+  // Keeps the gliding eye's x and z within [min, max] (a room's walls, less a margin): the way round
+  // between two framings inside a room stays inside it. Unset when min > max on either axis.
+  void keep_inside(const vec3& min, const vec3& max) { inside_min_ = min, inside_max_ = max; }
   void reset() { started_ = false; }
 
  private:
@@ -27,6 +30,7 @@ class CameraGlide {
   float smooth_time_;
   bool started_ = false;
   Spring target_[3], yaw_, pitch_, distance_, fov_;
+  vec3 inside_min_{1.0f}, inside_max_{-1.0f};
 };
 
 }  // namespace gestura

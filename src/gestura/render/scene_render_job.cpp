@@ -110,7 +110,11 @@ RenderReport render_scene_to_file(const Scene& scene, const SceneGeometry& geome
     animator.pose_at(t);
     std::vector<View> views = scene_views(job.cameras, scene, animator.bounds(), animator.views(), width, height);
     for (std::size_t i = 0; i < views.size() && i < names.size(); ++i)
-      if (names[i] == "characters") views[i].camera = glides[i].follow(views[i].camera, dt);
+      if (names[i] == "characters") {
+        // Inside the room as the framing itself is (scene_cameras.cpp: the box less 0.35 m).
+        glides[i].keep_inside(animator.bounds().min + vec3(0.35f), animator.bounds().max - vec3(0.35f));
+        views[i].camera = glides[i].follow(views[i].camera, dt);
+      }
     renderer.render(views, animator.objects(), animator.frames());
     renderer.read_pixels(frame);
   };
