@@ -96,7 +96,7 @@ Aabb environment_bounds(const SceneGeometry& g, const Scene& scene) {
 }  // namespace
 
 struct EnvironmentPanel::Impl {
-  explicit Impl(const Avatar& a) : avatar(a) {
+  Impl(const Avatar& a, float scale) : avatar(a), render_scale(std::clamp(scale, 0.25f, 1.0f)) {
     for (const vec3& p : avatar.mesh.positions) avatar_height = std::max(avatar_height, p.y);
     avatar_height = std::max(avatar_height, 0.5f);
     for (int v = 0; v < 4; ++v) views[static_cast<std::size_t>(v)].orthographic = v >= 2;
@@ -104,6 +104,7 @@ struct EnvironmentPanel::Impl {
   }
 
   const Avatar& avatar;
+  float render_scale = 1.0f;
   float avatar_height = 0.0f;
   EnvironmentEditor editor;
   ColourEditor colour;
@@ -137,6 +138,8 @@ struct EnvironmentPanel::Impl {
     const int w2 = width / 2, h2 = height / 2;
     return Viewport{(v % 2) * w2, (v / 2) * h2, v % 2 ? width - w2 : w2, v / 2 ? height - h2 : h2};
   }
+  int render_width() const { return std::max(16, static_cast<int>(std::lround(static_cast<float>(width) * render_scale))); }
+  int render_height() const { return std::max(16, static_cast<int>(std::lround(static_cast<float>(height) * render_scale))); }
   vec2 view_size(int v) const {
     const Viewport p = viewport(v);
     return vec2(std::max(1, p.width), std::max(1, p.height));
@@ -211,10 +214,16 @@ struct EnvironmentPanel::Impl {
       geometry_seen = ~0ull;
     }
     if (performing.valid() && performing.wait_for(std::chrono::seconds(0)) == std::future_status::ready) finish_walk();
+    // The views render at render_scale of the pixels they are shown at (the cameras are the same).
+    const int rw = render_width(), rh = render_height();
     std::vector<View> list;
-    for (int v = 0; v < 4; ++v) list.push_back(View{camera(v), viewport(v)});
+    for (int v = 0; v < 4; ++v) {
+      const Viewport p = viewport(v);
+      const auto at = [&](int x) { return static_cast<int>(std::lround(static_cast<float>(x) * render_scale)); };
+      list.push_back(View{camera(v), Viewport{at(p.x), at(p.y), at(p.x + p.width) - at(p.x), at(p.y + p.height) - at(p.y)}});
+    }
     if (preview) {
-      if (preview->renderer->width() != width || preview->renderer->height() != height) preview->renderer->resize(width, height);
+      if (preview->renderer->width() != rw || preview->renderer->height() != rh) preview->renderer->resize(rw, rh);
       const float duration = preview->performance.duration;
       if (preview->playing) preview->time += dt;
       if (preview->time > duration) preview->time = duration > 0.0f ? std::fmod(preview->time, duration) : 0.0f;
@@ -228,7 +237,7 @@ struct EnvironmentPanel::Impl {
     } catch (const Error& e) {
       message = std::string("cannot draw the scene: ") + e.what();
     }
-    if (renderer->width() != width || renderer->height() != height) renderer->resize(width, height);
+    if (renderer->width() != rw || renderer->height() != rh) renderer->resize(rw, rh);
     bool same = drawn_revision == editor.revision() && drawn_width == width && drawn_height == height;
     for (int v = 0; v < 4 && same; ++v)
       same = drawn_view[static_cast<std::size_t>(v)] == list[static_cast<std::size_t>(v)].camera.view &&
@@ -405,7 +414,7 @@ struct EnvironmentPanel::Impl {
       std::unique_ptr<WalkPreview> p = performing.get();
       p->animator = std::make_unique<SceneAnimator>(p->scene, p->geometry, p->performance);
       p->renderer = std::make_unique<SceneRenderer>();
-      p->renderer->resize(std::max(16, width), std::max(16, height));
+      p->renderer->resize(render_width(), render_height());
       p->animator->upload(*p->renderer);
       std::string warnings;
       for (const LogEntry& e : p->performance.log)
@@ -628,7 +637,7 @@ void EnvironmentPanel::Impl::draw_views(const ImVec2& pos, const ImVec2& size) {
     width = std::max(16, static_cast<int>(avail.x)), height = std::max(16, static_cast<int>(avail.y));
     SceneRenderer* shown = preview ? preview->renderer.get() : renderer.get();
     const ImVec2 image_size(static_cast<float>(width), static_cast<float>(height));
-    if (shown && shown->width() == width && shown->height() == height)
+    if (shown && shown->width() == render_width() && shown->height() == render_height())
       ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(shown->resolved_texture())), image_size, ImVec2(0, 1), ImVec2(1, 0));
     else
       ImGui::Dummy(image_size);
@@ -826,7 +835,7 @@ void EnvironmentPanel::Impl::draw_colour(const ImVec2& pos, const ImVec2& size) 
 
 // ---------------------------------------------------------------------------------------------
 
-EnvironmentPanel::EnvironmentPanel(const Avatar& avatar) : impl_(std::make_unique<Impl>(avatar)) {}
+EnvironmentPanel::EnvironmentPanel(const Avatar& avatar, float render_scale) : impl_(std::make_unique<Impl>(avatar, render_scale)) {}
 EnvironmentPanel::~EnvironmentPanel() {
   if (impl_->performing.valid()) impl_->performing.wait();
 }

@@ -19,7 +19,8 @@ namespace gestura::studio_ui {
 
 class EnvironmentPanel {
  public:
-  explicit EnvironmentPanel(const Avatar& avatar);
+  // `render_scale`: the views render at this fraction of their pixels (--preview-scale; faster on a CPU).
+  explicit EnvironmentPanel(const Avatar& avatar, float render_scale = 1.0f);
   ~EnvironmentPanel();
   EnvironmentPanel(const EnvironmentPanel&) = delete;
   EnvironmentPanel& operator=(const EnvironmentPanel&) = delete;

@@ -382,7 +382,7 @@ void Studio::set_posing(bool on) {
 
 void Studio::set_environment(bool on) {
   if (on) set_learning(false), set_posing(false);
-  if (on && !env_) env_ = std::make_unique<EnvironmentPanel>(workspace_->avatar(request_.avatar));
+  if (on && !env_) env_ = std::make_unique<EnvironmentPanel>(workspace_->avatar(request_.avatar), request_.preview_scale);
   if (on != environment_) say(on ? "" : "sign editor");  // the environment editor's own status line shows
   environment_ = on;
   rendered_ = false;
