@@ -16,7 +16,7 @@ Invocation prepare() {
   return invocation;
 }
 
-const Registration reg{{"studio", "the sign database editor: browse, edit and preview signs (window)",
+const Registration reg{{"studio", "the sign database editor: browse, edit and preview signs; the environment editor for scenes (window)",
                         "Opens the built-in lexicon read-only under your own SQLite lexicon LEXICON.db (created when\n"
                         "missing). Edit a sign's notation from the HamNoSys palette or as symbol names and watch the\n"
                         "avatar perform it; the parser's error is marked at its symbol and `check`'s problems are\n"

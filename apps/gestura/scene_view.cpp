@@ -2,10 +2,12 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
 
 #include "command.hpp"
+#include "gestura/render/camera_glide.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/png_writer.hpp"
 #include "gestura/render/scene_render_job.hpp"
@@ -67,6 +69,9 @@ int show_scene(const app::SceneViewRequest& request, const app::RunContext& cont
   glfwSetKeyCallback(window.window(), on_key);
   double last = glfwGetTime();
   Image frame;
+  CameraGlide glide;
+  std::size_t shown_camera = ~std::size_t{0};
+  float shown_time = 0.0f;
   for (int drawn = 0; !window.should_close(); ++drawn) {
     glfwPollEvents();
     const double now = glfwGetTime();
@@ -77,8 +82,12 @@ int show_scene(const app::SceneViewRequest& request, const app::RunContext& cont
     if (width <= 0 || height <= 0) continue;
     renderer.resize(width, height);
     animator.pose_at(viewer.controls.time);
-    const std::vector<View> views =
-        scene_views({viewer.cameras[viewer.camera]}, loaded.scene, animator.bounds(), animator.views(), width, height);
+    std::vector<View> views = scene_views({viewer.cameras[viewer.camera]}, loaded.scene, animator.bounds(), animator.views(), width, height);
+    // The characters view glides between its shots; a new camera, or a jump in time, cuts.
+    const bool cut = viewer.camera != shown_camera || std::abs(viewer.controls.time - shown_time) > 0.25f;
+    glide.keep_inside(animator.bounds().min + vec3(0.35f), animator.bounds().max - vec3(0.35f));
+    if (viewer.cameras[viewer.camera] == "characters") views[0].camera = glide.follow(views[0].camera, cut ? 0.0f : static_cast<float>(viewer.controls.time - shown_time));
+    shown_camera = viewer.camera, shown_time = viewer.controls.time;
     renderer.render(views, animator.objects(), animator.frames());
     renderer.present(width, height);
     if (shot && drawn + 1 >= frames) {

@@ -57,6 +57,7 @@
 #include "gestura/studio/timeline_model.hpp"
 #include "figure_panel.hpp"
 #include "timeline_panel.hpp"
+#include "environment_panel.hpp"
 
 namespace gestura::studio_ui {
 namespace {
@@ -155,6 +156,7 @@ class Studio {
   void set_field(const std::string& field, const std::string& value);
   void set_learning(bool on);
   void set_posing(bool on);
+  void set_environment(bool on);  // the environment and colour editors (environment_panel.hpp)
   void pose_hand(char side, sign::Symbol handshape);
   void draw_skeleton(const ImVec2& pos, const ImVec2& size);
   void draw_joint(const ImVec2& pos, const ImVec2& size);
@@ -190,7 +192,7 @@ class Studio {
   // A synthesis is running or due (script steps wait for it, so a dump sees the edit's preview).
   void start_export(const std::string& path);
   void finish_export();
-  bool preview_busy() const { return pending_.valid() || export_.valid() || (!learning_ && model_.revision() != requested_revision_); }
+  bool preview_busy() const { return (env_ && env_->busy()) || pending_.valid() || export_.valid() || (!learning_ && model_.revision() != requested_revision_); }
   void render_preview();
   void draw_ui();
   void draw_menu();
@@ -208,7 +210,7 @@ class Studio {
   void screenshot(const std::string& path);
   bool begin_panel(const char* name, const ImVec2& pos, const ImVec2& size);
   float flexion_at(float t, char side);
-  const std::string& status() const { return message_.empty() ? model_.status() : message_; }
+  const std::string& status() const { return !message_.empty() ? message_ : environment_ ? env_->status() : model_.status(); }
   void say(const std::string& text) { message_ = text; }
 
   const app::StudioRequest& request_;
@@ -310,6 +312,9 @@ class Studio {
   bool orbited_ = false;  // the learner moved the left view's camera
   CameraPreset second_view_ = CameraPreset::Side;
   std::uint64_t frame_ = 0;
+  // environment mode
+  bool environment_ = false;
+  std::unique_ptr<EnvironmentPanel> env_;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -432,6 +437,14 @@ void Studio::set_posing(bool on) {
   posing_ = on;
   rendered_ = false;
   say(on ? "pose editor: pick a joint in the tree or click it in the view" : "sign editor");
+}
+
+void Studio::set_environment(bool on) {
+  if (on) set_learning(false), set_posing(false), set_timeline_mode(false), set_figure_mode(false);
+  if (on && !env_) env_ = std::make_unique<EnvironmentPanel>(workspace_->avatar(request_.avatar), request_.preview_scale);
+  if (on != environment_) say(on ? "" : "sign editor");  // the environment editor's own status line shows
+  environment_ = on;
+  rendered_ = false;
 }
 
 void Studio::pose_hand(char side, sign::Symbol handshape) {
@@ -569,6 +582,8 @@ void Studio::execute(const ScriptStep& step) {
   static const char* const keeps_message[] = {"screenshot", "dump", "wait", "time", "play", "pause", "speed", "camera", "views", "panel"};
   if (std::none_of(std::begin(keeps_message), std::end(keeps_message), [&](const char* k) { return a == k; })) message_.clear();
   if (execute_timeline_or_figure(step)) return;
+  if (a.rfind("env-", 0) == 0) set_environment(true);
+  if (environment_ && env_->execute(step)) return;
   if (a == "open") {
     EntryKey key{arg(0), step.args.size() > 1 ? arg(1) : "ase", step.args.size() > 2 ? number(2) : 1};
     model_.open(key);
@@ -666,10 +681,11 @@ void Studio::execute(const ScriptStep& step) {
   } else if (a == "dump") {
     write_dump(arg(0));
   } else if (a == "mode") {
-    if (arg(0) == "learn") set_learning(true);
+    if (arg(0) == "env") set_environment(true);
+    else if (set_environment(false); arg(0) == "learn") set_learning(true);
     else if (arg(0) == "edit") set_learning(false), set_posing(false), set_timeline_mode(false), set_figure_mode(false);
     else if (arg(0) == "pose") set_posing(true);
-    else say("no mode '" + arg(0) + "' (learn, edit, pose, timeline, figure)");
+    else say("no mode '" + arg(0) + "' (learn, edit, pose, timeline, figure, env)");
   } else if (a == "topic") {
     set_learning(true);
     select_topic(arg(0));
@@ -848,7 +864,13 @@ void Studio::draw_menu() {
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) quit_ = true;
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Edit")) {
+  if (environment_ && ImGui::BeginMenu("Edit")) {  // the scene's history in the environment editor
+    const std::string undo = "Undo " + env_->undo_label(), redo = "Redo " + env_->redo_label();
+    if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, !env_->undo_label().empty())) env_->undo(), message_.clear();
+    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, !env_->redo_label().empty())) env_->redo(), message_.clear();
+    ImGui::EndMenu();
+  }
+  if (!environment_ && ImGui::BeginMenu("Edit")) {
     const std::string undo = "Undo " + model_.history().undo_label(), redo = "Redo " + model_.history().redo_label();
     if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, model_.history().can_undo())) model_.undo(), message_.clear(), refresh_browse();
     if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, model_.history().can_redo())) model_.redo(), message_.clear(), refresh_browse();
@@ -861,12 +883,13 @@ void Studio::draw_menu() {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Mode")) {
-    if (ImGui::MenuItem("Sign editor", "F9", !learning_ && !posing_ && !figure_or_timeline()))
-      set_learning(false), set_posing(false), set_timeline_mode(false), set_figure_mode(false);
-    if (ImGui::MenuItem("Learning", "F10", learning_)) set_learning(true);
-    if (ImGui::MenuItem("Pose editor", "F11", posing_)) set_posing(true);
+    if (ImGui::MenuItem("Sign editor", "F9", !learning_ && !posing_ && !figure_or_timeline() && !environment_))
+      set_environment(false), set_learning(false), set_posing(false), set_timeline_mode(false), set_figure_mode(false);
+    if (ImGui::MenuItem("Learning", "F10", learning_)) set_environment(false), set_learning(true);
+    if (ImGui::MenuItem("Pose editor", "F11", posing_)) set_environment(false), set_posing(true);
     if (ImGui::MenuItem("Timeline editor", "F8", timeline_mode_)) set_timeline_mode(true);
     if (ImGui::MenuItem("Figure editor", "F7", figure_mode_)) set_figure_mode(true);
+    if (ImGui::MenuItem("Environment editor", "F6", environment_)) set_environment(true);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
@@ -1453,7 +1476,7 @@ void Studio::draw_popups() {
     ImGui::Text("Ctrl+N new   Ctrl+S save   Ctrl+Z undo   Ctrl+Y / Ctrl+Shift+Z redo   Ctrl+D duplicate   Ctrl+Q quit");
     ImGui::Text("Del remove the selected symbol   Space play/pause   , . step a frame   F1..F4 front, side, 3/4, top");
     ImGui::Text("Preview: left drag orbit, right drag pan, wheel zoom; click the timeline to scrub");
-    ImGui::Text("F7 figure editor   F8 timeline editor   F9 sign editor   F10 learning   F11 pose editor   K key the pose (timeline)");
+    ImGui::Text("F6 environment editor   F7 figure editor   F8 timeline editor   F9 sign editor   F10 learning   F11 pose editor   K key the pose (timeline)");
     ImGui::Text("Pose/timeline: tick 'drag hand/foot (IK)' under the view, then drag an arm or leg");
     if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
@@ -1463,6 +1486,16 @@ void Studio::draw_popups() {
 void Studio::shortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
   const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+  if (environment_) {
+    env_->shortcuts();
+    if (io.KeyCtrl && pressed(GLFW_KEY_Q)) quit_ = true;
+    if (pressed(GLFW_KEY_F9)) set_environment(false);
+    if (pressed(GLFW_KEY_F10)) set_environment(false), set_learning(true);
+    if (pressed(GLFW_KEY_F11)) set_environment(false), set_posing(true);
+    if (pressed(GLFW_KEY_F8)) set_environment(false), set_timeline_mode(true);
+    if (pressed(GLFW_KEY_F7)) set_environment(false), set_figure_mode(true);
+    return;
+  }
   if (io.KeyCtrl) {
     if (figure_mode_) {
       if (pressed(GLFW_KEY_Z) && !io.KeyShift) figure_->undo();
@@ -1507,6 +1540,7 @@ void Studio::shortcuts() {
   if (pressed(GLFW_KEY_F7)) set_figure_mode(true);
   if (pressed(GLFW_KEY_F9)) set_timeline_mode(false), set_figure_mode(false);
   if (timeline_mode_ && pressed(GLFW_KEY_K)) key_pose_now(tl_view_.time);
+  if (pressed(GLFW_KEY_F6)) set_environment(true);
   if (pressed(GLFW_KEY_F10)) set_learning(true);
   if (pressed(GLFW_KEY_R) && learning_) controls_->time = 0.0f, controls_->playing = true;
   if (pressed(GLFW_KEY_DELETE) && selected_symbol_ >= 0) model_.remove_symbol(selected_symbol_), selected_symbol_ = -1;
@@ -1521,6 +1555,13 @@ void Studio::draw_ui() {
   const float problems_h = std::round(h * 0.2f), meta_h = std::round(h * 0.36f), notation_h = std::round(h * 0.26f);
   if (timeline_mode_) return draw_timeline_ui(top, w, h, status_h);
   if (figure_mode_) return draw_figure_ui(top, w, h, status_h);
+  if (environment_) {
+    env_->draw({0, top}, {w, h});
+    draw_status({0, top + h}, {w, status_h});
+    draw_popups();
+    shortcuts();
+    return;
+  }
   if (posing_) {
     draw_skeleton({0, top}, {left, h});
     draw_preview({left, top}, {centre, h});
@@ -1556,7 +1597,7 @@ void Studio::draw_ui() {
 void Studio::set_timeline_mode(bool on) {
   if (on == timeline_mode_) return;
   if (on) {
-    set_learning(false), set_figure_mode(false);
+    set_environment(false), set_learning(false), set_figure_mode(false);
     posing_ = false;
     controls_->playing = false;  // the sign editor's clip does not play behind the timeline
     tl_synced_time_ = -1.0f;  // show the timeline's pose at the playhead
@@ -1568,7 +1609,7 @@ void Studio::set_timeline_mode(bool on) {
 
 void Studio::set_figure_mode(bool on) {
   if (on == figure_mode_) return;
-  if (on) set_learning(false), set_timeline_mode(false), posing_ = false, controls_->playing = false;
+  if (on) set_environment(false), set_learning(false), set_timeline_mode(false), posing_ = false, controls_->playing = false;
   // The figure is seen whole (a sign frames the upper body); the sign's framing comes back after.
   if (on) {
     sign_box_ = controls_->box;
@@ -2064,6 +2105,7 @@ void Studio::write_dump(const std::string& path) {
   j["recovery_offered"] = show_recovery_;
   j["selected_symbol"] = selected_symbol_;
   j["frame"] = frame_;
+  if (env_) j["environment"] = env_->dump();
   j["browse_count"] = rows_.size();
   // The user lexicon's row for the draft's key as stored now (names), null when there is none.
   j["db_names"] = nullptr;
@@ -2171,7 +2213,8 @@ int Studio::run() {
     window_.framebuffer_size(width, height);
     if (width <= 0 || height <= 0) continue;
     const bool timing = log != nullptr;  // glFinish between the parts only when measuring them
-    render_preview();
+    if (environment_) env_->render();
+    else render_preview();
     if (timing) glFinish();
     const Clock::time_point t_preview = Clock::now();
 

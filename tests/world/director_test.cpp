@@ -228,4 +228,90 @@ TEST(Director, TakesACupFromATableByBendingOverIt) {
   EXPECT_LT(deepest, 0.01f);
 }
 
+TEST(Director, CrouchesForACupNearTheFloorWithItsFeetPlanted) {
+  // A cup on a narrow plinth (too small to step onto): its middle 20 cm above the floor, far below what bending over reaches.
+  Scene scene = parse_scene(R"({
+    "objects": [
+      {"name": "floor", "shape": "box", "size": [6, 0.1, 6], "position": [0, -0.05, 0]},
+      {"name": "stool", "shape": "box", "size": [0.14, 0.15, 0.14], "position": [0, 0.075, 0]},
+      {"name": "cup", "shape": "cylinder", "radius": 0.035, "height": 0.1, "position": [0, 0.2, 0]}
+    ],
+    "characters": [{"name": "anna", "sex": "female", "height": 1.65, "position": [0.1, 0.6], "facing": 180}]
+  })", "stool.json");
+  const SceneGeometry geometry = build_scene_geometry(scene);
+  const ScenePerformance performance = perform_scene(scene, geometry, parse_script("anna takes the cup", "script.txt"));
+  float reach = -1.0f;
+  for (const LogEntry& e : performance.log) {
+    std::printf("%6.2f %s%s\n", e.time, e.warning ? "warning: " : "", e.text.c_str());
+    EXPECT_FALSE(e.warning) << e.text;  // "the hand stops N cm short" would be one: the grasp's palm is within 1 cm
+    if (e.text.find("cup with the") != std::string::npos) reach = e.time;
+  }
+  ASSERT_GT(reach, 0.0f);
+  const PerformedCharacter& anna = performance.characters.at(0);
+  const float holding_time = reach + PerformOptions{}.reach_seconds + 0.05f;
+  const auto before = posed(anna, reach), holding = posed(anna, holding_time);
+
+  // She went down on her legs: the hips lower by a good part of the leg, the knees bent.
+  const float hips_down = joint(anna, before, "humanoid_root").y - joint(anna, holding, "humanoid_root").y;
+  std::printf("crouching: the hips go down %.2f m\n", hips_down);
+  EXPECT_GT(hips_down, 0.15f);
+  for (const char* side : {"l", "r"}) {
+    const std::string hip = std::string(side) + "_hip", knee = std::string(side) + "_knee", ankle = std::string(side) + "_ankle";
+    const auto bend = [&](const std::vector<mat4>& m) {
+      const vec3 thigh = glm::normalize(joint(anna, m, knee.c_str()) - joint(anna, m, hip.c_str()));
+      const vec3 shin = glm::normalize(joint(anna, m, ankle.c_str()) - joint(anna, m, knee.c_str()));
+      return to_degrees(std::acos(std::clamp(glm::dot(thigh, shin), -1.0f, 1.0f)));
+    };
+    EXPECT_GT(bend(holding), bend(before) + 30.0f) << side << " knee";
+    // The feet stay planted: over the whole reach (down, holding, up again) the ankles move less
+    // than 1 cm.
+    const float standing = joint(anna, before, "humanoid_root").y;
+    float moved = 0.0f, crouched_for = 0.0f;
+    for (float t = reach; t <= reach + 3.0f; t += 0.02f) {
+      const auto m = posed(anna, t);
+      if (joint(anna, m, "humanoid_root").y < standing - 0.1f) crouched_for += 0.02f;
+      moved = std::max(moved, glm::length(joint(anna, m, ankle.c_str()) - joint(anna, before, ankle.c_str())));
+    }
+    EXPECT_GT(crouched_for, 1.0f);
+    EXPECT_LT(moved, 0.01f) << side << " foot slid";
+  }
+
+  // The hand at the cup: some skin of the reaching hand within 1 cm of its surface, none more than
+  // 1 cm inside; and no skin more than 1 cm into the floor (or the stool) over the whole reach.
+  const Avatar& a = *anna.avatar;
+  std::vector<mat4> inverse_bind(a.skeleton.size()), skinning(a.skeleton.size());
+  {
+    std::vector<mat4> bind(a.skeleton.size());
+    local_to_model(a.skeleton, rest_pose(a.skeleton), bind);
+    for (std::size_t j = 0; j < bind.size(); ++j) inverse_bind[j] = glm::inverse(bind[j]);
+  }
+  const Environment env = build_environment(geometry);
+  Environment cup = env, ground = env;
+  std::erase_if(cup.primitives, [&](const WorldPrimitive& w) { return w.object != geometry.find_object("cup"); });
+  std::erase_if(ground.primitives, [&](const WorldPrimitive& w) { return w.object == geometry.find_object("cup"); });
+  std::vector<vec3> skin(a.mesh.vertex_count());
+  skinning_matrices(holding, inverse_bind, skinning);
+  skin_positions(skinning, a.mesh.joints, a.mesh.weights, a.mesh.positions, skin);
+  float nearest = 1e9f, deepest_in_cup = 0.0f;
+  for (const vec3& v : skin) {
+    const float d = primitive_signed_distance(cup, v);
+    nearest = std::min(nearest, d), deepest_in_cup = std::max(deepest_in_cup, -d);
+  }
+  std::printf("crouching: the hand %.1f mm from the cup, %.1f mm at most into it\n", nearest * 1000.0f, deepest_in_cup * 1000.0f);
+  EXPECT_LT(nearest, 0.01f);
+  EXPECT_LT(deepest_in_cup, 0.01f);
+  float deepest = 0.0f;
+  std::string bone;
+  for (float t = reach; t <= reach + 2.5f; t += 0.1f) {
+    skinning_matrices(posed(anna, t), inverse_bind, skinning);
+    skin_positions(skinning, a.mesh.joints, a.mesh.weights, a.mesh.positions, skin);
+    for (std::size_t k = 0; k < skin.size(); ++k) {
+      const float d = -primitive_signed_distance(ground, skin[k]);
+      if (d > deepest) deepest = d, bone = a.skeleton.names[a.mesh.joints[k][0]];
+    }
+  }
+  std::printf("crouching: deepest skin point %.1f mm into the floor or stool (%s)\n", deepest * 1000.0f, bone.c_str());
+  EXPECT_LT(deepest, 0.01f);
+}
+
 }  // namespace

@@ -1,6 +1,7 @@
 #include "gestura/render/scene_render_job.hpp"
 
 #include "gestura/core/error.hpp"
+#include "gestura/render/camera_glide.hpp"
 #include "gestura/render/encoder_thread.hpp"
 #include "gestura/render/gl_context.hpp"
 #include "gestura/render/png_writer.hpp"
@@ -102,9 +103,18 @@ RenderReport render_scene_to_file(const Scene& scene, const SceneGeometry& geome
   report.renderer = context.description();
   Image frame;
   const float duration = std::max(performance.duration, 0.0f);
-  auto draw = [&](float t, int width, int height) {
+  // The characters view glides between its shots in a video (a still or a sheet's tiles show the shot).
+  const std::vector<std::string> names = expand_scene_cameras(job.cameras, scene);
+  std::vector<CameraGlide> glides(names.size());
+  auto draw = [&](float t, int width, int height, float dt = 0.0f) {
     animator.pose_at(t);
-    const std::vector<View> views = scene_views(job.cameras, scene, animator.bounds(), animator.views(), width, height);
+    std::vector<View> views = scene_views(job.cameras, scene, animator.bounds(), animator.views(), width, height);
+    for (std::size_t i = 0; i < views.size() && i < names.size(); ++i)
+      if (names[i] == "characters") {
+        // Inside the room as the framing itself is (scene_cameras.cpp: the box less 0.35 m).
+        glides[i].keep_inside(animator.bounds().min + vec3(0.35f), animator.bounds().max - vec3(0.35f));
+        views[i].camera = glides[i].follow(views[i].camera, dt);
+      }
     renderer.render(views, animator.objects(), animator.frames());
     renderer.read_pixels(frame);
   };
@@ -134,7 +144,7 @@ RenderReport render_scene_to_file(const Scene& scene, const SceneGeometry& geome
   Progress progress("rendering " + job.output, frames);
   EncoderThread encoder(*video);
   for (int i = 0; i < frames; ++i) {
-    draw(static_cast<float>(i) / static_cast<float>(job.fps), job.size.width, job.size.height);
+    draw(static_cast<float>(i) / static_cast<float>(job.fps), job.size.width, job.size.height, i == 0 ? 0.0f : 1.0f / static_cast<float>(job.fps));
     encoder.submit(frame);
     progress.update(i + 1);
   }

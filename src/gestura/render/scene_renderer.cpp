@@ -507,6 +507,8 @@ void SceneRenderer::read_window_pixels(Image& out, int framebuffer_width, int fr
   check_gl("reading the window back");
 }
 
+unsigned SceneRenderer::resolved_texture() const { return gl_->resolve_color; }
+
 void SceneRenderer::present(int framebuffer_width, int framebuffer_height) {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, gl_->resolve_fbo);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);

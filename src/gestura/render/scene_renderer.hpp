@@ -52,6 +52,8 @@ class SceneRenderer {
   void read_pixels(Image& out);
   void read_window_pixels(Image& out, int framebuffer_width, int framebuffer_height);
   void present(int framebuffer_width, int framebuffer_height);
+  // The last render() as a texture (width() × height(), rows bottom-up): what a UI draws as an image.
+  unsigned resolved_texture() const;
 
  private:
   struct Gl;

@@ -39,7 +39,14 @@ const std::map<std::string, Arity>& actions() {
       {"figure-joint", {1, 1}},  {"figure-rename", {1, 1}}, {"figure-add", {4, 4}},    {"figure-remove", {0, 0}},
       {"figure-copy", {0, 0}},   {"figure-mirror", {0, 0}}, {"figure-offset", {3, 3}}, {"figure-limits", {3, 3}},
       {"figure-order", {1, 1}},  {"figure-dh", {0, 0}},     {"figure-save", {1, 1}},   {"figure-load", {1, 1}},
-      {"figure-view", {1, 1}}};
+      {"figure-view", {1, 1}},
+      // the environment and colour editors
+      {"env-open", {1, 1}},      {"env-save", {0, 1}},      {"env-select", {1, 1}},    {"env-tool", {1, 1}},
+      {"env-snap", {1, 2}},      {"env-click", {3, 3}},     {"env-drag", {5, 6}},      {"env-drag-from", {4, 5}},
+      {"env-set", {2, 4}},       {"env-add", {1, 2}},       {"env-delete", {0, 0}},    {"env-duplicate", {0, 0}},
+      {"env-group", {2, 2, true}}, {"env-colour", {1, 1, true}}, {"env-ramp", {2, 2}},   {"env-keep", {1, 1}},
+      {"env-slot", {1, 1}},      {"env-orbit", {3, 3}},     {"env-zoom", {2, 2}},      {"env-frame", {0, 0}},
+      {"env-walk", {2, 2}},      {"env-walk-time", {1, 1}}, {"env-stop", {0, 0}}};
   return table;
 }
 

@@ -32,6 +32,12 @@
 //   figure-remove   figure-copy   figure-mirror   figure-offset X Y Z   figure-limits AXIS MIN MAX
 //   figure-order XYZ..ZYX   figure-dh   figure-save FILE.bvh   figure-load FILE.bvh
 //   figure-view body|sticks|both   (undo and redo act on the figure in figure mode)
+//   environment editor (docs/studio.md): mode env   env-open FILE   env-save [FILE]   env-select ITEM
+//   env-tool T   env-snap M [DEG]   env-click VIEW X Y   env-drag VIEW X0 Y0 X1 Y1 [AXIS]
+//   env-drag-from VIEW ITEM DX DY [AXIS]   env-set FIELD X [Y Z]   env-add KIND [NAME]   env-delete
+//   env-duplicate   env-group NAME OBJECT...   env-colour RRGGBB|R G B|hsv H S V   env-ramp R I
+//   env-keep S   env-slot S   env-orbit VIEW DYAW DPITCH   env-zoom VIEW F   env-frame
+//   env-walk CHARACTER TARGET   env-walk-time S   env-stop   (undo / redo act on the scene in env mode)
 #include <string>
 #include <vector>
 

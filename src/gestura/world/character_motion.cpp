@@ -4,6 +4,8 @@
 #include <array>
 
 #include "gestura/face/eye_aim.hpp"
+#include "gestura/ik/chain.hpp"
+#include "gestura/ik/limb.hpp"
 #include "gestura/world/grasp.hpp"
 #include "gestura/world/tracks.hpp"
 
@@ -90,6 +92,74 @@ float lean_toward(const Skeleton& s, std::span<const int> spine, int shoulder, c
   return hi;
 }
 
+// Crouching for what lies too low to reach by bending over (alias-movement-through-environments.txt
+// §6.2 reaches the floor with the legs too): the hips go down and a little back, the knees and hips
+// bend, and the feet stay planted where they stood.
+struct Crouch {
+  float drop = 0.0f;  // metres the root goes down
+  vec3 back{0.0f};    // level direction the hips move while going down (away from the object)
+};
+// The hips go back this share of the drop (balance over the feet, as in a squat).
+constexpr float kHipsBack = 0.1f;
+// The deepest crouch, as a share of the leg's length (hip to ankle).
+constexpr float kMaxCrouch = 0.62f;
+
+// Lowers the root by weight · crouch.drop and solves each leg (two-bone IK, the knee toward the toes)
+// so its ankle stays where it is in `pose` and its foot keeps its turn in the world.
+void apply_crouch(const Skeleton& s, const WalkRig& w, const Crouch& crouch, float weight, Pose& pose) {
+  if (crouch.drop <= 0.0f || weight <= 0.0f || w.root < 0) return;
+  std::vector<mat4> model(s.size());
+  local_to_model(s, pose, model);
+  vec3 ankle[2];
+  quat foot[2];
+  for (int k = 0; k < 2; ++k) {
+    const auto a = static_cast<std::size_t>(w.legs[static_cast<std::size_t>(k)].ankle);
+    ankle[k] = vec3(model[a][3]);
+    foot[k] = glm::normalize(glm::quat_cast(mat3(model[a])));
+  }
+  pose.translations[static_cast<std::size_t>(w.root)] += weight * crouch.drop * (vec3(0.0f, -1.0f, 0.0f) + kHipsBack * crouch.back);
+  local_to_model(s, pose, model);
+  for (int k = 0; k < 2; ++k) {
+    const LegRig& leg = w.legs[static_cast<std::size_t>(k)];
+    vec3 toes = foot[k] * vec3(0.0f, 0.0f, 1.0f);
+    toes.y = 0.0f;
+    toes = glm::length(toes) > 1e-4f ? glm::normalize(toes) : vec3(0, 0, 1);
+    const vec3 hip = vec3(model[static_cast<std::size_t>(leg.hip)][3]);
+    solve_limb(s, pose, leg.hip, leg.knee, leg.ankle, vec3(1, 0, 0), ankle[k], (hip + ankle[k]) * 0.5f + toes * 0.8f);
+    const quat parent = glm::normalize(glm::quat_cast(mat3(parent_model_matrix(s, pose, leg.ankle))));
+    pose.rotations[static_cast<std::size_t>(leg.ankle)] = glm::normalize(glm::inverse(parent) * foot[k]);
+  }
+}
+
+// The least crouch from which bending over (lean_toward) brings the shoulder within kLeanReach of
+// `target`; none when bending over alone does.
+Crouch plan_crouch(const Skeleton& s, const WalkRig& w, std::span<const int> spine, int shoulder, const vec3& target, const Pose& pose) {
+  const auto reaches = [&](const Crouch& c) {
+    Pose p = pose;
+    apply_crouch(s, w, c, 1.0f, p);
+    lean_toward(s, spine, shoulder, target, p);
+    std::vector<mat4> model(s.size());
+    local_to_model(s, p, model);
+    return glm::length(vec3(model[static_cast<std::size_t>(shoulder)][3]) - target) <= kLeanReach + 1e-3f;
+  };
+  if (w.root < 0 || reaches(Crouch{})) return {};
+  Crouch c;
+  vec3 back = vec3(pose.translations[static_cast<std::size_t>(w.root)]) - target;
+  back.y = 0.0f;
+  c.back = glm::length(back) > 1e-4f ? glm::normalize(back) : vec3(0.0f);
+  const float leg = w.legs[0].thigh + w.legs[0].shin;
+  float lo = 0.0f, hi = kMaxCrouch * leg;
+  c.drop = hi;
+  if (reaches(c)) {
+    for (int i = 0; i < 14; ++i) {
+      c.drop = 0.5f * (lo + hi);
+      (reaches(c) ? hi : lo) = c.drop;
+    }
+    c.drop = hi;
+  }  // else as low as the legs go: the arm gets as near as it can
+  return c;
+}
+
 // One reach worked out at its moment of contact: the grasp, the arm and fingers holding it, and the
 // grasp's frame in the object's own frame (to follow the object when it moves).
 struct PreparedReach {
@@ -107,6 +177,8 @@ struct PreparedReach {
   std::vector<int> joints;    // arm and finger joints the reach drives
   std::vector<int> arm;       // the IK chain
   std::vector<int> spine;     // lumbar and lower thoracic joints bent toward a low or far object
+  Crouch crouch;              // the legs bent for an object near the floor
+  float crouch_from = 0.0f;   // when the legs start bending: once the walk's last step is down
   vec3 palm_local{0.0f}, normal_local{0.0f}, finger_local{0.0f};
   Pose last;                  // the previous frame's held arm (warm start while following)
 };
@@ -196,7 +268,15 @@ CharacterMotion perform_character(const Avatar& avatar, const SigningRig& rig, c
     p.holding = pose;
     for (const char* name : {"vl5", "vl3", "vl1", "vt12"})
       if (const int j = s.find(name); j >= 0) p.spine.push_back(j);
-    if (lean_toward(s, p.spine, h.shoulder, grasp->palm_centre, p.holding) > 0.0f) {
+    p.crouch = plan_crouch(s, walk_rig, p.spine, h.shoulder, grasp->palm_centre, p.holding);
+    // The walk's closing steps may still be landing as the arm sets off: the knees bend once both
+    // feet are down (a step's heel strike and its roll onto the sole), so a planted foot never slides.
+    p.crouch_from = r.start;
+    for (const Footstep& step : out.steps.steps)
+      if (step.lift < r.contact) p.crouch_from = std::max(p.crouch_from, step.land + 0.15f);
+    p.crouch_from = std::min(p.crouch_from, r.contact - 0.25f);
+    apply_crouch(s, walk_rig, p.crouch, 1.0f, p.holding);
+    if (lean_toward(s, p.spine, h.shoulder, grasp->palm_centre, p.holding) > 0.0f || p.crouch.drop > 0.0f) {
       local_to_model(s, p.holding, model);
       if (auto from_there = choose_object_grasp(parts, r.object, vec3(model[static_cast<std::size_t>(h.shoulder)][3]), r.hand, rig))
         grasp = from_there;
@@ -282,6 +362,7 @@ CharacterMotion perform_character(const Avatar& avatar, const SigningRig& rig, c
         // closing them at the end; the body bends over meanwhile.
         const float u = (t - rec.start) / std::max(1e-3f, rec.contact - rec.start);
         const float s_body = minimum_jerk(u);
+        apply_crouch(s, walk_rig, r.crouch, minimum_jerk((t - r.crouch_from) / std::max(1e-3f, rec.contact - r.crouch_from)), pose);
         for (int j : r.spine) pose.rotations[static_cast<std::size_t>(j)] = slerp_short(pose.rotations[static_cast<std::size_t>(j)], r.holding.rotations[static_cast<std::size_t>(j)], s_body);
         if (u < kReadyShare) {
           // The palm goes up first, to the pre-grasp's height, then across to it (not forward through
@@ -320,6 +401,7 @@ CharacterMotion perform_character(const Avatar& avatar, const SigningRig& rig, c
         now.palm_centre = palm;
         now.palm_normal = glm::normalize(mat3(m) * r.normal_local);
         now.finger = glm::normalize(mat3(m) * r.finger_local);
+        apply_crouch(s, walk_rig, r.crouch, 1.0f, pose);
         for (int j : r.spine) pose.rotations[static_cast<std::size_t>(j)] = r.holding.rotations[static_cast<std::size_t>(j)];
         Pose held = pose;
         for (int j : r.joints) held.rotations[static_cast<std::size_t>(j)] = r.last.rotations[static_cast<std::size_t>(j)];
@@ -334,6 +416,7 @@ CharacterMotion perform_character(const Avatar& avatar, const SigningRig& rig, c
         // the object stands on, and drops to where the body carries it; the body straightens.
         const float v = (t - rec.release) / std::max(1e-3f, rec.end - rec.release);
         const Pose body = pose;
+        apply_crouch(s, walk_rig, r.crouch, 1.0f - minimum_jerk((v - 0.2f) / 0.8f), pose);
         for (int j : r.spine) pose.rotations[static_cast<std::size_t>(j)] = slerp_short(r.holding.rotations[static_cast<std::size_t>(j)], body.rotations[static_cast<std::size_t>(j)], minimum_jerk((v - 0.2f) / 0.8f));
         std::vector<mat4> now_model(s.size());
         local_to_model(s, body, now_model);

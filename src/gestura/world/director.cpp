@@ -49,6 +49,7 @@ struct Running {
   std::optional<float> saved_speed;
   int door = -1;  // index into Director::doors_
   float door_from = 0.0f, door_to = 0.0f, swing_start = 0.0f;
+  std::optional<float> feet_down;  // a reach after a walk: when the walk's closing steps are down
 };
 
 struct Chain {
@@ -399,6 +400,9 @@ class Director {
     for (std::size_t i = 0; i < cast_.size(); ++i) sim_->set_signing(static_cast<int>(i), on[i], addressee[i]);
   }
 
+  // How long a walker's closing steps (at most two, gait.cpp) take after its body stops.
+  static constexpr float kFeetSettle = 1.3f;
+
   // --- reaching --------------------------------------------------------------------------------
   Hand hand_toward(int actor, const vec3& point) const {
     const SimActor& me = sim_->actor(actor);
@@ -440,7 +444,17 @@ class Director {
       // surface further down under it (a cup on a table: the floor under the table).
       const vec3 extent(half.x + me.spec.radius + 0.3f, 0.6f, half.z + me.spec.radius + 0.3f);
       vec3 goal(point.x, box.min.y, point.z);
-      PlannedPath path = sim_->walk_to(r.actor, goal, true, std::nullopt, extent);
+      PlannedPath path;
+      if (box.min.y - me.view.position.y < 0.3f) {
+        // Something low enough to step onto (a cup on a footstool): stand beside it, on the side one
+        // comes from, not on what holds it — the legs bend to reach down (character_motion.cpp).
+        vec3 away = me.view.position - box.centre();
+        away.y = 0.0f;
+        away = glm::length(away) > 1e-3f ? glm::normalize(away) : heading(me.view.yaw + kPi);
+        const vec3 beside = vec3(point.x, me.view.position.y, point.z) + away * (std::max(half.x, half.z) + me.spec.radius + 0.15f);
+        path = sim_->walk_to(r.actor, beside, true, std::nullopt, vec3(0.3f, 0.6f, 0.3f));
+      }
+      if (path.status != PathStatus::Found) path = sim_->walk_to(r.actor, goal, true, std::nullopt, extent);
       for (int below = 0; below < 4 && path.status != PathStatus::Found; ++below) {
         const auto ground = ground_below(sim_->environment(), vec3(goal.x, goal.y - 0.02f, goal.z));
         if (!ground) break;
@@ -476,7 +490,11 @@ class Director {
 
   void update_reach(Running& r, float now) {
     if (r.phase == 0) {
-      if (!sim_->actor(r.actor).walker.busy()) start_reach(r, now);
+      if (sim_->actor(r.actor).walker.busy()) return;
+      // The walker's body has stopped; its feet close up under it for a moment more (the gait's
+      // closing steps). The hand sets off, and the legs may bend, once they are down.
+      if (!r.feet_down) r.feet_down = now + kFeetSettle;
+      if (now >= *r.feet_down) start_reach(r, now);
       return;
     }
     r.done = now >= r.until;
