@@ -210,6 +210,34 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
   return *signs_.emplace(key, std::move(motion)).first->second;
 }
 
+const CitationMotion& SignMotionCache::sign(std::string_view notation, std::string_view place, const PlanChange& change) {
+  const std::string key = std::string(notation) + '\x1f' + std::string(place);
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
+  }
+  // As sign(notation), on the changed plan.
+  PlanOptions options;
+  options.from_rest = false;
+  options.to_rest = false;
+  options.initial_hold = 0.0f;
+  options.final_hold = 0.0f;
+  const SignPlan plan = change(plan_sign(sign::parse_hamnosys_unicode(notation), *rig_, options));
+  std::unique_ptr<CitationMotion> motion = perform_citation(approached_from_relaxed(plan));
+  const float error = plan_error(*motion);
+  if (error > kPlanTolerance) {
+    SignPlan at_first_posture = plan;
+    shift_to_start(at_first_posture.right, plan.sign_start);
+    shift_to_start(at_first_posture.left, plan.sign_start);
+    at_first_posture.sign_end -= plan.sign_start;
+    at_first_posture.sign_start = 0.0f;
+    auto cold = perform_citation(std::move(at_first_posture));
+    if (plan_error(*cold) < error - kPlanTolerance) motion = std::move(cold);
+  }
+  std::lock_guard lock(mutex_);
+  return *signs_.emplace(key, std::move(motion)).first->second;
+}
+
 HandJointPosture SignMotionCache::solve(Hand hand, const HandState& state) const {
   // A plan that holds the state for an instant, performed like any sign (IK, joint limits, the
   // hand kept out of the body); the other hand rests.
