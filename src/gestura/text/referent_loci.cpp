@@ -134,6 +134,19 @@ class Placer {
   }
 
  private:
+  // Adds to a gloss's reason, and to the explanation of the words it came from.
+  void explain(GlossToken& g, const std::string& more) {
+    for (WordNote& n : t_.notes)
+      if (n.begin >= g.begin && n.end <= g.end && n.reason == g.reason) n.reason += more;
+    g.reason += more;
+  }
+
+  // Adds to the explanation of the words a gloss came from (an index the pass adds after them).
+  void explain_words(const GlossToken& g, const std::string& more) {
+    for (WordNote& n : t_.notes)
+      if (n.begin >= g.begin && n.end <= g.end) n.reason += more;
+  }
+
   int new_referent(Referent r) {
     if (r.human || r.plural || r.locus >= 0) r.locus = next_locus_++;
     referents_.push_back(std::move(r));
@@ -273,13 +286,13 @@ class Placer {
         places += (places.empty() ? "" : "+") + l.name();
       }
       g.gloss = base + ":" + places;
-      g.reason += "; sweeps over the places of those placed (" + places + ")";
+      explain(g, "; an arc over the places of those placed (" + places + ")");
       return;
     }
     const int locus = locus_of(referent);
     g.at = Locus{3, locus};
     g.gloss = third(stem, locus, plural ? "-PL" : "");
-    g.reason += "; points at place " + g.at.name() + (r.key.empty() ? "" : " (" + r.key + ")");
+    explain(g, "; points at place " + g.at.name() + (r.key.empty() ? "" : " (" + r.key + ")"));
   }
 
   // Agreement verbs take their subject's and object's places.
@@ -321,8 +334,8 @@ class Placer {
       g.from = from;
       g.to = to;
       g.gloss = g.lexeme + ":" + from.name() + "→" + to.name();
-      g.reason += "; agreement verb, from " + from.name() + " to " + to.name() +
-                  (backward ? " (a backwards verb: from the object to the subject)" : "");
+      explain(g, "; agreement verb, from " + from.name() + " to " + to.name() +
+                     (backward ? " (a backwards verb: from the object to the subject)" : ""));
       for (std::size_t k : {subject.value_or(i), *object})
         if (k != i && mentions_[k].referent >= 0) referents_[static_cast<std::size_t>(mentions_[k].referent)].needs_index = true;
     }
@@ -407,6 +420,7 @@ class Placer {
       ix.reason = "'" + std::string(text_.substr(noun.begin, noun.end - noun.begin)) + "' → " + ix.gloss +
                   (r.plural ? ": a plural referent, set up by an arc over place " : ": a referent, set up at place ") +
                   ix.at.name();
+      explain_words(noun, "; then " + ix.gloss + (r.plural ? " (an arc over place " : " (sets up place ") + ix.at.name() + ")");
       after[r.introduced].push_back(std::move(ix));
     }
     if (std::all_of(after.begin(), after.end(), [](const auto& v) { return v.empty(); })) return;
