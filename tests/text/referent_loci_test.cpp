@@ -75,6 +75,12 @@ TEST(ReferentLoci, LaterPronounsReuseTheirAntecedentsPlaces) {
   EXPECT_NE(find(u, "TELL:3a→3b"), nullptr) << u.text();
 }
 
+TEST(ReferentLoci, HerIsTheRecipientOfAThingAndThePossessorOfAPerson) {
+  EXPECT_EQ(gloss("I gave her money.").text(), "IX-1 GIVE:1→3a IX-3a MONEY");
+  EXPECT_EQ(gloss("She sent her mother a letter.").text(), "IX-3a SEND:3a→3b POSS-3a MOTHER IX-3b LETTER");
+  EXPECT_EQ(gloss("I need to tell her something.").text(), "IX-1 MUST TELL:1→3a IX-3a SOMETHING");
+}
+
 TEST(ReferentLoci, AnObjectPronounIsNotItsOwnClausesSubject) {
   const Translation t = gloss("He helped him.");
   EXPECT_EQ(t.text(), "IX-3a HELP:3a→3b IX-3b") << t.text();

@@ -528,7 +528,15 @@ class SentenceTranslator {
       return;
     }
     if (l == "her") {
-      const bool possessive = next_is_content_word();
+      // The parse knows an object ("tell her something": O link to 'her'); else a content word after
+      // it makes it possessive ("her dog").
+      // Right after an agreement verb and before a thing it is the recipient ("gave her money"), before
+      // a person the possessive ("sent her mother a letter").
+      const Word* next = at(i_ + 1);
+      const bool object = (parsed(i_) && parsed(i_)->role == english::Role::object) ||
+                          (!items_.empty() && is_agreement_verb(items_.back().token.gloss) && next &&
+                           !wordnet::names_a_person(next->lower));
+      const bool possessive = !object && next_is_content_word();
       const std::string gloss = possessive ? "POSS-3" : "IX-3";
       const std::string reason = "'her' → " + gloss + (possessive ? ": possessive pronoun" : ": pronoun (pointing)");
       note(w, reason);
