@@ -136,15 +136,24 @@ class Placer {
  private:
   // Adds to a gloss's reason, and to the explanation of the words it came from.
   void explain(GlossToken& g, const std::string& more) {
-    for (WordNote& n : t_.notes)
-      if (n.begin >= g.begin && n.end <= g.end && n.reason == g.reason) n.reason += more;
+    for (WordNote* n : notes_of(g))
+      if (n->reason == g.reason) n->reason += more;
     g.reason += more;
   }
 
   // Adds to the explanation of the words a gloss came from (an index the pass adds after them).
   void explain_words(const GlossToken& g, const std::string& more) {
-    for (WordNote& n : t_.notes)
-      if (n.begin >= g.begin && n.end <= g.end) n.reason += more;
+    for (WordNote* n : notes_of(g)) n->reason += more;
+  }
+
+  // The notes of the words inside a gloss's span (the notes are in text order).
+  std::vector<WordNote*> notes_of(const GlossToken& g) {
+    std::vector<WordNote*> out;
+    auto it = std::lower_bound(t_.notes.begin(), t_.notes.end(), g.begin,
+                               [](const WordNote& n, std::size_t at) { return n.begin < at; });
+    for (; it != t_.notes.end() && it->begin < g.end; ++it)
+      if (it->end <= g.end) out.push_back(&*it);
+    return out;
   }
 
   int new_referent(Referent r) {
@@ -213,16 +222,14 @@ class Placer {
     }
     if (r.human) r.gender = gender_of(*w, lemma);
     if (!r.human && noun && r.plural) return;  // things in the plural are not placed here
+    const std::string key = r.key + (r.plural ? "+" : "");
     int id = -1;
-    for (std::size_t k = referents_.size(); k-- > 0;)
-      if (referents_[k].key == r.key && referents_[k].plural == r.plural) {
-        id = static_cast<int>(k);
-        break;
-      }
+    if (const auto it = by_key_.find(key); it != by_key_.end()) id = it->second;
     if (id < 0) {
       r.introduced = i;
       r.needs_index = r.human && r.plural;  // the arc shows the plural the lexicon's sign lacks
       id = new_referent(std::move(r));
+      by_key_.emplace(key, id);
     }
     m.referent = id;
     touch(id, sentence, i, m.role);
@@ -240,7 +247,10 @@ class Placer {
       const bool exact = r.gender == p.gender || p.plural;
       return std::tuple(exact, r.last_sentence, r.last_subject, r.last_gloss);
     };
-    for (std::size_t k = 0; k < referents_.size(); ++k) {
+    // Antecedents are recent: only the last kWindow referents are candidates (this also keeps a
+    // long text linear).
+    const std::size_t window_start = referents_.size() > kWindow ? referents_.size() - kWindow : 0;
+    for (std::size_t k = window_start; k < referents_.size(); ++k) {
       const Referent& r = referents_[k];
       if (!agrees(r, p) || (not_this && *not_this == static_cast<int>(k))) continue;
       if (best < 0 || rank(r) > rank(referents_[static_cast<std::size_t>(best)])) best = static_cast<int>(k);
@@ -257,7 +267,7 @@ class Placer {
     r.human = p.gender != Gender::neuter;
     if (p.plural) {
       // "they" with no plural antecedent: the people already placed, when there are several.
-      for (std::size_t k = 0; k < referents_.size(); ++k)
+      for (std::size_t k = window_start; k < referents_.size() && r.members.size() < 4; ++k)
         if (referents_[k].human && !referents_[k].plural && referents_[k].locus >= 0 &&
             !(not_this && *not_this == static_cast<int>(k)))
           r.members.push_back(static_cast<int>(k));
@@ -307,10 +317,13 @@ class Placer {
       const bool forward = in(kForwardVerbs, g.sign());
       const bool backward = in(kBackwardVerbs, g.sign());
       if (g.kind != GlossKind::sign || (!forward && !backward)) continue;
+      // Subject and object are looked for within kReach glosses of the verb, in its clause.
       std::size_t clause_end = i;
-      while (clause_end < sentence.last && t_.glosses[clause_end].kind != GlossKind::pause) ++clause_end;
+      while (clause_end < sentence.last && clause_end - i <= kReach && t_.glosses[clause_end].kind != GlossKind::pause)
+        ++clause_end;
+      const std::size_t near_start = std::max(clause_start, i > kReach ? i - kReach : std::size_t{0});
       std::optional<std::size_t> subject, object;
-      for (std::size_t k = clause_start; k < i; ++k) {
+      for (std::size_t k = near_start; k < i; ++k) {
         const Mention& m = mentions_[k];
         if (!is_person(m) || m.possessive) continue;
         if (!subject || m.role == english::Role::subject || mentions_[*subject].role != english::Role::subject) subject = k;
@@ -323,7 +336,7 @@ class Placer {
       }
       if (!object) continue;  // no one to move toward: the citation form
       // An imperative (the verb opens its clause, no subject): the addressee does it.
-      const bool content_before = std::any_of(t_.glosses.begin() + static_cast<std::ptrdiff_t>(clause_start),
+      const bool content_before = std::any_of(t_.glosses.begin() + static_cast<std::ptrdiff_t>(near_start),
                                               t_.glosses.begin() + static_cast<std::ptrdiff_t>(i),
                                               [](const GlossToken& x) { return x.kind != GlossKind::pause; });
       Locus from = subject ? place_of(*subject) : content_before ? Locus{1, 0} : Locus{2, 0};
@@ -367,11 +380,18 @@ class Placer {
       const char32_t c = utf8::next(text_, pos);
       if (c == '"' || c == 0x201C || c == 0x201D || c == 0x201E || c == 0xAB || c == 0xBB) marks.push_back(at);
     }
+    sentence_index_.assign(t_.glosses.size(), t_.sentences.size());
+    for (std::size_t s = 0; s < t_.sentences.size(); ++s)
+      for (std::size_t i = t_.sentences[s].first; i < t_.sentences[s].last && i < t_.glosses.size(); ++i) sentence_index_[i] = s;
+    for (std::size_t i = 0; i < t_.glosses.size(); ++i)  // a pause between sentences goes with the one before
+      if (sentence_index_[i] == t_.sentences.size() && i > 0) sentence_index_[i] = sentence_index_[i - 1];
+    std::size_t cursor = 0;  // glosses come in text order: one pass over them for all quotes
     for (std::size_t q = 0; q + 1 < marks.size(); q += 2) {
       const std::size_t open = marks[q], close = marks[q + 1];
+      while (cursor < t_.glosses.size() && t_.glosses[cursor].begin <= open) ++cursor;
       std::size_t first = t_.glosses.size(), last = 0;
-      for (std::size_t i = 0; i < t_.glosses.size(); ++i)
-        if (t_.glosses[i].kind != GlossKind::pause && t_.glosses[i].begin > open && t_.glosses[i].end <= close) {
+      for (std::size_t i = cursor; i < t_.glosses.size() && t_.glosses[i].begin < close; ++i)
+        if (t_.glosses[i].kind != GlossKind::pause && t_.glosses[i].end <= close) {
           first = std::min(first, i);
           last = i + 1;
         }
@@ -387,9 +407,10 @@ class Placer {
       };
       const std::size_t sentence_before = sentence_of(first);
       const std::size_t sentence_after = sentence_of(last - 1);
-      for (std::size_t k = first; k-- > 0 && sentence_of(k) + 1 >= sentence_before;) consider(k);
+      for (std::size_t k = first; k-- > 0 && first - k <= kReach && sentence_of(k) + 1 >= sentence_before;) consider(k);
       if (!speaker || mentions_[*speaker].role != english::Role::subject)
-        for (std::size_t k = last; k < t_.glosses.size() && sentence_of(k) <= sentence_after + 1; ++k) consider(k);
+        for (std::size_t k = last; k < t_.glosses.size() && k - last < kReach && sentence_of(k) <= sentence_after + 1; ++k)
+          consider(k);
       if (!speaker) continue;
       const Locus toward = place_of(*speaker);
       if (toward.person != 3) continue;  // the signer quoting themselves needs no shift
@@ -399,9 +420,7 @@ class Placer {
   }
 
   std::size_t sentence_of(std::size_t gloss) const {
-    for (std::size_t s = 0; s < t_.sentences.size(); ++s)
-      if (gloss < t_.sentences[s].last) return s;
-    return t_.sentences.size();
+    return gloss < sentence_index_.size() ? sentence_index_[gloss] : t_.sentences.size();
   }
 
   // An index after the first mention of each noun or name whose place is used later.
@@ -452,7 +471,11 @@ class Placer {
   std::span<const SourceWord> words_;
   std::vector<Mention> mentions_;
   std::vector<Referent> referents_;
+  std::unordered_map<std::string, int> by_key_;  // a noun's or name's gloss → its referent
+  std::vector<std::size_t> sentence_index_;      // each gloss's sentence
   int next_locus_ = 0;
+  static constexpr std::size_t kWindow = 32;
+  static constexpr std::size_t kReach = 24;
 };
 
 }  // namespace

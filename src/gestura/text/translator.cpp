@@ -810,11 +810,11 @@ Translation translate_to_gloss(std::string_view english, SignInventory& inventor
     }
     start = end + 1;
   }
-  place_referents(out, english, source_words);
   // Notes come out in word order already; the sort is a guarantee, not the usual path.
   const auto by_position = [](const WordNote& a, const WordNote& b) { return a.begin < b.begin; };
   if (!std::is_sorted(out.notes.begin(), out.notes.end(), by_position))
     std::stable_sort(out.notes.begin(), out.notes.end(), by_position);
+  place_referents(out, english, source_words);
   return out;
 }
 
