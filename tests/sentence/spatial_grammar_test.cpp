@@ -113,6 +113,21 @@ TEST(SpatialGrammar, SheGaveHimTheBookPointsAtTwoPlacesAndGiveRunsBetweenThem) {
   EXPECT_GT(glm::dot(end - start, glm::normalize(pb - pa)), 0.15f);
 }
 
+TEST(SpatialGrammar, PossessivesFaceTheirPlacesWithThePalm) {
+  // POSS is a flat hand, fingers up: its palm, not its fingers, turns to the owner's place.
+  const SentencePerformance p = say("He took her dog and his cat.");
+  const auto palm_facing = [&](const PerformedGloss& g) {
+    const auto m = model_at(p.clip, 0.5f * (g.start + g.end));
+    const vec3 fingers = at(m, "r_middle1") - at(m, "r_wrist");
+    const vec3 across = at(m, "r_pinky1") - at(m, "r_index1");  // thumb side to little finger
+    return flat(glm::cross(fingers, across));                   // the right hand's palm normal
+  };
+  const vec3 hers = palm_facing(gloss(p, "POSS-3b")), his = palm_facing(gloss(p, "POSS-3a"));
+  EXPECT_GE(degrees_between(hers, his), 30.0f);
+  EXPECT_GT(yaw_of(hers), 15.0f);  // 3b, on the left
+  EXPECT_LT(yaw_of(his), -15.0f);  // 3a, on the right
+}
+
 TEST(SpatialGrammar, IGiveYouAndYouGiveMeRunInOppositeDirections) {
   const SentencePerformance mine = say("I give you the book.");
   const SentencePerformance yours = say("You give me the book.");

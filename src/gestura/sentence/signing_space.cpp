@@ -93,13 +93,16 @@ const HandState* last_active(const HandTimeline& t) {
   return nullptr;
 }
 
-// The turn about the vertical through `pivot` that points the hand's fingers (their horizontal
-// direction) at `target`.
+// The turn about the vertical that points the hand's fingers (their horizontal direction) at
+// `target`.
+// A hand whose fingers point up or down (POSS: a flat hand, fingers up) faces its place with the
+// palm instead.
 float aim_yaw(const HandState& hand, vec3 target) {
-  const vec3 finger = horizontal(finger_of(hand));
+  vec3 pointer = horizontal(finger_of(hand));
+  if (glm::length(pointer) < 0.5f) pointer = horizontal(hand.orientation * vec3(0.0f, 0.0f, 1.0f));
   const vec3 want = horizontal(target - hand.position);
-  if (glm::length(finger) < 0.2f || glm::length(want) < 1e-3f) return 0.0f;
-  return yaw_between(glm::normalize(finger), glm::normalize(want));
+  if (glm::length(pointer) < 0.2f || glm::length(want) < 1e-3f) return 0.0f;
+  return yaw_between(glm::normalize(pointer), glm::normalize(want));
 }
 
 // The dominant hand's path from `s` to `e` moved to run from `f` to `t`: turned about the vertical,
