@@ -19,9 +19,11 @@
 #include "gestura/sentence/sign_prosody.hpp"
 #include "gestura/sentence/signing_space.hpp"
 #include "gestura/sentence/utterance_performer.hpp"
+#include "gestura/sign/citation_timing.hpp"
 #include "gestura/sign/fingerspelling_asl.hpp"
 #include "gestura/sign/fingerspelling_plan.hpp"
 #include "gestura/sign/movement_timing.hpp"
+#include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sign_planner.hpp"
 #include "gestura/text/lexicon_inventory.hpp"
 #include "gestura/text/translator.hpp"
@@ -31,6 +33,10 @@ namespace gestura {
 namespace {
 
 constexpr float kMouthingAmplitude = 0.6f;        // ASL mouthing is reduced
+// The citation-duration model's movement seconds → the planner's citation seconds that running
+// signing compresses (sentence/sign_prosody.hpp): a normal straight movement is 0.34 s in the
+// model and 0.63 s as planned (movement_timing.hpp), so running signing keeps its rate.
+constexpr float kPlannedPerModelSecond = 0.63f / 0.34f;
 
 // Joins per-sign plans into one plan for the utterance: each sign is planned without rest at either
 // end, shifted to the utterance clock, and reached from the previous sign's last state by a
@@ -49,9 +55,14 @@ class UtteranceBuilder {
 
   // Appends one sign (its cached citation form) with its running-signing timing
   // (sign_prosody.hpp); returns its articulation interval [first posture, end of last hold].
-  std::array<float, 2> add_sign(const CitationMotion& motion, bool phrase_final, float extra_hold) {
+  // `modelled`: the citation movement's seconds from the notation (sign/citation_timing.hpp), in the
+  // planner's seconds; the sign then lasts what the model says and its planned motion is played at
+  // the tempo that fits it.
+  std::array<float, 2> add_sign(const CitationMotion& motion, bool phrase_final, float extra_hold, float modelled) {
     const SignPlan& plan = motion.plan;
-    const SignTiming timing = running_sign_timing(motion.movement(), phrase_final, extra_hold, speed_);
+    SignTiming timing = running_sign_timing(modelled, phrase_final, extra_hold, speed_);
+    if (motion.movement() > 0.0f && timing.movement > 0.0f) timing.tempo = motion.movement() / timing.movement;
+    else timing = running_sign_timing(motion.movement(), phrase_final, extra_hold, speed_);
     const std::array<const HandTimeline*, 2> timeline{&plan.right, &plan.left};
     std::array<HandState, 2> first;
     for (int h = 0; h < 2; ++h) {
@@ -238,11 +249,12 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
       return std::nullopt;
     }
     try {
+      const float modelled = kPlannedPerModelSecond * citation_timing(sign::parse_hamnosys_unicode(entry->notation)).moving();
       if (placed && uses_space(*placed))
         return builder.add_sign(cache_->sign(entry->notation, space_key(*placed),
                                              [&](const SignPlan& citation) { return in_space(citation, rig_, *placed); }),
-                                phrase_final, extra_hold);
-      return builder.add_sign(cache_->sign(entry->notation), phrase_final, extra_hold);
+                                phrase_final, extra_hold, modelled);
+      return builder.add_sign(cache_->sign(entry->notation), phrase_final, extra_hold, modelled);
     } catch (const Error& e) {
       out.notes.push_back(gloss + ": its notation cannot be performed (" + e.what() + ")");
       return std::nullopt;

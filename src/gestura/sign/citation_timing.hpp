@@ -35,6 +35,8 @@ struct CitationTiming {
   int movements = 0;         // path, local and change movements counted
   std::vector<float> repeats;  // seconds of each repeat, in order (each shorter than the one before)
   bool is_static = false;    // no movement at all
+
+  float moving() const { return movement + repetition + contact; }  // the sign without its holds
 };
 
 // Contract: a sign the parser produced (at least one segment).
