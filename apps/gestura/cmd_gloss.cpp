@@ -19,7 +19,7 @@ Invocation prepare() {
   Invocation invocation;
   invocation.fields = bind_fields(state->request);
   invocation.fields.push_back(option({.name = "file", .help = "read TEXT from this file ('-': standard input)", .value = "FILE", .short_flag = 'f'}, state->file));
-  invocation.fields.push_back(flag({.name = "json", .help = "machine-readable output: glosses (gloss, kind, span, letters, reason), notes, sentences, markers"}, state->json));
+  invocation.fields.push_back(flag({.name = "json", .help = "machine-readable output: glosses (gloss, kind, span, letters, reason, places), notes, sentences, markers, role shifts"}, state->json));
   invocation.run = [state](const app::RunContext& context) {
     state->request.text = text_argument(state->request.text, state->file, app::kMaxTextInputBytes);
     const app::GlossResult r = app::run(state->request, context);
@@ -38,6 +38,11 @@ Invocation prepare() {
     for (const auto& m : t.markers) {
       std::cout << "  " << to_string(m.kind) << " marking over:";
       for (std::size_t k = m.first; k < m.last; ++k) std::cout << " " << t.glosses[k].gloss;
+      std::cout << "\n";
+    }
+    for (const auto& r : t.role_shifts) {
+      std::cout << "  role shift toward " << r.toward.name() << " (shoulders, head and eyes) over:";
+      for (std::size_t k = r.first; k < r.last; ++k) std::cout << " " << t.glosses[k].gloss;
       std::cout << "\n";
     }
     return 0;

@@ -1,6 +1,6 @@
 // Expected glosses are worked out by hand from ASL grammar and the conventions in
-// docs/text-to-gloss.md (IX-1/IX-2/IX-3 pointing, time first, NOT and CAN'T after the verb phrase,
-// wh-word last, numbers as digits, names and unknown words fingerspelled as FS-WORD).
+// docs/text-to-gloss.md (IX-1/IX-2 pointing, third persons at their places IX-3a, IX-3b… as
+// docs/grammar.md says, time first, NOT and CAN'T after the verb phrase, wh-word last, numbers as digits, names and unknown words fingerspelled as FS-WORD).
 #include "gestura/text/translator.hpp"
 
 #include <gtest/gtest.h>
@@ -62,13 +62,13 @@ INSTANTIATE_TEST_SUITE_P(
         Example{"How are you?", "HOW IX-2"},
         // negation after the verb phrase
         Example{"I don't like coffee.", "IX-1 LIKE COFFEE NOT"},
-        Example{"She can't swim.", "IX-3 SWIM CAN'T"},
-        Example{"He doesn't understand sign language.", "IX-3 UNDERSTAND SIGN LANGUAGE NOT"},
+        Example{"She can't swim.", "IX-3a SWIM CAN'T"},
+        Example{"He doesn't understand sign language.", "IX-3a UNDERSTAND SIGN LANGUAGE NOT"},
         Example{"I never eat meat.", "IX-1 NEVER EAT MEAT"},
         Example{"I don't know.", "IX-1 DON'T-KNOW"},
         // yes/no questions keep their order
         Example{"Do you like coffee?", "IX-2 LIKE COFFEE"},
-        Example{"Can you help me?", "CAN IX-2 HELP IX-1"},
+        Example{"Can you help me?", "CAN IX-2 HELP:2→1 IX-1"},
         Example{"I am deaf. Are you deaf?", "IX-1 DEAF / IX-2 DEAF"},
         // names and unknown words
         Example{"My name is John.", "POSS-1 NAME FS-JOHN"},
@@ -78,7 +78,7 @@ INSTANTIATE_TEST_SUITE_P(
         Example{"I have $5.50.", "IX-1 HAVE 5 DOLLAR 50 CENT"},
         Example{"I have three cats.", "IX-1 HAVE 3 CAT"},
         Example{"We won 25 dollars.", "WE WIN 25 DOLLAR"},
-        Example{"She is twenty-five years old.", "IX-3 25 YEAR OLD"},
+        Example{"She is twenty-five years old.", "IX-3a 25 YEAR OLD"},
         Example{"Class starts at 3:30.", "TIME 3 30 CLASS START"},
         Example{"I wake up at 7am.", "TIME 7 MORNING IX-1 WAKE UP"},
         Example{"My birthday is March 14.", "FS-MARCH 14 POSS-1 BIRTHDAY"},
@@ -86,20 +86,20 @@ INSTANTIATE_TEST_SUITE_P(
         Example{"I bought a new car for $20,000.", "IX-1 BUY NEW CAR FOR 20000 DOLLAR"},
         // contractions, lemmas, synonyms, pronouns
         Example{"I'm happy!", "IX-1 HAPPY"},
-        Example{"The children are playing.", "CHILD PLAY"},
-        Example{"The babies studied.", "BABY STUDY"},
+        Example{"The children are playing.", "CHILD IX-3a-PL PLAY"},
+        Example{"The babies studied.", "BABY IX-3a-PL STUDY"},
         Example{"My mom stopped working.", "POSS-1 MOTHER STOP WORK"},
-        Example{"I saw her yesterday.", "YESTERDAY IX-1 SEE IX-3"},
-        Example{"Her dog is old.", "POSS-3 DOG OLD"},
+        Example{"I saw her yesterday.", "YESTERDAY IX-1 SEE IX-3a"},
+        Example{"Her dog is old.", "POSS-3a DOG OLD"},
         Example{"I will see you tomorrow.", "TOMORROW IX-1 WILL SEE IX-2"},
         // perfect aspect: have + participle → FINISH; possession stays HAVE
         Example{"We have eaten.", "WE FINISH EAT"},
-        Example{"She has two cats.", "IX-3 HAVE 2 CAT"},
+        Example{"She has two cats.", "IX-3a HAVE 2 CAT"},
         Example{"Thank you!", "THANK-YOU"},
         Example{"Nice to meet you!", "NICE MEET IX-2"},
         Example{"Yesterday, I went home.", "YESTERDAY / IX-1 GO HOME"},
         // typography: curly apostrophes and quotes, em dash, accented names
-        Example{"I don\u2019t like coffee \u2014 it\u2019s cold.", "IX-1 LIKE COFFEE NOT / IX-3 COLD"},
+        Example{"I don\u2019t like coffee \u2014 it\u2019s cold.", "IX-1 LIKE COFFEE NOT / IX-3a COLD"},
         Example{"\u201cI met Jos\u00e9 in Z\u00fcrich.\u201d", "IX-1 MEET FS-JOSE FS-ZURICH"}));
 
 TEST(Translator, ReasonsExplainEachWord) {
@@ -184,7 +184,7 @@ TEST(Translator, NegatedWhQuestionMarksBoth) {
 TEST(Translator, OpenVocabularyUsesLemmasAndCapitalsForNames) {
   OpenVocabulary open;
   EXPECT_EQ(translate_to_gloss("Yesterday Sarah bought three books.", open).text(), "YESTERDAY FS-SARAH BUY 3 BOOK");
-  EXPECT_EQ(translate_to_gloss("The kids liked running.", open).text(), "KID LIKE RUN");
+  EXPECT_EQ(translate_to_gloss("The kids liked running.", open).text(), "KID IX-3a-PL LIKE RUN");
 }
 
 // A keyword of several words (as a lexicon lists "train station" or "wake up") is one sign, found
@@ -196,7 +196,7 @@ TEST(Translator, LexiconPhrasesListedFormsAndCapitalisedWordsWithSigns) {
                       {"credit card", "CREDIT-CARD"}, {"pay", "PAY"},     {"lose", "LOSE"}};
   EXPECT_EQ(translate_to_gloss("Where is the train station?", v).text(), "STATION WHERE");
   EXPECT_EQ(translate_to_gloss("The train is late.", v).text(), "TRAIN FS-LATE");
-  EXPECT_EQ(translate_to_gloss("She woke up.", v).text(), "IX-3 WAKE-UP");
+  EXPECT_EQ(translate_to_gloss("She woke up.", v).text(), "IX-3a WAKE-UP");
   EXPECT_EQ(translate_to_gloss("I paid with credit cards.", v).text(), "IX-1 PAY FS-WITH CREDIT-CARD");
   EXPECT_EQ(translate_to_gloss("I lost my glasses.", v).text(), "IX-1 LOSE POSS-1 GLASSES");
   EXPECT_EQ(translate_to_gloss("I drank a glass.", v).text(), "IX-1 FS-DRANK GLASS");
@@ -311,11 +311,11 @@ TEST(TranslatorParse, IssueExamplesReadThroughTheParse) {
   EXPECT_EQ(text("my head hurts"), "POSS-1 HEAD HURT");
   EXPECT_EQ(text("I went to the train station."), "IX-1 GO STATION");
   // "does" as the main verb is DO; as do-support it is dropped, and HOW-MUCH is signed once, last.
-  EXPECT_EQ(text("She does her homework."), "IX-3 DO POSS-3 HOMEWORK");
+  EXPECT_EQ(text("She does her homework."), "IX-3a DO POSS-3a HOMEWORK");
   const Translation coffee = translate_to_gloss("How much does this coffee cost?", v);
   EXPECT_EQ(coffee.text(), "THIS COFFEE COST HOW-MUCH");
   // The same word by its part of speech: "left" the verb is LEAVE, the direction LEFT.
-  EXPECT_EQ(text("He left the room."), "IX-3 LEAVE ROOM");
+  EXPECT_EQ(text("He left the room."), "IX-3a LEAVE ROOM");
   EXPECT_EQ(text("Turn left."), "TURN LEFT");
 }
 
@@ -331,7 +331,7 @@ TEST(TranslatorParse, TheExplanationNamesTheParse) {
   for (const WordNote& n : t.notes)
     if (n.word == "Do") do_dropped = n.reason.find("do-support (parse: I link to the verb") != std::string::npos;
   EXPECT_TRUE(do_dropped);
-  EXPECT_EQ(t.text(), "IX-3 GIVE IX-3 BOOK / IX-2 LIKE COFFEE");
+  EXPECT_EQ(t.text(), "IX-3a GIVE:3a→3b IX-3b BOOK / IX-2 LIKE COFFEE");
 }
 
 TEST(TranslatorParse, AuxiliariesDroppedAndPerfectHaveSigned) {
@@ -340,7 +340,7 @@ TEST(TranslatorParse, AuxiliariesDroppedAndPerfectHaveSigned) {
   const auto text = [&](std::string_view english) { return translate_to_gloss(english, v).text(); };
   EXPECT_EQ(text("I have eaten dinner."), "IX-1 FINISH EAT DINNER");
   EXPECT_EQ(text("Have you eaten?"), "FINISH IX-2 EAT");
-  EXPECT_EQ(text("She is going to school."), "IX-3 GO SCHOOL");
+  EXPECT_EQ(text("She is going to school."), "IX-3a GO SCHOOL");
   EXPECT_EQ(text("Did you see the movie?"), "IX-2 SEE MOVIE");
   EXPECT_EQ(text("I do not like meat."), "IX-1 LIKE MEAT NOT");
 }

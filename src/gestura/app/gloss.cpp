@@ -53,6 +53,14 @@ nlohmann::json to_json(const GlossResult& result) {
   for (const auto& g : t.glosses) {
     nlohmann::json j{{"gloss", g.gloss}, {"kind", to_string(g.kind)}, {"begin", g.begin}, {"end", g.end}, {"reason", g.reason}};
     if (!g.letters.empty()) j["letters"] = g.letters;
+    // Spatial grammar (docs/grammar.md): the lexicon sign and the places it is signed at.
+    if (!g.lexeme.empty()) j["sign"] = g.lexeme;
+    if (g.at) j["at"] = g.at.name();
+    if (g.from && g.to) j["from"] = g.from.name(), j["to"] = g.to.name();
+    if (!g.over.empty()) {
+      auto& over = j["over"] = nlohmann::json::array();
+      for (const Locus& l : g.over) over.push_back(l.name());
+    }
     glosses.push_back(std::move(j));
   }
   auto& notes = out["notes"] = nlohmann::json::array();
@@ -63,6 +71,8 @@ nlohmann::json to_json(const GlossResult& result) {
                          {"begin", s.begin}, {"end", s.end}, {"parse", s.parse}});
   auto& markers = out["markers"] = nlohmann::json::array();
   for (const auto& m : t.markers) markers.push_back({{"kind", to_string(m.kind)}, {"first", m.first}, {"last", m.last}});
+  auto& shifts = out["role_shifts"] = nlohmann::json::array();
+  for (const auto& r : t.role_shifts) shifts.push_back({{"toward", r.toward.name()}, {"first", r.first}, {"last", r.last}});
   return out;
 }
 

@@ -160,6 +160,25 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
   return *signs_.emplace(key, std::move(motion)).first->second;
 }
 
+const CitationMotion& SignMotionCache::sign(std::string_view notation, std::string_view place, const PlanChange& change) {
+  const std::string key = std::string(notation) + '\x1f' + std::string(place);
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
+  }
+  // As sign(notation), on the changed citation plan.
+  const SignPlan citation =
+      change(plan_citation(sign::parse_hamnosys_unicode(notation), *rig_, ScheduleOptions{1.0f, 0.0f, 0.0f}));
+  std::unique_ptr<CitationMotion> motion = perform_citation(citation, Start::FromRelaxed);
+  const float error = plan_error(*motion);
+  if (error > kPlanTolerance) {
+    auto at_first_posture = perform_citation(citation, Start::AtFirstPosture);
+    if (plan_error(*at_first_posture) < error - kPlanTolerance) motion = std::move(at_first_posture);
+  }
+  std::lock_guard lock(mutex_);
+  return *signs_.emplace(key, std::move(motion)).first->second;
+}
+
 HandJointPosture SignMotionCache::solve(Hand hand, const HandState& state) const {
   // Solved from the relaxed posture with nothing before it, as the first frame of a performance
   // is (the other hand plays no part).

@@ -12,6 +12,7 @@
 // Thread-safe: lookups and inserts are serialised; entries are never moved or evicted, so the
 // references returned stay valid for the cache's lifetime.
 #include <array>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <span>
@@ -56,6 +57,12 @@ class SignMotionCache {
   // The sign written in HamNoSys (Unicode) `notation`. Throws gestura::Error when it cannot be
   // parsed or performed (then nothing is stored).
   const CitationMotion& sign(std::string_view notation);
+
+  // The same sign changed in space before it is performed (sentence/signing_space.hpp: a pointing
+  // sign aimed at a locus, an agreement verb moved from one place to another): `change` maps the
+  // citation plan to the plan performed; stored under the notation and `place` ("3a→3b").
+  using PlanChange = std::function<SignPlan(const SignPlan&)>;
+  const CitationMotion& sign(std::string_view notation, std::string_view place, const PlanChange& change);
 
   // The joint posture that puts `hand` in `state` (rest pose when the state is inactive), solved
   // once per distinct state and stored.

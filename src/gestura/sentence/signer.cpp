@@ -15,11 +15,15 @@
 #include "gestura/face/nonmanual.hpp"
 #include "gestura/face/nonmanual_from_translation.hpp"
 #include "gestura/sentence/fingerspelling_performance.hpp"
+#include "gestura/sentence/role_shift.hpp"
 #include "gestura/sentence/sign_prosody.hpp"
+#include "gestura/sentence/signing_space.hpp"
 #include "gestura/sentence/utterance_performer.hpp"
+#include "gestura/sign/citation_timing.hpp"
 #include "gestura/sign/fingerspelling_asl.hpp"
 #include "gestura/sign/fingerspelling_plan.hpp"
 #include "gestura/sign/movement_timing.hpp"
+#include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sign_planner.hpp"
 #include "gestura/sign/two_hand_timeline.hpp"
 #include "gestura/text/lexicon_inventory.hpp"
@@ -30,6 +34,10 @@ namespace gestura {
 namespace {
 
 constexpr float kMouthingAmplitude = 0.6f;        // ASL mouthing is reduced
+// The citation-duration model's movement seconds → the planner's citation seconds that running
+// signing compresses (sentence/sign_prosody.hpp): a normal straight movement is 0.34 s in the
+// model and 0.63 s as planned (movement_timing.hpp), so running signing keeps its rate.
+constexpr float kPlannedPerModelSecond = 0.63f / 0.34f;
 
 // Joins per-sign plans into one plan for the utterance: each sign is planned without rest at either
 // end, shifted to the utterance clock, and reached from the previous sign's last state by a
@@ -49,9 +57,14 @@ class UtteranceBuilder {
 
   // Appends one sign (its cached citation form) with its running-signing timing
   // (sign_prosody.hpp); returns its articulation interval [first posture, end of last hold].
-  std::array<float, 2> add_sign(const CitationMotion& motion, bool phrase_final, float extra_hold) {
+  // `modelled`: the citation movement's seconds from the notation (sign/citation_timing.hpp), in the
+  // planner's seconds; the sign then lasts what the model says and its planned motion is played at
+  // the tempo that fits it.
+  std::array<float, 2> add_sign(const CitationMotion& motion, bool phrase_final, float extra_hold, float modelled) {
     const SignPlan& plan = motion.plan;
-    const SignTiming timing = running_sign_timing(motion.movement(), phrase_final, extra_hold, speed_);
+    SignTiming timing = running_sign_timing(modelled, phrase_final, extra_hold, speed_);
+    if (motion.movement() > 0.0f && timing.movement > 0.0f) timing.tempo = motion.movement() / timing.movement;
+    else timing = running_sign_timing(motion.movement(), phrase_final, extra_hold, speed_);
     ByHand<HandState> first;
     for (Hand hand : kBothHands) {
       const HandTimeline& t = plan.hand(hand);
@@ -184,8 +197,11 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
     return builder.add_spelling(plan_spelling(letters, ManualAlphabet::Asl, SpellingStyle::Careful));
   };
   // A sign from the lexicon, or nullopt (with a note) when it has none the synthesizer can perform.
-  auto sign_gloss = [&](const std::string& gloss, bool phrase_final, float extra_hold) -> std::optional<std::array<float, 2>> {
-    const std::optional<SignEntry> entry = lexicon_->find(gloss, options.lang);
+  // `placed`: the gloss as translated, when the sign is made at places of the signing space
+  // (sentence/signing_space.hpp); its lexicon sign is then placed->sign().
+  auto sign_gloss = [&](const std::string& gloss, bool phrase_final, float extra_hold,
+                        const GlossToken* placed = nullptr) -> std::optional<std::array<float, 2>> {
+    const std::optional<SignEntry> entry = lexicon_->find(placed ? placed->sign() : gloss, options.lang);
     if (!entry) return std::nullopt;
     if (entry->notation_kind != NotationKind::hamnosys) {
       out.notes.push_back(gloss + ": only HamNoSys entries are performed, this one is " +
@@ -193,7 +209,12 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
       return std::nullopt;
     }
     try {
-      return builder.add_sign(cache_->sign(entry->notation), phrase_final, extra_hold);
+      const float modelled = kPlannedPerModelSecond * citation_timing(sign::parse_hamnosys_unicode(entry->notation)).moving();
+      if (placed && uses_space(*placed))
+        return builder.add_sign(cache_->sign(entry->notation, space_key(*placed),
+                                             [&](const SignPlan& citation) { return in_space(citation, rig_, *placed); }),
+                                phrase_final, extra_hold, modelled);
+      return builder.add_sign(cache_->sign(entry->notation), phrase_final, extra_hold, modelled);
     } catch (const Error& e) {
       out.notes.push_back(gloss + ": its notation cannot be performed (" + e.what() + ")");
       return std::nullopt;
@@ -214,9 +235,9 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
         break;
       }
       case GlossKind::sign:
-        span = sign_gloss(g.gloss, phrase_final, extra_hold);
+        span = sign_gloss(g.gloss, phrase_final, extra_hold, &g);
         if (span) mouthed[i] = true;
-        else span = spell(g.gloss, "no performable sign for " + g.gloss);
+        else span = spell(g.sign(), "no performable sign for " + g.sign());
         break;
       case GlossKind::fingerspell: {
         std::string word;
@@ -276,17 +297,29 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
   out.clip.name = "say";
   const Skeleton& skeleton = avatar_->skeleton;
 
+  // Quoted speech in role shift (sentence/role_shift.hpp): over the quote's glosses.
+  std::vector<TimedRoleShift> shifts;
+  if (options.nonmanuals)
+    for (const RoleShift& r : translation.role_shifts)
+      if (r.first < r.last && r.last <= n) shifts.push_back({timed[r.first].start, timed[r.last - 1].end, r.toward});
+
   std::vector<face::FaceAction> face_actions;
   if (options.nonmanuals) {
     const face::NonManualPlan nonmanual = face::plan_from_translation(translation, text, timed);
     face::NonManualActions actions = face::plan_nonmanual(nonmanual);
     face_actions = std::move(actions.face);
+    for (const face::HeadAction& a : role_shift_head_actions(shifts)) actions.head.push_back(a);
     face::write_head_rotations(actions.head, skeleton, out.clip);
+    write_role_shift_torso(shifts, skeleton, out.clip);
   }
   if (options.mouthing) {
     for (std::size_t i = 0; i < n; ++i) {
       if (!mouthed[i]) continue;
       const GlossToken& g = translation.glosses[i];
+      // An index the grammar added after a noun (BOY IX-3a) shares the noun's words: mouthed once.
+      if (i > 0 && g.lexeme.rfind("IX-3", 0) == 0 && translation.glosses[i - 1].begin == g.begin &&
+          translation.glosses[i - 1].end == g.end)
+        continue;
       try {
         face::append_mouthing(text.substr(g.begin, g.end - g.begin), timed[i].start, timed[i].end,
                               {kMouthingAmplitude}, face_actions);
@@ -296,7 +329,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
     }
   }
   if (!face_actions.empty()) face::write_face_channels(face_actions, out.clip);
-  face::write_eye_gaze(skeleton, out.clip, options.fps);
+  write_gaze_with_role_shift(shifts, rig_, out.clip, options.fps);
   face::write_jaw_from_channel(skeleton, out.clip);
   out.clip.duration = std::max(out.clip.duration, out.clip.end_time());
   out.duration = out.clip.duration;

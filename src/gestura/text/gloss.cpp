@@ -32,6 +32,13 @@ std::string_view to_string(MarkerKind kind) {
   return "negation";
 }
 
+std::string Locus::name() const {
+  if (person == 0) return "";
+  std::string out = std::to_string(person);
+  if (person == 3) out.push_back(static_cast<char>('a' + index % 26));
+  return out;
+}
+
 std::string Translation::text() const {
   std::string out;
   for (const GlossToken& g : glosses) {

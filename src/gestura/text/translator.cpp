@@ -6,6 +6,7 @@
 #include "gestura/text/english_parse.hpp"
 #include "gestura/text/english_words.hpp"
 #include "gestura/text/lemmatizer.hpp"
+#include "gestura/text/referent_loci.hpp"
 #include "gestura/text/tokenizer.hpp"
 #include "gestura/text/wordnet.hpp"
 #include "gestura/core/utf8.hpp"
@@ -527,7 +528,15 @@ class SentenceTranslator {
       return;
     }
     if (l == "her") {
-      const bool possessive = next_is_content_word();
+      // The parse knows an object ("tell her something": O link to 'her'); else a content word after
+      // it makes it possessive ("her dog").
+      // Right after an agreement verb and before a thing it is the recipient ("gave her money"), before
+      // a person the possessive ("sent her mother a letter").
+      const Word* next = at(i_ + 1);
+      const bool object = (parsed(i_) && parsed(i_)->role == english::Role::object) ||
+                          (!items_.empty() && is_agreement_verb(items_.back().token.gloss) && next &&
+                           !wordnet::names_a_person(next->lower));
+      const bool possessive = !object && next_is_content_word();
       const std::string gloss = possessive ? "POSS-3" : "IX-3";
       const std::string reason = "'her' → " + gloss + (possessive ? ": possessive pronoun" : ": pronoun (pointing)");
       note(w, reason);
@@ -716,6 +725,7 @@ Translation translate_to_gloss(std::string_view english, SignInventory& inventor
   constexpr std::size_t kMaxParsedSentences = 2000;
   std::size_t parsed_sentences = 0;
   const std::vector<Token> tokens = tokenize(english);
+  std::vector<SourceWord> source_words;  // for the spatial grammar pass
   std::size_t start = 0;
   while (start < tokens.size()) {
     std::size_t end = start;
@@ -731,6 +741,17 @@ Translation translate_to_gloss(std::string_view english, SignInventory& inventor
     // Parsing is bounded per text so that megabytes of input stay quick; later sentences use the rules.
     english::ParsedSentence parse = ++parsed_sentences <= kMaxParsedSentences ? parse_words(words, terminator)
                                                                               : english::ParsedSentence{};
+    for (std::size_t k = 0; k < words.size(); ++k) {
+      const Word& w = words[k];
+      if (w.kind != TokenKind::word && w.kind != TokenKind::number) continue;
+      if (!source_words.empty() && source_words.back().begin == w.begin) continue;  // a contraction's later part
+      SourceWord& sw = source_words.emplace_back(SourceWord{w.begin, w.end, w.lower});
+      if (parse.parsed && k < parse.words.size()) {
+        sw.pos = parse.words[k].pos;
+        sw.role = parse.words[k].role;
+        sw.tag = parse.words[k].tag;
+      }
+    }
     std::string parse_text = parse.tree;
     if (!parse.roles.empty()) parse_text += "; " + parse.roles;
     SentenceTranslator translator(std::move(words), std::move(parse), question, inventory, out.notes);
@@ -793,6 +814,7 @@ Translation translate_to_gloss(std::string_view english, SignInventory& inventor
   const auto by_position = [](const WordNote& a, const WordNote& b) { return a.begin < b.begin; };
   if (!std::is_sorted(out.notes.begin(), out.notes.end(), by_position))
     std::stable_sort(out.notes.begin(), out.notes.end(), by_position);
+  place_referents(out, english, source_words);
   return out;
 }
 

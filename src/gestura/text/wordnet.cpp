@@ -125,4 +125,45 @@ std::vector<std::string> synonyms(std::string_view lemma, english::PartOfSpeech 
   return out;
 }
 
+bool names_a_person(std::string_view lemma) {
+  char buffer[kMaxWord];
+  if (!to_buffer(lemma, buffer)) return false;
+  std::lock_guard lock(wordnet_mutex());
+  if (!ready_locked()) return false;
+  const std::string key = std::string("P") + buffer;
+  if (const auto* hit = cached(key)) return !hit->empty();
+  constexpr long kPersonOffset = 7846;  // person.n.01 in WordNet 3.0's data.noun
+  constexpr int kInstanceHypernym = 38;  // "@i": a named instance's class
+  bool person = false;
+  SynsetPtr first = findtheinfo_ds(buffer, NOUN, SYNS, 1);
+  if (first) {
+    // Breadth-first up the hypernyms (a synset may have several), bounded: the noun hierarchy is
+    // under twenty levels deep.
+    std::vector<long> frontier{first->hereiam};
+    std::vector<long> seen;
+    free_syns(first);
+    for (int depth = 0; depth < 24 && !frontier.empty() && !person; ++depth) {
+      std::vector<long> next;
+      for (long offset : frontier) {
+        if (offset == kPersonOffset) {
+          person = true;
+          break;
+        }
+        if (std::find(seen.begin(), seen.end(), offset) != seen.end()) continue;
+        seen.push_back(offset);
+        char no_word[1] = "";
+        SynsetPtr s = read_synset(NOUN, offset, no_word);
+        if (!s) continue;
+        for (int i = 0; i < s->ptrcount; ++i)
+          if ((s->ptrtyp[i] == HYPERPTR || s->ptrtyp[i] == kInstanceHypernym) && s->ppos[i] == NOUN)
+            next.push_back(s->ptroff[i]);
+        free_synset(s);
+      }
+      frontier = std::move(next);
+    }
+  }
+  remember(key, person ? std::vector<std::string>{"person"} : std::vector<std::string>{});
+  return person;
+}
+
 }  // namespace gestura::wordnet

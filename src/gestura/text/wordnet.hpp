@@ -23,4 +23,9 @@ std::vector<std::string> lemmas(std::string_view word, english::PartOfSpeech pos
 // multi-word lemmas with spaces ("look_at" → "look at").
 std::vector<std::string> synonyms(std::string_view lemma, english::PartOfSpeech pos, int senses = 3);
 
+// Whether the most frequent noun sense of `lemma` is a kind of person (its hypernyms reach WordNet's
+// person.n.01): teacher, mother, child, doctor, friend — the nouns whose referents a signer places
+// in space. False for unknown words and without the database.
+bool names_a_person(std::string_view lemma);
+
 }  // namespace gestura::wordnet

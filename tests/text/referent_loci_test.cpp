@@ -1,0 +1,143 @@
+// Spatial grammar, the discourse half (text/referent_loci.hpp): which place each referent gets,
+// which place each pronoun points at, and between which places agreement verbs move. Expected
+// glosses are worked out by hand from ASL grammar (docs/grammar.md).
+#include "gestura/text/referent_loci.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "gestura/lexicon/lexicon_files.hpp"
+#include "gestura/text/lexicon_inventory.hpp"
+#include "gestura/text/translator.hpp"
+
+namespace gestura {
+namespace {
+
+// The built-in ASL lexicon answers, as in `gestura gloss`.
+Translation gloss(std::string_view text) {
+  static Lexicon builtin = load_builtin_lexicon(builtin_lexicon_files());
+  static LayeredLexicon layers = [] {
+    LayeredLexicon l;
+    l.push_layer(builtin);
+    return l;
+  }();
+  LexiconInventory inventory(layers, "ase");
+  return translate_to_gloss(text, inventory);
+}
+
+const GlossToken* find(const Translation& t, std::string_view gloss, std::size_t from = 0) {
+  for (std::size_t i = from; i < t.glosses.size(); ++i)
+    if (t.glosses[i].gloss == gloss) return &t.glosses[i];
+  return nullptr;
+}
+
+TEST(ReferentLoci, SheGaveHimTheBookPlacesTwoPeopleAndGiveMovesBetweenThem) {
+  const Translation t = gloss("She gave him the book.");
+  EXPECT_EQ(t.text(), "IX-3a GIVE:3a→3b IX-3b BOOK");
+  const GlossToken* she = find(t, "IX-3a");
+  const GlossToken* give = find(t, "GIVE:3a→3b");
+  const GlossToken* him = find(t, "IX-3b");
+  ASSERT_TRUE(she && give && him);
+  EXPECT_EQ(she->sign(), "IX-3");
+  EXPECT_EQ(she->at, (Locus{3, 0}));
+  EXPECT_EQ(him->at, (Locus{3, 1}));
+  EXPECT_NE(she->at, him->at);
+  EXPECT_EQ(give->sign(), "GIVE");
+  EXPECT_EQ(give->from, she->at);
+  EXPECT_EQ(give->to, him->at);
+  EXPECT_NE(give->reason.find("agreement verb"), std::string::npos) << give->reason;
+}
+
+TEST(ReferentLoci, FirstAndSecondPersonAgreementRunsBothWays) {
+  const Translation a = gloss("I give you the book.");
+  const Translation b = gloss("You give me the book.");
+  const GlossToken* ga = find(a, "GIVE:1→2");
+  const GlossToken* gb = find(b, "GIVE:2→1");
+  ASSERT_TRUE(ga) << a.text();
+  ASSERT_TRUE(gb) << b.text();
+  EXPECT_EQ(ga->from, (Locus{1, 0}));
+  EXPECT_EQ(gb->to, (Locus{1, 0}));
+  // An imperative: the addressee helps.
+  EXPECT_NE(gloss("Help me!").text().find("HELP:2→1"), std::string::npos) << gloss("Help me!").text();
+}
+
+TEST(ReferentLoci, LaterPronounsReuseTheirAntecedentsPlaces) {
+  // John and Mary are placed where they are introduced; he and her point back at them, and each
+  // name is followed by the index that sets its place up.
+  const Translation t = gloss("John met Mary. He gave her a book.");
+  EXPECT_EQ(t.text(), "FS-JOHN IX-3a MEET FS-MARY IX-3b / IX-3a GIVE:3a→3b IX-3b BOOK") << t.text();
+  // Gender from the pronoun alone: two women and a man.
+  const Translation u = gloss("My mother called my father. She told him a story.");
+  const GlossToken* she = find(u, "IX-3a");
+  const GlossToken* him = find(u, "IX-3b");
+  ASSERT_TRUE(she && him) << u.text();
+  EXPECT_NE(find(u, "TELL:3a→3b"), nullptr) << u.text();
+}
+
+TEST(ReferentLoci, HerIsTheRecipientOfAThingAndThePossessorOfAPerson) {
+  EXPECT_EQ(gloss("I gave her money.").text(), "IX-1 GIVE:1→3a IX-3a MONEY");
+  EXPECT_EQ(gloss("She sent her mother a letter.").text(), "IX-3a SEND:3a→3b POSS-3a MOTHER IX-3b LETTER");
+  EXPECT_EQ(gloss("I need to tell her something.").text(), "IX-1 MUST TELL:1→3a IX-3a SOMETHING");
+}
+
+TEST(ReferentLoci, AnObjectPronounIsNotItsOwnClausesSubject) {
+  const Translation t = gloss("He helped him.");
+  EXPECT_EQ(t.text(), "IX-3a HELP:3a→3b IX-3b") << t.text();
+  // A possessive may be: John's own keys.
+  const Translation u = gloss("The boy lost his keys.");
+  EXPECT_NE(u.text().find("BOY IX-3a"), std::string::npos) << u.text();
+  EXPECT_NE(u.text().find("POSS-3a"), std::string::npos) << u.text();
+}
+
+TEST(ReferentLoci, PluralsAreArcsOverTheirPlaces) {
+  // A plural noun of people is set up with an arc over its place; "they" reuses it.
+  const Translation t = gloss("The children played. They laughed.");
+  EXPECT_NE(t.text().find("CHILD IX-3a-PL"), std::string::npos) << t.text();
+  const GlossToken* they = find(t, "IX-3a-PL", 2);
+  ASSERT_TRUE(they) << t.text();
+  EXPECT_EQ(they->sign(), "IX-3-PL");
+  // "they" with no plural antecedent sweeps over the people already placed.
+  const Translation u = gloss("John met Mary. They went home.");
+  const GlossToken* both = find(u, "IX-3-PL:3a+3b");
+  ASSERT_TRUE(both) << u.text();
+  ASSERT_EQ(both->over.size(), 2u);
+  EXPECT_EQ(both->over[0], (Locus{3, 0}));
+  EXPECT_EQ(both->over[1], (Locus{3, 1}));
+}
+
+TEST(ReferentLoci, QuotedSpeechIsRoleShiftedTowardTheSpeaker) {
+  const Translation t = gloss("She said, \"I am hungry.\"");
+  ASSERT_EQ(t.role_shifts.size(), 1u) << t.text();
+  const RoleShift& r = t.role_shifts[0];
+  const GlossToken* she = find(t, "IX-3a");
+  ASSERT_TRUE(she) << t.text();
+  EXPECT_EQ(r.toward, she->at);
+  // Over the quote's glosses only: IX-1 HUNGRY.
+  std::string quoted;
+  for (std::size_t i = r.first; i < r.last; ++i) quoted += t.glosses[i].gloss + " ";
+  EXPECT_EQ(quoted, "IX-1 HUNGRY ") << t.text();
+  // Quoted after the speech verb's subject comes later in the sentence too.
+  const Translation u = gloss("\"I am hungry,\" he said.");
+  ASSERT_EQ(u.role_shifts.size(), 1u) << u.text();
+  EXPECT_EQ(u.role_shifts[0].toward, (Locus{3, 0}));
+  // The signer quoting themselves needs no shift; no quotes, no shift.
+  EXPECT_TRUE(gloss("I said, \"Hello.\"").role_shifts.empty());
+  EXPECT_TRUE(gloss("She said she was tired.").role_shifts.empty());
+}
+
+TEST(ReferentLoci, PointingWordsThatAreNotAnaphoraKeepTheirSign) {
+  // "this" is IX-3 pointing at a thing present, not at a referent's place.
+  const Translation t = gloss("I like this.");
+  EXPECT_EQ(t.text(), "IX-1 LIKE IX-3") << t.text();
+  EXPECT_FALSE(t.glosses.back().at);
+}
+
+TEST(ReferentLoci, AgreementVerbsAreTheDirectionalOnes) {
+  for (const char* verb : {"GIVE", "HELP", "TELL", "ASK", "SHOW", "SEND", "PAY", "INFORM", "BORROW"})
+    EXPECT_TRUE(is_agreement_verb(verb)) << verb;
+  for (const char* plain : {"LOVE", "EAT", "GO", "KNOW", "IX-3"}) EXPECT_FALSE(is_agreement_verb(plain)) << plain;
+}
+
+}  // namespace
+}  // namespace gestura
