@@ -16,6 +16,7 @@
 #include "gestura/io/gltf_export.hpp"
 #include "gestura/serve/api_error.hpp"
 #include "gestura/serve/clip_glb.hpp"
+#include "gestura/serve/room.hpp"
 #include "gestura/serve/public_request.hpp"
 #include "gestura/serve/static_files.hpp"
 
@@ -155,6 +156,9 @@ Api::Api(ServeOptions options) : options_(std::move(options)) {
   if (!options_.lexicon.empty()) setenv("GESTURA_LEXICON", options_.lexicon.c_str(), 1);  // the workspace's user lexicon
   workspaces_ = std::make_unique<WorkspacePool>(options_.threads + options_.jobs);
   jobs_ = std::make_unique<JobQueue>((data_ / "jobs").string(), options_.jobs, static_cast<std::size_t>(options_.queue));
+  RoomLimits room_limits;
+  room_limits.max_text = static_cast<std::size_t>(options_.max_text);
+  rooms_ = std::make_unique<Rooms>(room_services(), room_limits);
   add_routes();
 }
 
@@ -183,6 +187,24 @@ void Api::add_routes() {
   router_.add("GET", "/api/jobs/{id}/events", "job_events", [](ApiRequest&, const app::RunContext&) {
     return error_response(426, "usage", "this is a WebSocket: connect with an Upgrade: websocket request");
   });
+  router_.add("GET", "/api/rooms", "rooms", [this](ApiRequest&, const app::RunContext&) { return ApiResponse::json(200, rooms_->list().dump()); });
+  router_.add("GET", "/api/rooms/{room}", "room", [this](ApiRequest& q, const app::RunContext&) {
+    const json state = rooms_->state(q.params["room"]);
+    if (state.is_null()) return error_response(404, "not_found", "no room " + q.params["room"] + " (a room exists while someone is in it)", "room");
+    return ApiResponse::json(200, state.dump(-1, ' ', false, json::error_handler_t::replace));
+  });
+  router_.add("GET", "/api/rooms/{room}/clips/{id}", "room_clip", [this](ApiRequest& q, const app::RunContext&) {
+    std::optional<std::string> glb = rooms_->clip(q.params["room"], q.params["id"]);
+    if (!glb) return error_response(404, "not_found", "no clip " + q.params["id"] + " in room " + q.params["room"] + " (rooms keep their last clips only)", "id");
+    ApiResponse r;
+    r.content_type = "model/gltf-binary";
+    r.body = std::move(*glb);
+    r.headers.emplace_back("Cache-Control", "private, max-age=3600");  // a clip id is never reused
+    return r;
+  });
+  router_.add("GET", "/ws/room/{room}", "room_socket", [](ApiRequest&, const app::RunContext&) {
+    return error_response(426, "usage", "this is a room's WebSocket: connect with an Upgrade: websocket request");
+  });
   router_.add("GET", "/*", "static", [this](ApiRequest& q, const app::RunContext&) {
     if (web_.empty()) {
       if (q.path == "/") return ApiResponse::json(200, json{{"service", "gestura"}, {"api", "/api"}, {"health", "/health"}}.dump());
@@ -199,9 +221,49 @@ bool Api::job_events(const ApiRequest& request, std::string& job_id) const {
   return true;
 }
 
+bool Api::room_socket(const ApiRequest& request, std::string& room) const {
+  const std::vector<std::string> parts = split_path(request.path);
+  if (parts.size() != 3 || parts[0] != "ws" || parts[1] != "room") return false;
+  room = parts[2];
+  return true;
+}
+
+RoomServices Api::room_services() {
+  RoomServices services;
+  services.say = [this](const std::string& text, float speed, const std::string& look) {
+    app::SayRequest say;
+    say.text = text;
+    say.speed = speed;
+    say.avatar.avatar = look;
+    const WorkspacePool::Lease workspace = workspaces_->acquire();
+    app::RunContext context;
+    context.workspace = workspace.get();
+    const app::SayResult result = app::run(say, context);
+    const Avatar& avatar = workspace->avatar(say.avatar);
+    RoomClip clip;
+    clip.timeline = app::to_json(result);
+    clip.duration = result.performance.duration;
+    clip.glb = clip_glb(avatar.skeleton, result.performance.clip, avatar.mesh, clip.timeline);
+    return clip;
+  };
+  services.gaze = [this](const vec3& point) { return host_gaze()->look_at(SeatView{seat_place(-1).position, seat_place(-1).yaw}, point); };
+  return services;
+}
+
+std::shared_ptr<const HostGaze> Api::host_gaze() {
+  std::lock_guard lock(host_mutex_);
+  if (!host_gaze_) {
+    const WorkspacePool::Lease workspace = workspaces_->acquire();
+    const app::AvatarChoice host;
+    const Avatar& avatar = workspace->avatar(host);
+    host_gaze_ = std::make_shared<HostGaze>(std::make_shared<Skeleton>(avatar.skeleton), workspace->rig(host).bind_model);
+  }
+  return host_gaze_;
+}
+
 bool Api::quick(ApiRequest& request) const {
   const std::string name = router_.match(request).name;
-  return name == "health" || name == "metrics" || name == "job" || name == "job_cancel" || name == "static" ||
+  return name == "rooms" || name == "room" || name == "room_clip" || name == "room_socket" || name == "health" || name == "metrics" || name == "job" || name == "job_cancel" || name == "static" ||
          name == "unmatched" || name == "job_events";
 }
 

@@ -12,6 +12,7 @@
 #include "gestura/serve/job_queue.hpp"
 #include "gestura/serve/message.hpp"
 #include "gestura/serve/metrics.hpp"
+#include "gestura/serve/room.hpp"
 #include "gestura/serve/router.hpp"
 #include "gestura/serve/serve_options.hpp"
 #include "gestura/serve/workspace_pool.hpp"
@@ -33,10 +34,13 @@ class Api {
   // The route label of a request for /metrics, and whether it is a job's progress WebSocket
   // (then `job_id` is set).
   bool job_events(const ApiRequest& request, std::string& job_id) const;
+  // Whether a request is a room's WebSocket (/ws/room/NAME); then `room` is set.
+  bool room_socket(const ApiRequest& request, std::string& room) const;
 
   const ServeOptions& options() const { return options_; }
   Metrics& metrics() { return metrics_; }
   JobQueue& jobs() { return *jobs_; }
+  Rooms& rooms() { return *rooms_; }
   // Whether a request only reads state (health, metrics, job status, static files): the server
   // answers those at once instead of queueing them behind signing.
   bool quick(ApiRequest& request) const;
@@ -58,6 +62,8 @@ class Api {
   ApiResponse job_download(ApiRequest& request);
   ApiResponse job_cancel(ApiRequest& request);
   ApiResponse health();
+  RoomServices room_services();
+  std::shared_ptr<const HostGaze> host_gaze();
 
   ServeOptions options_;
   std::filesystem::path data_, web_;
@@ -68,6 +74,9 @@ class Api {
   Router router_;
   std::mutex avatar_mutex_;
   std::string avatar_glb_, avatar_etag_;
+  std::unique_ptr<Rooms> rooms_;
+  std::mutex host_mutex_;
+  std::shared_ptr<const HostGaze> host_gaze_;
 };
 
 }  // namespace gestura::serve
