@@ -13,6 +13,7 @@
 #include "gestura/app/lexicon.hpp"
 #include "gestura/app/say.hpp"
 #include "gestura/app/sign.hpp"
+#include "gestura/body/avatar_look.hpp"
 #include "gestura/io/gltf_export.hpp"
 #include "gestura/serve/api_error.hpp"
 #include "gestura/serve/clip_glb.hpp"
@@ -90,6 +91,27 @@ R read_public_query(const ApiRequest& request, std::initializer_list<std::string
     if (!found) app::usage_error(key, "unknown parameter");
   }
   return r;
+}
+
+// A look is a built-in look of the generated avatar (gestura avatar looks); a client names no
+// avatar file of the server's.
+void check_look(const std::string& look) {
+  if (!valid_look(look)) app::usage_error("look", "is one of " + look_names() + ", not '" + look + "'");
+}
+
+// Takes "look" (or "avatar", the command line's name for it) out of a JSON body: the built-in look
+// the request performs on; "default" when absent.
+std::string take_look(json& body) {
+  std::string look = "default";
+  if (!body.is_object()) return look;
+  for (const char* key : {"avatar", "look"}) {
+    if (!body.contains(key)) continue;
+    if (!body[key].is_string()) app::usage_error(key, "expected the name of a look (" + look_names() + ")");
+    look = body[key].get<std::string>();
+    if (!valid_look(look)) app::usage_error(key, "is one of " + look_names() + ", not '" + look + "'");
+    body.erase(key);
+  }
+  return look;
 }
 
 void check_text(const std::string& text, int max_bytes) {
@@ -187,6 +209,13 @@ void Api::add_routes() {
   router_.add("GET", "/api/jobs/{id}/events", "job_events", [](ApiRequest&, const app::RunContext&) {
     return error_response(426, "usage", "this is a WebSocket: connect with an Upgrade: websocket request");
   });
+  router_.add("GET", "/api/looks", "looks", [](ApiRequest&, const app::RunContext&) {
+    json looks = json::array();
+    for (const AvatarLook& look : builtin_looks()) looks.push_back({{"name", look.name}, {"description", look.description}});
+    ApiResponse r = ApiResponse::json(200, json{{"looks", looks}}.dump());
+    r.headers.emplace_back("Cache-Control", "public, max-age=3600");
+    return r;
+  });
   router_.add("GET", "/api/rooms", "rooms", [this](ApiRequest&, const app::RunContext&) { return ApiResponse::json(200, rooms_->list().dump()); });
   router_.add("GET", "/api/rooms/{room}", "room", [this](ApiRequest& q, const app::RunContext&) {
     const json state = rooms_->state(q.params["room"]);
@@ -246,24 +275,38 @@ RoomServices Api::room_services() {
     clip.glb = clip_glb(avatar.skeleton, result.performance.clip, avatar.mesh, clip.timeline);
     return clip;
   };
-  services.gaze = [this](const vec3& point) { return host_gaze()->look_at(SeatView{seat_place(-1).position, seat_place(-1).yaw}, point); };
+  services.gaze = [this](const vec3& point) -> std::optional<JointRotations> {
+    std::shared_ptr<const HostGaze> gaze;
+    {
+      std::lock_guard lock(host_mutex_);
+      gaze = host_gaze_;
+    }
+    if (!gaze) return std::nullopt;
+    const Seat host = seat_place(-1);
+    return gaze->look_at(SeatView{host.position, host.yaw}, point);
+  };
+  services.prepare_host = [this] { host_gaze(); };
   return services;
 }
 
 std::shared_ptr<const HostGaze> Api::host_gaze() {
-  std::lock_guard lock(host_mutex_);
-  if (!host_gaze_) {
-    const WorkspacePool::Lease workspace = workspaces_->acquire();
-    const app::AvatarChoice host;
-    const Avatar& avatar = workspace->avatar(host);
-    host_gaze_ = std::make_shared<HostGaze>(std::make_shared<Skeleton>(avatar.skeleton), workspace->rig(host).bind_model);
+  {
+    std::lock_guard lock(host_mutex_);
+    if (host_gaze_) return host_gaze_;
   }
+  // Built outside the lock (seconds): gaze() answers "not yet" meanwhile instead of waiting.
+  const WorkspacePool::Lease workspace = workspaces_->acquire();
+  const app::AvatarChoice host;
+  const Avatar& avatar = workspace->avatar(host);
+  auto gaze = std::make_shared<HostGaze>(std::make_shared<Skeleton>(avatar.skeleton), workspace->rig(host).bind_model);
+  std::lock_guard lock(host_mutex_);
+  if (!host_gaze_) host_gaze_ = std::move(gaze);
   return host_gaze_;
 }
 
 bool Api::quick(ApiRequest& request) const {
   const std::string name = router_.match(request).name;
-  return name == "rooms" || name == "room" || name == "room_clip" || name == "room_socket" || name == "health" || name == "metrics" || name == "job" || name == "job_cancel" || name == "static" ||
+  return name == "looks" || name == "rooms" || name == "room" || name == "room_clip" || name == "room_socket" || name == "health" || name == "metrics" || name == "job" || name == "job_cancel" || name == "static" ||
          name == "unmatched" || name == "job_events";
 }
 
@@ -301,7 +344,11 @@ void Api::warm_up() {
     for (int i = 0; i < workspaces_->size(); ++i) all.emplace_back(workspaces_->acquire());
     for (std::size_t i = 0; i < all.size(); ++i) {
       (*all[i])->signer(app::AvatarChoice{});
-      if (i == 0) avatar_bytes(**all[i]);
+      if (i == 0) {
+        avatar_bytes(**all[i], "default");
+        all[i].reset();
+        host_gaze();  // the rooms' host (leases the workspace just handed back)
+      }
       all[i].reset();
     }
   } catch (...) {
@@ -317,7 +364,10 @@ ApiResponse Api::health() {
 }
 
 ApiResponse Api::say(ApiRequest& request, const app::RunContext& context) {
-  app::SayRequest say = read_public<Public<app::SayRequest, SayFields>>(body_json(request)).request;
+  json body = body_json(request);
+  const std::string look = take_look(body);
+  app::SayRequest say = read_public<Public<app::SayRequest, SayFields>>(body).request;
+  say.avatar.avatar = look;
   check_text(say.text, options_.max_text);
   const WorkspacePool::Lease workspace = workspaces_->acquire();
   app::RunContext leased = context;
@@ -338,7 +388,9 @@ ApiResponse Api::sign(ApiRequest& request, const app::RunContext& context) {
     body.erase("sigml");
     check_text(sigml_text, options_.max_body);
   }
+  const std::string look = take_look(body);
   app::SignRequest sign = read_public<Public<app::SignRequest, SignFields>>(body).request;
+  sign.avatar.avatar = look;
   struct Remove {
     fs::path path;
     ~Remove() {
@@ -412,35 +464,44 @@ ApiResponse Api::lexicon_entry(ApiRequest& request, const app::RunContext& conte
   return ApiResponse::json(200, app::to_json(app::run(query, leased)).dump());
 }
 
-void Api::avatar_bytes(app::Workspace& workspace) {
+void Api::avatar_bytes(app::Workspace& workspace, const std::string& look) {
   std::lock_guard lock(avatar_mutex_);
-  if (!avatar_glb_.empty()) return;
-  const Avatar& a = workspace.avatar(app::AvatarChoice{});
+  if (avatar_glb_.count(look)) return;
+  app::AvatarChoice choice;
+  choice.avatar = look;
+  const Avatar& a = workspace.avatar(choice);
   const std::vector<std::uint8_t> bytes = encode_glb(a.skeleton, a.mesh, "gestura");
-  avatar_glb_.assign(bytes.begin(), bytes.end());
-  avatar_etag_ = quoted_hash(avatar_glb_);
+  AvatarBytes& out = avatar_glb_[look];
+  out.glb.assign(bytes.begin(), bytes.end());
+  out.etag = quoted_hash(out.glb);
 }
 
 ApiResponse Api::avatar(ApiRequest& request) {
+  for (const auto& [key, value] : request.query)
+    if (key != "look") app::usage_error(key, "unknown parameter (known: look)");
+  const std::string look = request.query.count("look") ? request.query.at("look") : std::string("default");
+  check_look(look);
   bool built = false;  // else built here with a leased workspace (not under the lock: leasing may wait)
   {
     std::lock_guard lock(avatar_mutex_);
-    built = !avatar_glb_.empty();
+    built = avatar_glb_.count(look) > 0;
   }
   if (!built) {
     const WorkspacePool::Lease workspace = workspaces_->acquire();
-    avatar_bytes(*workspace);
+    avatar_bytes(*workspace, look);
   }
+  std::lock_guard lock(avatar_mutex_);
+  const AvatarBytes& bytes = avatar_glb_.at(look);
   ApiResponse r;
-  r.headers.emplace_back("ETag", avatar_etag_);
+  r.headers.emplace_back("ETag", bytes.etag);
   r.headers.emplace_back("Cache-Control", "public, max-age=86400");
-  if (request.if_none_match == avatar_etag_) {
+  if (request.if_none_match == bytes.etag) {
     r.status = 304;
     r.content_type.clear();
     return r;
   }
   r.content_type = "model/gltf-binary";
-  r.body = avatar_glb_;
+  r.body = bytes.glb;
   return r;
 }
 
@@ -452,7 +513,9 @@ ApiResponse Api::video(ApiRequest& request) {
     format = body["format"].get<std::string>();
     body.erase("format");
   }
+  const std::string look = take_look(body);
   app::SayRequest say = read_public<Public<app::SayRequest, VideoFields>>(body).request;
+  say.avatar.avatar = look;
   check_text(say.text, options_.max_text);
   if (say.output.picture.size.width * say.output.picture.size.height > kMaxVideoPixels)
     throw app::AppError(app::ErrorCategory::too_large, app::Place{"size", {}}, "videos are at most 1280x720 pixels here");

@@ -4,6 +4,7 @@
 // of the command layer (src/gestura/app) run, JSON or a binary out; errors by the app error model.
 #include <filesystem>
 #include <memory>
+#include <map>
 #include <mutex>
 #include <string>
 
@@ -56,7 +57,7 @@ class Api {
   ApiResponse lexicon_search(ApiRequest& request, const app::RunContext& context);
   ApiResponse lexicon_entry(ApiRequest& request, const app::RunContext& context);
   ApiResponse avatar(ApiRequest& request);
-  void avatar_bytes(app::Workspace& workspace);  // builds avatar_glb_ once
+  void avatar_bytes(app::Workspace& workspace, const std::string& look);  // builds a look's .glb once
   ApiResponse video(ApiRequest& request);
   ApiResponse job(ApiRequest& request);
   ApiResponse job_download(ApiRequest& request);
@@ -73,7 +74,10 @@ class Api {
   std::unique_ptr<JobQueue> jobs_;
   Router router_;
   std::mutex avatar_mutex_;
-  std::string avatar_glb_, avatar_etag_;
+  struct AvatarBytes {
+    std::string glb, etag;
+  };
+  std::map<std::string, AvatarBytes> avatar_glb_;  // by look
   std::unique_ptr<Rooms> rooms_;
   std::mutex host_mutex_;
   std::shared_ptr<const HostGaze> host_gaze_;

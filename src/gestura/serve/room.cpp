@@ -118,7 +118,7 @@ struct Rooms::Room {
   LookState host_state;
   HostLook host;
   int arrived = -1;
-  std::uint64_t host_generation = 0;
+  bool host_sent = false;
   json host_rotations = json::object();
 };
 
@@ -373,7 +373,7 @@ void Rooms::join(Connection& c, const json& message) {
                        {"reconnect_grace", limits_.reconnect_grace}};
   send(c, std::move(welcome));
   broadcast(*room, {{"type", token.empty() ? "joined" : "back"}, {"participant", participant_json(*p)}}, c.id);
-  update_host(*room, false);
+  update_host(*room);
 }
 
 void Rooms::say(Connection& c, Participant& p, const json& message) {
@@ -497,7 +497,7 @@ void Rooms::leave(Connection& c) {
 void Rooms::remove_participant(Room& room, const std::string& id, const std::string& why) {
   if (room.participants.erase(id) == 0) return;
   broadcast(room, {{"type", "left"}, {"participant", id}, {"why", why}});
-  update_host(room, false);
+  update_host(room);
 }
 
 void Rooms::disconnect(std::uint64_t connection) {
@@ -541,13 +541,13 @@ void Rooms::tick_locked() {
       if (p->playing && p->playing->end < t) p->playing.reset();
     }
     for (const std::string& id : expired) remove_participant(room, id, "timeout");
-    update_host(room, false);
+    update_host(room);
     if (room.participants.empty() && room.connections == 0) it = rooms_.erase(it);
     else ++it;
   }
 }
 
-void Rooms::update_host(Room& room, bool force) {
+void Rooms::update_host(Room& room) {
   const double t = now();
   std::vector<SeatView> seats(static_cast<std::size_t>(limits_.seats));
   for (int k = 0; k < limits_.seats; ++k) {
@@ -565,30 +565,29 @@ void Rooms::update_host(Room& room, bool force) {
   host.yaw = host_seat.yaw;
   const HostLook look = choose_host_look(host, seats, room.arrived, static_cast<float>(t), room.host_state);
   room.arrived = -1;
-  if (!force && look.seat == room.host.seat && look.why == room.host.why) return;
-  room.host = look;
-  const std::uint64_t generation = ++room.host_generation;
-  if (!services_.gaze) return;
-  std::weak_ptr<bool> alive = alive_;
-  defer([this, alive, name = room.name, generation, point = look.point] {
-    JointRotations rotations;
-    try {
-      rotations = services_.gaze(point);
-    } catch (...) {
-      return;  // no host rig: the host keeps looking ahead
+  if (look.seat == room.host.seat && look.why == room.host.why && room.host_sent) return;
+  const std::optional<JointRotations> rotations = services_.gaze ? services_.gaze(look.point) : std::nullopt;
+  if (!rotations) {
+    // The host's body is still being built: build it once, and look again on a later tick.
+    if (!host_preparing_ && services_.prepare_host) {
+      host_preparing_ = true;
+      defer([prepare = services_.prepare_host] {
+        try {
+          prepare();
+        } catch (...) {
+          // no host body: the host keeps looking ahead
+        }
+      });
     }
-    const auto still = alive.lock();
-    if (!still || !*still) return;
-    std::lock_guard lock(mutex_);
-    const auto r = rooms_.find(name);
-    if (r == rooms_.end() || r->second->host_generation != generation) return;
-    Room& rm = *r->second;
-    rm.host_rotations = rotations_json(rotations);
-    json look_at = nullptr;
-    for (const auto& [id, p] : rm.participants)
-      if (p->seat == rm.host.seat) look_at = p->id;
-    broadcast(rm, {{"type", "host"}, {"look_at", look_at}, {"why", rm.host.why}, {"rotations", rm.host_rotations}});
-  });
+    return;
+  }
+  room.host = look;
+  room.host_sent = true;
+  room.host_rotations = rotations_json(*rotations);
+  json look_at = nullptr;
+  for (const auto& [id, p] : room.participants)
+    if (p->seat == room.host.seat) look_at = p->id;
+  broadcast(room, {{"type", "host"}, {"look_at", look_at}, {"why", room.host.why}, {"rotations", room.host_rotations}});
 }
 
 std::optional<std::string> Rooms::clip(const std::string& room, const std::string& id) const {

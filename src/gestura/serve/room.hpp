@@ -62,8 +62,10 @@ struct RoomServices {
   // Fits the look's body to MediaPipe Holistic landmarks (the JSON of a landmarks message);
   // throws AppError (usage) naming the field for malformed landmarks.
   std::function<JointRotations(const nlohmann::json& landmarks, const std::string& look)> capture;
-  // The host's head and eyes turned toward a point (host model space, metres).
-  std::function<JointRotations(const vec3& point)> gaze;
+  // The host's head and eyes turned toward a point (world, metres); quick, never blocks: none while
+  // the host's body is not built yet. prepare_host builds it (slow: called through post, once).
+  std::function<std::optional<JointRotations>(const vec3& point)> gaze;
+  std::function<void()> prepare_host;
   // Runs slow work elsewhere; the default runs it at once, on the caller's thread.
   std::function<void(std::function<void()>)> post;
 };
@@ -132,7 +134,7 @@ class Rooms {
   void fail_current(Connection& c);
   void broadcast(Room& room, nlohmann::json message, std::uint64_t except = 0);
   void send(Connection& c, nlohmann::json message);
-  void update_host(Room& room, bool force);
+  void update_host(Room& room);
   void remove_participant(Room& room, const std::string& id, const std::string& why);
   nlohmann::json state_locked(const Room& room) const;
   nlohmann::json participant_json(const Participant& p) const;
@@ -147,6 +149,7 @@ class Rooms {
   std::map<std::uint64_t, std::unique_ptr<Connection>> connections_;
   std::uint64_t next_connection_ = 1;
   std::uint64_t next_clip_ = 1;
+  bool host_preparing_ = false;
   std::vector<std::function<void()>> deferred_;
   std::shared_ptr<bool> alive_;  // posted work checks it before touching the rooms
 };
