@@ -554,9 +554,11 @@ void Rooms::update_host(Room& room) {
     const Seat s = seat_place(k);
     seats[static_cast<std::size_t>(k)].position = s.position;
     seats[static_cast<std::size_t>(k)].yaw = s.yaw;
+    seats[static_cast<std::size_t>(k)].present = false;
   }
   for (const auto& [id, p] : room.participants) {
     SeatView& v = seats[static_cast<std::size_t>(p->seat)];
+    v.present = true;
     v.signing = (p->playing && p->playing->start <= t && t < p->playing->end) || p->posed_until > t;
   }
   const Seat host_seat = seat_place(-1);

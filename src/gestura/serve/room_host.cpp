@@ -1,5 +1,6 @@
 #include "gestura/serve/room_host.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "gestura/world/character_motion.hpp"
@@ -14,23 +15,27 @@ ActorView view_of(const SeatView& s) {
   a.yaw = s.yaw;
   a.height = s.height;
   a.signing = s.signing;
+  a.radius = 0.18f;  // a body standing still, not a walker's clearance: seats on the arc do not hide one another
   return a;
 }
 
 }  // namespace
 
 HostLook choose_host_look(const SeatView& host, std::span<const SeatView> seats, int arrived, float now, LookState& state) {
-  // Actor 0 is the host, actor k + 1 seat k.
+  // Actor 0 is the host, then the seats someone sits in.
   std::vector<ActorView> actors{view_of(host)};
-  for (const SeatView& s : seats) actors.push_back(view_of(s));
+  std::vector<int> seat_of{-1};
+  for (std::size_t k = 0; k < seats.size(); ++k)
+    if (seats[k].present) actors.push_back(view_of(seats[k])), seat_of.push_back(static_cast<int>(k));
   Percept percept;
   see(Environment{}, actors, 0, {}, {}, VisionParams{}, percept);
   std::vector<SoundEvent> events;
-  if (arrived >= 0 && static_cast<std::size_t>(arrived) < seats.size()) {
+  const auto arrived_actor = std::find(seat_of.begin(), seat_of.end(), arrived);
+  if (arrived >= 0 && arrived_actor != seat_of.end()) {
     SoundEvent e;
-    e.position = eye_point(actors[static_cast<std::size_t>(arrived) + 1]);
+    e.position = eye_point(actors[static_cast<std::size_t>(arrived_actor - seat_of.begin())]);
     e.what = "arrival";
-    e.source_actor = arrived + 1;
+    e.source_actor = static_cast<int>(arrived_actor - seat_of.begin());
     e.time = now;
     events.push_back(e);
     percept.heard.push_back(Heard{0, glm::length(e.position - host.position), true});
@@ -42,7 +47,7 @@ HostLook choose_host_look(const SeatView& host, std::span<const SeatView> seats,
   out.why = intent.why;
   if (intent.weight <= 0.0f) return out;  // straight ahead
   out.point = intent.point;
-  out.seat = intent.actor > 0 ? intent.actor - 1 : -1;
+  out.seat = intent.actor > 0 ? seat_of[static_cast<std::size_t>(intent.actor)] : -1;
   return out;
 }
 

@@ -26,6 +26,7 @@ struct SeatView {
   float yaw = 0.0f;
   float height = 1.7f;
   bool signing = false;
+  bool present = true;  // someone sits there (an empty seat is no body: it hides nothing)
 };
 
 struct HostLook {
