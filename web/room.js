@@ -28,7 +28,7 @@ function label(text) {
   const canvas = document.createElement('canvas');
   canvas.width = 256; canvas.height = 64;
   const sprite = new THREE.Sprite(new THREE.SpriteMaterial({ map: new THREE.CanvasTexture(canvas), depthTest: false }));
-  sprite.scale.set(0.6, 0.15, 1);
+  sprite.scale.set(0.8, 0.2, 1);
   sprite.userData.draw = (t, colour = '#24324a') => {
     const g = canvas.getContext('2d');
     g.clearRect(0, 0, 256, 64);
@@ -127,7 +127,7 @@ export class RoomView extends EventTarget {
       root.traverse((o) => { if (o.morphTargetInfluences) figure.morphMeshes.push(o); });
       figure.mixer = new THREE.AnimationMixer(root);
       figure.label = label(p.name);
-      figure.label.position.set(0, 2.05, 0);
+      figure.label.position.set(0, 2.1, 0);
       root.add(figure.label);
       if (!this.figures.has(id)) return figure;  // left while loading
       this.scene.add(root);
