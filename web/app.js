@@ -103,5 +103,15 @@ $('dict-form').addEventListener('submit', async (e) => {
   }
 });
 
+// The avatar's look: the built-in looks the server lists.
+fetch('/api/looks').then((r) => r.json()).then(({ looks }) => {
+  $('look').replaceChildren(...looks.map((l) => Object.assign(document.createElement('option'), { value: l.name, textContent: `${l.name} — ${l.description}` })));
+}).catch(() => {});
+$('look').addEventListener('change', (e) => {
+  setStatus('Loading the avatar…');
+  player.setLook(e.target.value).then(() => setStatus(`Ready: ${e.target.value}. Type text and press Enter.`))
+    .catch((err) => setStatus(`Cannot load the avatar: ${err.message}`, true));
+});
+
 player.loadAvatar().then(() => setStatus('Ready. Type text and press Enter.'))
   .catch((e) => setStatus(`Cannot load the avatar: ${e.message}`, true));

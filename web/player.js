@@ -97,10 +97,27 @@ export class Player extends EventTarget {
     return response;
   }
 
-  // Downloads and shows the avatar (once).
-  async loadAvatar() {
-    if (this.avatar) return this.avatar;
-    const buffer = await (await this.fetchOk('/api/avatar.glb')).arrayBuffer();
+  // Another built-in look (GET /api/looks): the next loadAvatar() and every clip after use it.
+  async setLook(look) {
+    if (look === (this.look ?? 'default')) return;
+    this.look = look;
+    if (this.action) { this.action.stop(); this.action = null; }
+    if (this.avatar) this.scene.remove(this.avatar);
+    this.avatar = null;
+    this.avatarLoading = null;
+    await this.loadAvatar();
+  }
+
+  // Downloads and shows the avatar (once per look; the browser caches it).
+  loadAvatar() {
+    if (this.avatar) return Promise.resolve(this.avatar);
+    this.avatarLoading ??= this.fetchAvatar();
+    return this.avatarLoading;
+  }
+
+  async fetchAvatar() {
+    const look = this.look ?? 'default';
+    const buffer = await (await this.fetchOk(`/api/avatar.glb${look === 'default' ? '' : `?look=${encodeURIComponent(look)}`}`)).arrayBuffer();
     const gltf = await new GLTFLoader().parseAsync(buffer, '');
     this.avatar = gltf.scene;
     this.scene.add(this.avatar);
@@ -123,8 +140,10 @@ export class Player extends EventTarget {
 
   async perform(path, body) {
     await this.loadAvatar();
+    const look = this.look ?? 'default';
     const response = await this.fetchOk(path + '?format=glb', {
-      method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'model/gltf-binary' }, body: JSON.stringify(body),
+      method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'model/gltf-binary' },
+      body: JSON.stringify(look === 'default' ? body : { ...body, look }),
     });
     const buffer = await response.arrayBuffer();
     this.lastClipBytes = buffer.byteLength;

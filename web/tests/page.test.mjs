@@ -78,6 +78,13 @@ try {
   await page.waitForFunction(() => window.gestura.timeline !== null, { timeout: 30000 });
   check(true, 'a dictionary sign plays');
 
+  // Another look: the avatar is replaced and signs on.
+  await page.waitForFunction(() => [...document.querySelectorAll('#look option')].some((o) => o.value === 'ben'), { timeout: 30000 });
+  await page.select('#look', 'ben');
+  await page.waitForFunction(() => document.getElementById('status').textContent.startsWith('Ready: ben'), { timeout: 120000 });
+  const benTimeline = await page.evaluate(() => window.gestura.say('hello').then((t) => t.glosses.map((g) => g.gloss)));
+  check(benTimeline.includes('HELLO'), 'the look chooser loads another avatar, which signs');
+
   // A bad request shows the server's message, and the page keeps working.
   await page.evaluate(() => { document.getElementById('text').value = 'a'.repeat(2500); });
   await page.click('#sign-button');

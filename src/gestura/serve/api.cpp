@@ -13,11 +13,14 @@
 #include "gestura/app/lexicon.hpp"
 #include "gestura/app/say.hpp"
 #include "gestura/app/sign.hpp"
+#include "gestura/body/avatar_look.hpp"
 #include "gestura/io/gltf_export.hpp"
 #include "gestura/serve/api_error.hpp"
 #include "gestura/serve/clip_glb.hpp"
 #include "gestura/serve/local_render_jobs.hpp"
 #include "gestura/serve/redis_render_jobs.hpp"
+#include "gestura/serve/look_choice.hpp"
+#include "gestura/serve/room.hpp"
 #include "gestura/serve/public_request.hpp"
 #include "gestura/serve/static_files.hpp"
 
@@ -87,6 +90,12 @@ R read_public_query(const ApiRequest& request, std::initializer_list<std::string
     if (!found) app::usage_error(key, "unknown parameter");
   }
   return r;
+}
+
+// A look is a built-in look of the generated avatar (gestura avatar looks); a client names no
+// avatar file of the server's.
+void check_look(const std::string& look) {
+  if (!valid_look(look)) app::usage_error("look", "is one of " + look_names() + ", not '" + look + "'");
 }
 
 void check_text(const std::string& text, int max_bytes) {
@@ -163,6 +172,9 @@ Api::Api(ServeOptions options) : options_(std::move(options)) {
       throw app::AppError(app::ErrorCategory::usage, app::Place{"broker", {}}, e.what());
     }
   }
+  RoomLimits room_limits;
+  room_limits.max_text = static_cast<std::size_t>(options_.max_text);
+  rooms_ = std::make_unique<Rooms>(room_services(), room_limits);
   add_routes();
 }
 
@@ -191,6 +203,31 @@ void Api::add_routes() {
   router_.add("GET", "/api/jobs/{id}/events", "job_events", [](ApiRequest&, const app::RunContext&) {
     return error_response(426, "usage", "this is a WebSocket: connect with an Upgrade: websocket request");
   });
+  router_.add("GET", "/api/looks", "looks", [](ApiRequest&, const app::RunContext&) {
+    json looks = json::array();
+    for (const AvatarLook& look : builtin_looks()) looks.push_back({{"name", look.name}, {"description", look.description}});
+    ApiResponse r = ApiResponse::json(200, json{{"looks", looks}}.dump());
+    r.headers.emplace_back("Cache-Control", "public, max-age=3600");
+    return r;
+  });
+  router_.add("GET", "/api/rooms", "rooms", [this](ApiRequest&, const app::RunContext&) { return ApiResponse::json(200, rooms_->list().dump()); });
+  router_.add("GET", "/api/rooms/{room}", "room", [this](ApiRequest& q, const app::RunContext&) {
+    const json state = rooms_->state(q.params["room"]);
+    if (state.is_null()) return error_response(404, "not_found", "no room " + q.params["room"] + " (a room exists while someone is in it)", "room");
+    return ApiResponse::json(200, state.dump(-1, ' ', false, json::error_handler_t::replace));
+  });
+  router_.add("GET", "/api/rooms/{room}/clips/{id}", "room_clip", [this](ApiRequest& q, const app::RunContext&) {
+    std::optional<std::string> glb = rooms_->clip(q.params["room"], q.params["id"]);
+    if (!glb) return error_response(404, "not_found", "no clip " + q.params["id"] + " in room " + q.params["room"] + " (rooms keep their last clips only)", "id");
+    ApiResponse r;
+    r.content_type = "model/gltf-binary";
+    r.body = std::move(*glb);
+    r.headers.emplace_back("Cache-Control", "private, max-age=3600");  // a clip id is never reused
+    return r;
+  });
+  router_.add("GET", "/ws/room/{room}", "room_socket", [](ApiRequest&, const app::RunContext&) {
+    return error_response(426, "usage", "this is a room's WebSocket: connect with an Upgrade: websocket request");
+  });
   router_.add("GET", "/*", "static", [this](ApiRequest& q, const app::RunContext&) {
     if (web_.empty()) {
       if (q.path == "/") return ApiResponse::json(200, json{{"service", "gestura"}, {"api", "/api"}, {"health", "/health"}}.dump());
@@ -207,9 +244,63 @@ bool Api::job_events(const ApiRequest& request, std::string& job_id) const {
   return true;
 }
 
+bool Api::room_socket(const ApiRequest& request, std::string& room) const {
+  const std::vector<std::string> parts = split_path(request.path);
+  if (parts.size() != 3 || parts[0] != "ws" || parts[1] != "room") return false;
+  room = parts[2];
+  return true;
+}
+
+RoomServices Api::room_services() {
+  RoomServices services;
+  services.say = [this](const std::string& text, float speed, const std::string& look) {
+    app::SayRequest say;
+    say.text = text;
+    say.speed = speed;
+    say.avatar.avatar = look;
+    const WorkspacePool::Lease workspace = workspaces_->acquire();
+    app::RunContext context;
+    context.workspace = workspace.get();
+    const app::SayResult result = app::run(say, context);
+    const Avatar& avatar = workspace->avatar(say.avatar);
+    RoomClip clip;
+    clip.timeline = app::to_json(result);
+    clip.duration = result.performance.duration;
+    clip.glb = clip_glb(avatar.skeleton, result.performance.clip, avatar.mesh, clip.timeline);
+    return clip;
+  };
+  services.gaze = [this](const vec3& point) -> std::optional<JointRotations> {
+    std::shared_ptr<const HostGaze> gaze;
+    {
+      std::lock_guard lock(host_mutex_);
+      gaze = host_gaze_;
+    }
+    if (!gaze) return std::nullopt;
+    const Seat host = seat_place(-1);
+    return gaze->look_at(SeatView{host.position, host.yaw}, point);
+  };
+  services.prepare_host = [this] { host_gaze(); };
+  return services;
+}
+
+std::shared_ptr<const HostGaze> Api::host_gaze() {
+  {
+    std::lock_guard lock(host_mutex_);
+    if (host_gaze_) return host_gaze_;
+  }
+  // Built outside the lock (seconds): gaze() answers "not yet" meanwhile instead of waiting.
+  const WorkspacePool::Lease workspace = workspaces_->acquire();
+  const app::AvatarChoice host;
+  const Avatar& avatar = workspace->avatar(host);
+  auto gaze = std::make_shared<HostGaze>(std::make_shared<Skeleton>(avatar.skeleton), workspace->rig(host).bind_model);
+  std::lock_guard lock(host_mutex_);
+  if (!host_gaze_) host_gaze_ = std::move(gaze);
+  return host_gaze_;
+}
+
 bool Api::quick(ApiRequest& request) const {
   const std::string name = router_.match(request).name;
-  return name == "health" || name == "metrics" || name == "job" || name == "job_cancel" || name == "static" ||
+  return name == "looks" || name == "rooms" || name == "room" || name == "room_clip" || name == "room_socket" || name == "health" || name == "metrics" || name == "job" || name == "job_cancel" || name == "static" ||
          name == "unmatched" || name == "job_events";
 }
 
@@ -250,7 +341,11 @@ void Api::warm_up() {
     for (int i = 0; i < workspaces_->size(); ++i) all.emplace_back(workspaces_->acquire());
     for (std::size_t i = 0; i < all.size(); ++i) {
       (*all[i])->signer(app::AvatarChoice{});
-      if (i == 0) avatar_bytes(**all[i]);
+      if (i == 0) {
+        avatar_bytes(**all[i], "default");
+        all[i].reset();
+        host_gaze();  // the rooms' host (leases the workspace just handed back)
+      }
       all[i].reset();
     }
   } catch (...) {
@@ -266,7 +361,10 @@ ApiResponse Api::health() {
 }
 
 ApiResponse Api::say(ApiRequest& request, const app::RunContext& context) {
-  app::SayRequest say = read_public<Public<app::SayRequest, SayFields>>(body_json(request)).request;
+  json body = body_json(request);
+  const std::string look = take_look(body);
+  app::SayRequest say = read_public<Public<app::SayRequest, SayFields>>(body).request;
+  say.avatar.avatar = look;
   check_text(say.text, options_.max_text);
   const WorkspacePool::Lease workspace = workspaces_->acquire();
   app::RunContext leased = context;
@@ -287,7 +385,9 @@ ApiResponse Api::sign(ApiRequest& request, const app::RunContext& context) {
     body.erase("sigml");
     check_text(sigml_text, options_.max_body);
   }
+  const std::string look = take_look(body);
   app::SignRequest sign = read_public<Public<app::SignRequest, SignFields>>(body).request;
+  sign.avatar.avatar = look;
   struct Remove {
     fs::path path;
     ~Remove() {
@@ -361,35 +461,44 @@ ApiResponse Api::lexicon_entry(ApiRequest& request, const app::RunContext& conte
   return ApiResponse::json(200, app::to_json(app::run(query, leased)).dump());
 }
 
-void Api::avatar_bytes(app::Workspace& workspace) {
+void Api::avatar_bytes(app::Workspace& workspace, const std::string& look) {
   std::lock_guard lock(avatar_mutex_);
-  if (!avatar_glb_.empty()) return;
-  const Avatar& a = workspace.avatar(app::AvatarChoice{});
+  if (avatar_glb_.count(look)) return;
+  app::AvatarChoice choice;
+  choice.avatar = look;
+  const Avatar& a = workspace.avatar(choice);
   const std::vector<std::uint8_t> bytes = encode_glb(a.skeleton, a.mesh, "gestura");
-  avatar_glb_.assign(bytes.begin(), bytes.end());
-  avatar_etag_ = quoted_hash(avatar_glb_);
+  AvatarBytes& out = avatar_glb_[look];
+  out.glb.assign(bytes.begin(), bytes.end());
+  out.etag = quoted_hash(out.glb);
 }
 
 ApiResponse Api::avatar(ApiRequest& request) {
+  for (const auto& [key, value] : request.query)
+    if (key != "look") app::usage_error(key, "unknown parameter (known: look)");
+  const std::string look = request.query.count("look") ? request.query.at("look") : std::string("default");
+  check_look(look);
   bool built = false;  // else built here with a leased workspace (not under the lock: leasing may wait)
   {
     std::lock_guard lock(avatar_mutex_);
-    built = !avatar_glb_.empty();
+    built = avatar_glb_.count(look) > 0;
   }
   if (!built) {
     const WorkspacePool::Lease workspace = workspaces_->acquire();
-    avatar_bytes(*workspace);
+    avatar_bytes(*workspace, look);
   }
+  std::lock_guard lock(avatar_mutex_);
+  const AvatarBytes& bytes = avatar_glb_.at(look);
   ApiResponse r;
-  r.headers.emplace_back("ETag", avatar_etag_);
+  r.headers.emplace_back("ETag", bytes.etag);
   r.headers.emplace_back("Cache-Control", "public, max-age=86400");
-  if (request.if_none_match == avatar_etag_) {
+  if (request.if_none_match == bytes.etag) {
     r.status = 304;
     r.content_type.clear();
     return r;
   }
   r.content_type = "model/gltf-binary";
-  r.body = avatar_glb_;
+  r.body = bytes.glb;
   return r;
 }
 

@@ -4,6 +4,7 @@
 // of the command layer (src/gestura/app) run, JSON or a binary out; errors by the app error model.
 #include <filesystem>
 #include <memory>
+#include <map>
 #include <mutex>
 #include <string>
 
@@ -12,6 +13,7 @@
 #include "gestura/serve/render_jobs.hpp"
 #include "gestura/serve/message.hpp"
 #include "gestura/serve/metrics.hpp"
+#include "gestura/serve/room.hpp"
 #include "gestura/serve/router.hpp"
 #include "gestura/serve/serve_options.hpp"
 #include "gestura/serve/workspace_pool.hpp"
@@ -33,10 +35,13 @@ class Api {
   // The route label of a request for /metrics, and whether it is a job's progress WebSocket
   // (then `job_id` is set).
   bool job_events(const ApiRequest& request, std::string& job_id) const;
+  // Whether a request is a room's WebSocket (/ws/room/NAME); then `room` is set.
+  bool room_socket(const ApiRequest& request, std::string& room) const;
 
   const ServeOptions& options() const { return options_; }
   Metrics& metrics() { return metrics_; }
   RenderJobs& jobs() { return *jobs_; }
+  Rooms& rooms() { return *rooms_; }
   // Whether a request only reads state (health, metrics, job status, static files): the server
   // answers those at once instead of queueing them behind signing.
   bool quick(ApiRequest& request) const;
@@ -52,12 +57,14 @@ class Api {
   ApiResponse lexicon_search(ApiRequest& request, const app::RunContext& context);
   ApiResponse lexicon_entry(ApiRequest& request, const app::RunContext& context);
   ApiResponse avatar(ApiRequest& request);
-  void avatar_bytes(app::Workspace& workspace);  // builds avatar_glb_ once
+  void avatar_bytes(app::Workspace& workspace, const std::string& look);  // builds a look's .glb once
   ApiResponse video(ApiRequest& request);
   ApiResponse job(ApiRequest& request);
   ApiResponse job_download(ApiRequest& request);
   ApiResponse job_cancel(ApiRequest& request);
   ApiResponse health();
+  RoomServices room_services();
+  std::shared_ptr<const HostGaze> host_gaze();
 
   ServeOptions options_;
   std::filesystem::path data_, web_;
@@ -67,7 +74,13 @@ class Api {
   std::unique_ptr<RenderJobs> jobs_;  // the in-process queue or the broker (--broker)
   Router router_;
   std::mutex avatar_mutex_;
-  std::string avatar_glb_, avatar_etag_;
+  struct AvatarBytes {
+    std::string glb, etag;
+  };
+  std::map<std::string, AvatarBytes> avatar_glb_;  // by look
+  std::unique_ptr<Rooms> rooms_;
+  std::mutex host_mutex_;
+  std::shared_ptr<const HostGaze> host_gaze_;
 };
 
 }  // namespace gestura::serve

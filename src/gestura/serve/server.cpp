@@ -19,6 +19,8 @@
 #include "gestura/serve/api.hpp"
 #include "gestura/serve/api_error.hpp"
 #include "gestura/serve/gzip.hpp"
+#include "gestura/serve/room.hpp"
+#include "gestura/serve/room_socket.hpp"
 #include "gestura/serve/url.hpp"
 
 namespace gestura::serve {
@@ -86,12 +88,26 @@ struct Server::Impl {
     if (!ec) acceptor.listen(asio::socket_base::max_listen_connections, ec);
     if (ec) throw app::AppError(app::ErrorCategory::usage, app::Place{"port", {}}, "cannot listen on " + options.host + ":" + std::to_string(options.port) + ": " + ec.message());
     asio::co_spawn(io, listen(), asio::detached);
+    api->rooms().set_post([this](std::function<void()> work) { asio::post(pool, std::move(work)); });
+    asio::co_spawn(io, room_ticks(), asio::detached);
+  }
+
+  // The rooms' clock: clips end, seats of the gone are freed, the host turns.
+  asio::awaitable<void> room_ticks() {
+    asio::steady_timer timer(io);
+    while (!stopped) {
+      timer.expires_after(200ms);
+      boost::system::error_code ec;
+      co_await timer.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+      api->rooms().tick();
+    }
   }
 
   asio::awaitable<void> listen() {
     for (;;) {
       boost::system::error_code ec;
-      tcp::socket socket = co_await acceptor.async_accept(asio::redirect_error(asio::use_awaitable, ec));
+      // Each connection on its own strand: a room's WebSocket reads and writes from two coroutines.
+      tcp::socket socket = co_await acceptor.async_accept(asio::make_strand(io), asio::redirect_error(asio::use_awaitable, ec));
       if (ec) {
         if (!acceptor.is_open()) co_return;
         continue;  // EMFILE and the like: the next accept may work
@@ -101,7 +117,8 @@ struct Server::Impl {
         socket.close(ec);
         continue;
       }
-      asio::co_spawn(io, session(std::move(socket)), asio::detached);
+      const auto executor = socket.get_executor();
+      asio::co_spawn(executor, session(std::move(socket)), asio::detached);
     }
   }
 
@@ -208,11 +225,13 @@ struct Server::Impl {
       const int version = static_cast<int>(req.version());
       ApiResponse response;
       bool upgrade = false;
-      std::string job_id;
+      std::string job_id, room;
       try {
         ApiRequest request = to_api(req);
         if (websocket::is_upgrade(req)) {
           if (api->job_events(request, job_id)) upgrade = true;
+          else if (api->room_socket(request, room) && valid_room_name(room)) upgrade = true;
+          else if (!room.empty()) response = error_response(400, "usage", "a room's name is 1 to 40 letters, digits, '-' or '_'", "room");
           else response = error_response(404, "not_found", "no WebSocket at " + request.path);
         } else if (req.method() == http::verb::options) {
           response.status = 204;
@@ -234,6 +253,10 @@ struct Server::Impl {
       } catch (...) {  // the target's escapes, or anything the adapter did not expect
         response = current_error_response();
         api->metrics().record("invalid", response.status, 0.0);
+      }
+      if (upgrade && !room.empty()) {
+        co_await serve_room(std::move(stream), std::move(req), api->rooms(), room);
+        co_return;
       }
       if (upgrade) {
         co_await job_events(std::move(stream), std::move(req), job_id);
@@ -292,6 +315,9 @@ Server::~Server() {
   stop();
   impl_->threads.clear();  // joins
   impl_->pool.join();
+  // The rooms hold their connections' WebSocket streams, which live on the io_context: they must go
+  // while it still exists (members would otherwise be destroyed io first, api last).
+  impl_->api.reset();
 }
 
 int Server::port() const { return impl_->acceptor.local_endpoint().port(); }

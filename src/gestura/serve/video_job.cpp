@@ -3,6 +3,7 @@
 #include <array>
 #include <string_view>
 
+#include "gestura/serve/look_choice.hpp"
 #include "gestura/serve/public_request.hpp"
 
 namespace gestura::serve {
@@ -23,9 +24,11 @@ VideoJob parse_video_job(const nlohmann::json& body_in, int max_text) {
     job.format = body["format"].get<std::string>();
     body.erase("format");
   }
+  const std::string look = take_look(body);
   Public<app::SayRequest, VideoFields> request;
   app::read_json(body, request);
   job.say = std::move(request.request);
+  job.say.avatar.avatar = look;
   if (job.say.text.size() > static_cast<std::size_t>(max_text))
     throw app::AppError(app::ErrorCategory::too_large, app::Place{"text", {}},
                         std::to_string(job.say.text.size()) + " bytes of text; this server signs at most " + std::to_string(max_text) +

@@ -3,7 +3,7 @@
 // body is the payload a worker reads from the broker's stream, so a worker checks it by the same
 // rules (a malformed payload there is dead-lettered with the reason this gives).
 //
-//   {"text": "hello", "size": "160x90", "fps": 10, "format": "webm"}
+//   {"text": "hello", "size": "160x90", "fps": 10, "format": "webm", "look": "ana"}
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -21,7 +21,8 @@ struct VideoJob {
 
 constexpr int kMaxVideoPixels = 1280 * 720;
 
-// Throws AppError naming the field: unknown fields (files and avatar assets are the server's),
+// Throws AppError naming the field: unknown fields (files and avatar assets are the server's; "look" or
+// "avatar" names a built-in look),
 // a format other than mp4/webm, text over `max_text` bytes, more than 1280x720 pixels.
 VideoJob parse_video_job(const nlohmann::json& body, int max_text);
 

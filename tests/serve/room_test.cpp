@@ -1,0 +1,336 @@
+// Shared rooms end to end: a server on an ephemeral port, clients speaking the room protocol over
+// Beast WebSockets. Join, say and the broadcast clip, late join, reconnect by token, and bad input
+// (malformed JSON, oversized messages, floods), after which the room and the server still answer.
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include <boost/asio.hpp>
+#include <boost/beast.hpp>
+#include <boost/beast/websocket.hpp>
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "gestura/serve/room.hpp"
+#include "gestura/serve/room_host.hpp"
+#include "gestura/serve/server.hpp"
+#include "support/http_client.hpp"
+
+namespace gestura {
+namespace {
+
+namespace fs = std::filesystem;
+namespace beast = boost::beast;
+namespace asio = boost::asio;
+using nlohmann::json;
+using namespace std::chrono_literals;
+
+// A blocking room client: messages are read one at a time with a deadline.
+class Client {
+ public:
+  Client(int port, const std::string& room) : ws_(io_) {
+    asio::ip::tcp::resolver resolver(io_);
+    beast::get_lowest_layer(ws_).connect(*resolver.resolve("127.0.0.1", std::to_string(port)).begin());
+    ws_.handshake("127.0.0.1", "/ws/room/" + room);
+  }
+  void send(const json& message) { send_text(message.dump()); }
+  void send_text(const std::string& text, bool binary = false) {
+    ws_.binary(binary);
+    ws_.write(asio::buffer(text));
+  }
+  // The next message, or null when none came within `timeout` or the connection closed.
+  json next(std::chrono::milliseconds timeout = 60s) {
+    beast::get_lowest_layer(ws_).expires_after(timeout);
+    beast::flat_buffer buffer;
+    beast::error_code ec;
+    ws_.read(buffer, ec);
+    if (ec) {
+      closed_ = ec != beast::error::timeout;
+      return nullptr;
+    }
+    return json::parse(beast::buffers_to_string(buffer.data()));
+  }
+  // The next message of this type (others are skipped), or null.
+  json next_of(const std::string& type, std::chrono::milliseconds timeout = 60s) {
+    const auto until = std::chrono::steady_clock::now() + timeout;
+    while (std::chrono::steady_clock::now() < until) {
+      json m = next(std::chrono::duration_cast<std::chrono::milliseconds>(until - std::chrono::steady_clock::now()));
+      if (m.is_null()) return m;
+      if (m["type"] == type) return m;
+    }
+    return nullptr;
+  }
+  json join(const std::string& name, const std::string& look = "default") {
+    send({{"type", "join"}, {"name", name}, {"look", look}});
+    return next_of("welcome");
+  }
+  bool closed() const { return closed_; }
+  void close() {
+    beast::error_code ec;
+    beast::get_lowest_layer(ws_).socket().close(ec);  // dropped, as a lost network drops it
+  }
+
+ private:
+  asio::io_context io_;
+  beast::websocket::stream<beast::tcp_stream> ws_;
+  bool closed_ = false;
+};
+
+class RoomTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = new fs::path(fs::temp_directory_path() / ("gestura-room-test-" + std::to_string(::getpid())));
+    fs::remove_all(*root_);
+    serve::ServeOptions options;
+    options.port = 0;
+    options.data = (*root_ / "data").string();
+    server_ = new serve::Server(options);
+    server_->start();
+  }
+  static void TearDownTestSuite() {
+    delete server_;
+    fs::remove_all(*root_);
+    delete root_;
+  }
+  static int port() { return server_->port(); }
+  static void still_up() { EXPECT_EQ(test::http(port(), "GET", "/health").status, 200); }
+
+  static inline serve::Server* server_ = nullptr;
+  static inline fs::path* root_ = nullptr;
+};
+
+TEST_F(RoomTest, JoinWelcomesAndTellsTheOthers) {
+  Client a(port(), "join-test");
+  const json welcome = a.join("Ana", "ana");
+  ASSERT_FALSE(welcome.is_null());
+  EXPECT_EQ(welcome["room"], "join-test");
+  EXPECT_EQ(welcome["you"]["seat"], 0);
+  EXPECT_EQ(welcome["you"]["token"].get<std::string>().size(), 32u);
+  EXPECT_TRUE(welcome["time"].is_number());
+  ASSERT_EQ(welcome["participants"].size(), 1u);
+  EXPECT_EQ(welcome["participants"][0]["look"], "ana");
+  Client b(port(), "join-test");
+  const json wb = b.join("Ben", "ben");
+  EXPECT_EQ(wb["you"]["seat"], 1);
+  EXPECT_EQ(wb["participants"].size(), 2u);
+  const json joined = a.next_of("joined");
+  ASSERT_FALSE(joined.is_null());
+  EXPECT_EQ(joined["participant"]["name"], "Ben");
+  EXPECT_EQ(joined["participant"]["look"], "ben");
+  // Seats differ in place: the two avatars do not stand in one another.
+  const json pa = welcome["participants"][0]["position"], pb = joined["participant"]["position"];
+  EXPECT_GT(std::abs(pa[0].get<double>() - pb[0].get<double>()), 0.5);
+  // The state is the server's: GET /api/rooms/NAME shows it.
+  const auto state = test::http(port(), "GET", "/api/rooms/join-test");
+  ASSERT_EQ(state.status, 200);
+  EXPECT_EQ(json::parse(state.body)["participants"].size(), 2u);
+}
+
+TEST_F(RoomTest, SayBroadcastsOneTimedClipAndLateJoinersSeeItPlaying) {
+  Client a(port(), "say-test"), b(port(), "say-test");
+  const json wa = a.join("Ana");
+  ASSERT_FALSE(wa.is_null());
+  ASSERT_FALSE(b.join("Ben").is_null());
+  a.send({{"type", "say"}, {"text", "Hello, my name is Anna. My mother lives in a big house near the school."}});
+  const json pa = a.next_of("play", 120s), pb = b.next_of("play", 120s);
+  ASSERT_FALSE(pa.is_null());
+  ASSERT_FALSE(pb.is_null());
+  EXPECT_EQ(pa["clip"], pb["clip"]);
+  EXPECT_EQ(pa["start"], pb["start"]);  // one moment for everyone
+  EXPECT_GT(pa["start"].get<double>(), pa["time"].get<double>());  // in the future: time to fetch the clip
+  EXPECT_EQ(pa["participant"], wa["you"]["id"]);
+  EXPECT_GT(pa["duration"].get<double>(), 1.0);
+  ASSERT_FALSE(pa["glosses"].empty());
+  EXPECT_EQ(pa["glosses"][0]["gloss"], "HELLO");
+  const auto clip = test::http(port(), "GET", pa["url"].get<std::string>());
+  ASSERT_EQ(clip.status, 200);
+  EXPECT_EQ(clip.body.substr(0, 4), "glTF");
+  EXPECT_LT(clip.body.size(), 200u * 1024);
+  // A late joiner: the welcome says what plays and since when.
+  Client c(port(), "say-test");
+  const json wc = c.join("Chidi");
+  ASSERT_FALSE(wc.is_null());
+  ASSERT_EQ(wc["participants"].size(), 3u);
+  ASSERT_EQ(wc["playing"].size(), 1u);
+  EXPECT_EQ(wc["playing"][0]["clip"], pa["clip"]);
+  EXPECT_EQ(wc["playing"][0]["start"], pa["start"]);
+  // While A signs, the host turns to A.
+  bool watched = false;
+  for (int i = 0; i < 20 && !watched; ++i) {
+    const json h = b.next_of("host", 5s);
+    if (h.is_null()) break;
+    watched = h["look_at"] == pa["participant"] && h["why"] == "signer" && h["rotations"].contains("skullbase");
+  }
+  EXPECT_TRUE(watched);
+}
+
+TEST_F(RoomTest, AReconnectWithTheTokenTakesTheSeatBack) {
+  Client b(port(), "reconnect-test");
+  std::string token, id;
+  int seat = -1;
+  {
+    auto a = std::make_unique<Client>(port(), "reconnect-test");
+    const json w = a->join("Ana");
+    token = w["you"]["token"], id = w["you"]["id"], seat = w["you"]["seat"];
+    ASSERT_FALSE(b.join("Ben").is_null());
+    a->close();
+  }
+  const json away = b.next_of("away");
+  ASSERT_FALSE(away.is_null());
+  EXPECT_EQ(away["participant"], id);
+  Client a2(port(), "reconnect-test");
+  a2.send({{"type", "join"}, {"token", token}});
+  const json w2 = a2.next_of("welcome");
+  ASSERT_FALSE(w2.is_null());
+  EXPECT_EQ(w2["you"]["id"], id);
+  EXPECT_EQ(w2["you"]["seat"], seat);
+  const json back = b.next_of("back");
+  ASSERT_FALSE(back.is_null());
+  EXPECT_EQ(back["participant"]["id"], id);
+  // A wrong token is refused with a JSON error naming it.
+  Client x(port(), "reconnect-test");
+  x.send({{"type", "join"}, {"token", "0123456789abcdef0123456789abcdef"}});
+  const json e = x.next_of("error");
+  ASSERT_FALSE(e.is_null());
+  EXPECT_EQ(e["error"]["field"], "token");
+  // Leaving frees the seat and tells the others.
+  a2.send({{"type", "leave"}});
+  const json left = b.next_of("left");
+  ASSERT_FALSE(left.is_null());
+  EXPECT_EQ(left["participant"], id);
+}
+
+TEST_F(RoomTest, MalformedMessagesGetAJsonErrorAndTheConnectionStays) {
+  Client a(port(), "bad-test");
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"{not json", "message"},
+      {"[1, 2]", "message"},
+      {R"({"type": 5})", "type"},
+      {R"({"type": "dance"})", "type"},
+      {R"({"type": "say", "text": "hi"})", "type"},  // before joining
+      {R"({"type": "join"})", "name"},
+      {R"({"type": "join", "name": "A", "look": "/etc/passwd"})", "look"},
+      {std::string(40, '[') + std::string(40, ']'), "message"},
+  };
+  for (const auto& [text, field] : cases) {
+    a.send_text(text);
+    const json e = a.next_of("error", 10s);
+    ASSERT_FALSE(e.is_null()) << text;
+    EXPECT_EQ(e["error"]["code"], field == "type" && text.find("say") != std::string::npos ? 409 : 400) << text;
+    EXPECT_EQ(e["error"]["field"], field) << text;
+  }
+  // Binary bytes (a text frame must be UTF-8, or the WebSocket itself fails: RFC 6455 §8.1).
+  a.send_text(std::string("\xff\xfe\x00\x01", 4), true);
+  EXPECT_EQ(a.next_of("error", 10s)["error"]["field"], "message");
+  ASSERT_FALSE(a.join("Ana").is_null());
+  a.send({{"type", "say"}, {"text", std::string(5000, 'a')}});
+  EXPECT_EQ(a.next_of("error", 10s)["error"]["code"], 413);
+  a.send({{"type", "landmarks"}, {"pose", "no"}});
+  EXPECT_EQ(a.next_of("error", 10s)["error"]["field"], "pose");
+  a.send({{"type", "ping"}, {"t", 1.5}});
+  const json pong = a.next_of("pong", 10s);
+  ASSERT_FALSE(pong.is_null());
+  EXPECT_EQ(pong["t"], 1.5);
+  still_up();
+}
+
+TEST_F(RoomTest, OversizedMessagesAreRefusedAndHugeOnesCloseOnlyThatConnection) {
+  Client a(port(), "big-test");
+  ASSERT_FALSE(a.join("Ana").is_null());
+  a.send_text(R"({"type": "say", "text": ")" + std::string(20000, 'a') + "\"}");
+  const json e = a.next_of("error", 10s);
+  ASSERT_FALSE(e.is_null());
+  EXPECT_EQ(e["error"]["code"], 413);
+  EXPECT_EQ(e["error"]["field"], "message");
+  a.send({{"type", "ping"}, {"t", 2}});
+  EXPECT_FALSE(a.next_of("pong", 10s).is_null());
+  // Past the hard limit the connection ends; the server and the room stay.
+  Client big(port(), "big-test");
+  ASSERT_FALSE(big.join("Big").is_null());
+  try {
+    big.send_text(std::string(3u << 20, ' '));
+  } catch (const std::exception&) {
+    // the server may close while we are still writing
+  }
+  EXPECT_TRUE(big.next(10s).is_null() || big.next(10s).is_null());
+  still_up();
+  a.send({{"type", "ping"}, {"t", 3}});
+  EXPECT_FALSE(a.next_of("pong", 10s).is_null());
+}
+
+TEST_F(RoomTest, AFloodIsThrottledAndTheServerStaysUp) {
+  Client flood(port(), "flood-test");
+  ASSERT_FALSE(flood.join("Flood").is_null());
+  int pongs = 0, busy = 0;
+  try {
+    for (int i = 0; i < 1000; ++i) flood.send({{"type", "ping"}, {"t", i}});
+  } catch (const std::exception&) {
+    // closed for flooding while we wrote: that is one of the answers allowed
+  }
+  for (;;) {
+    const json m = flood.next(3s);
+    if (m.is_null()) break;
+    if (m["type"] == "pong") ++pongs;
+    if (m["type"] == "error" && m["error"]["code"] == 429) ++busy;
+  }
+  EXPECT_LE(pongs, 100);  // the burst and what the rate refills, not a thousand
+  EXPECT_GE(busy, 1);
+  still_up();
+  Client other(port(), "flood-test");
+  EXPECT_FALSE(other.join("Other").is_null());
+}
+
+TEST_F(RoomTest, ARoomHasSeatsAndANameOfItsOwnKind) {
+  std::vector<std::unique_ptr<Client>> clients;
+  for (int i = 0; i < 8; ++i) {
+    clients.push_back(std::make_unique<Client>(port(), "full-test"));
+    ASSERT_FALSE(clients.back()->join("P" + std::to_string(i)).is_null());
+  }
+  Client ninth(port(), "full-test");
+  ninth.send({{"type", "join"}, {"name", "Ninth"}});
+  const json e = ninth.next_of("error", 10s);
+  ASSERT_FALSE(e.is_null());
+  EXPECT_EQ(e["error"]["code"], 409);
+  // A name with other characters is no room: the upgrade is refused with 400.
+  EXPECT_THROW(Client(port(), "a%20b"), std::exception);
+  EXPECT_EQ(test::http(port(), "GET", "/api/rooms/nobody-here").status, 404);
+  EXPECT_EQ(test::http(port(), "GET", "/ws/room/x").status, 426);
+}
+
+TEST(RoomHost, WatchesWhoeverSignsAndKeepsToThem) {
+  std::vector<serve::SeatView> seats(4);
+  for (int k = 0; k < 4; ++k) seats[static_cast<std::size_t>(k)].position = serve::seat_place(k).position;
+  serve::SeatView host;
+  host.position = serve::seat_place(-1).position;
+  LookState state;
+  EXPECT_EQ(serve::choose_host_look(host, seats, -1, 0.0f, state).seat, -1);  // nobody signs: ahead
+  seats[2].signing = true;
+  const serve::HostLook first = serve::choose_host_look(host, seats, -1, 1.0f, state);
+  EXPECT_EQ(first.seat, 2);
+  EXPECT_EQ(first.why, "signer");
+  EXPECT_NEAR(first.point.x, seats[2].position.x, 1e-4);
+  seats[1].signing = true;  // a second signer nearer the middle: the host stays with the first
+  EXPECT_EQ(serve::choose_host_look(host, seats, -1, 2.0f, state).seat, 2);
+  seats[2].signing = false;
+  EXPECT_EQ(serve::choose_host_look(host, seats, -1, 3.0f, state).seat, 1);
+}
+
+TEST(RoomSeats, StandOnAnArcFacingItsMiddle) {
+  for (int k = 0; k < 8; ++k) {
+    const serve::Seat s = serve::seat_place(k);
+    const vec3 facing(std::sin(s.yaw), 0.0f, std::cos(s.yaw));
+    const vec3 to_centre = glm::normalize(vec3(0.0f) - s.position);
+    EXPECT_GT(glm::dot(facing, to_centre), 0.99f) << k;
+    for (int j = 0; j < k; ++j) EXPECT_GT(glm::length(serve::seat_place(j).position - s.position), 0.8f) << j << " " << k;
+  }
+  EXPECT_TRUE(serve::valid_room_name("lobby_2-b"));
+  EXPECT_FALSE(serve::valid_room_name("../x"));
+  EXPECT_FALSE(serve::valid_room_name(std::string(41, 'a')));
+  EXPECT_TRUE(serve::valid_look("ana"));
+  EXPECT_FALSE(serve::valid_look("makehuman:/tmp"));
+}
+
+}  // namespace
+}  // namespace gestura
