@@ -663,7 +663,7 @@ PixelRect Renderer::covered_rect(std::span<const View> views, std::span<const ma
   return all;
 }
 
-void Renderer::resolve() {
+void Renderer::resolve() const {
   if (resolve_pending_.empty()) return;
   const PixelRect& r = resolve_pending_;
   glBindFramebuffer(GL_READ_FRAMEBUFFER, gl_->msaa_fbo);
@@ -674,7 +674,7 @@ void Renderer::resolve() {
   check_gl("resolving the frame");
 }
 
-unsigned Renderer::resolved_texture() {
+unsigned Renderer::resolved_texture() const {
   resolve();
   return gl_->resolve_color;
 }

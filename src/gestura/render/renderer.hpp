@@ -91,7 +91,7 @@ class Renderer {
   std::size_t max_gpu_joints() const { return max_gpu_joints_; }
   // The GL texture holding the resolved frame (rows bottom to top), for a UI that shows it as an
   // image (the studio's preview panel); 0 before the first resize().
-  unsigned resolved_texture();
+  unsigned resolved_texture() const;  // resolves what is pending first
   // Samples per pixel of the drawing target as the GL allocated it (after resize()).
   int samples() const { return allocated_samples_; }
   // Blocks until the GL has finished drawing (for measuring draw time alone).
@@ -101,7 +101,7 @@ class Renderer {
   struct Gl;
   void read_framebuffer(unsigned framebuffer, int width, int height, Image& out);
   void compute_bounds();
-  void resolve();  // blits what is pending (resolve_pending_) into the resolve texture
+  void resolve() const;  // blits what is pending (resolve_pending_) into the resolve texture
   PixelRect covered_rect(std::span<const View> views, std::span<const mat4> skinning,
                          std::span<const float> morph_weights) const;
   std::unique_ptr<Gl> gl_;
@@ -118,7 +118,7 @@ class Renderer {
   std::vector<Occluder> occluders_;
   vec3 resolved_background_{-1.0f};  // the colour the resolved image's untouched area holds
   PixelRect resolved_rect_;          // where the last frame drew in the drawing target
-  PixelRect resolve_pending_;        // what the resolve texture lacks of the drawing target (frames not yet resolved)
+  mutable PixelRect resolve_pending_;        // what the resolve texture lacks of the drawing target (frames not yet resolved)
   std::vector<vec3> scratch_positions_, scratch_normals_, skinned_positions_, skinned_normals_;
   std::vector<float> morph_scratch_;  // the caller's weights padded to one per morph target
   EdgeFilterScratch edge_scratch_;
