@@ -48,8 +48,11 @@ test-asan: deps
 	@cmake --build --preset asan -j $(JOBS)
 	@$(SANITIZER_ENV) ctest --preset asan -j $(JOBS)
 
-bench: build
-	@$(BIN)/gestura-bench
+# The benchmarks are not part of the default build (make test does not need them).
+bench: deps
+	@cmake --preset $(PRESET) >/dev/null
+	@cmake --build --preset $(PRESET) -j $(JOBS) --target gestura-bench
+	@$(BIN)/gestura-bench $(ARGS)
 
 # How many content words of everyday English sentences the ASL lexicon signs (docs/asl-lexicon.md).
 coverage: build-cli

@@ -1,5 +1,6 @@
 // Headless rendering of the default avatar: works without a display, body pixels land where the
 // body is, presets see different things, GPU and CPU skinning agree, morphs and colours apply.
+#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -207,6 +208,53 @@ TEST_F(HeadlessRender, PreviousFramesLeaveNoTrails) {
   renderer_->read_pixels(moved);
   ASSERT_NE(moved.rgba, fresh.rgba);
   EXPECT_EQ(draw(CameraPreset::Front).rgba, fresh.rgba);
+}
+
+// The resolve into the texture waits until something needs it: frames drawn and never read (or read
+// straight from a one-sample target) must still leave no trace in what is resolved later.
+TEST_F(HeadlessRender, UnresolvedFramesLeaveNoTrails) {
+  const Image fresh = draw(CameraPreset::Front);
+  const View view{preset_camera(CameraPreset::Front, box_, float(kW) / kH), {0, 0, kW, kH}};
+  auto shifted_by = [&](float x) {
+    std::vector<mat4> shifted(animator_->skinning().begin(), animator_->skinning().end());
+    for (mat4& m : shifted) m = glm::translate(mat4(1.0f), vec3(x, 0.0f, 0.0f)) * m;
+    return shifted;
+  };
+  renderer_->render({&view, 1}, shifted_by(0.6f), {});
+  Image moved;
+  renderer_->read_pixels(moved);  // resolved: the texture holds the figure on the left
+  ASSERT_NE(moved.rgba, fresh.rgba);
+  renderer_->render({&view, 1}, animator_->skinning(), animator_->morph_weights());  // never read
+  renderer_->render({&view, 1}, shifted_by(-0.6f), {});                                // never read
+  EXPECT_EQ(draw(CameraPreset::Front).rgba, fresh.rgba);
+
+  // One sample: read_pixels() reads the drawing target; the texture a UI shows is resolved on demand.
+  Renderer single(look_, Antialiasing::None);
+  single.upload(figure_->mesh);
+  single.resize(kW, kH);
+  single.render({&view, 1}, animator_->skinning(), animator_->morph_weights());
+  (void)single.resolved_texture();  // resolved once with the rest pose
+  single.render({&view, 1}, shifted_by(0.6f), {});
+  single.read_pixels(moved);
+  single.render({&view, 1}, animator_->skinning(), animator_->morph_weights());
+  Image direct;
+  single.read_pixels(direct);
+  ASSERT_NE(moved.rgba, direct.rgba);
+  const GLuint resolved = single.resolved_texture();  // resolves (and binds framebuffers) first
+  GLuint framebuffer = 0;
+  glGenFramebuffers(1, &framebuffer);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, resolved, 0);
+  std::vector<std::uint8_t> texture(static_cast<std::size_t>(kW) * kH * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, kW, kH, GL_RGBA, GL_UNSIGNED_BYTE, texture.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &framebuffer);
+  ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  int differing = 0;  // the texture's rows run bottom to top
+  for (int y = 0; y < kH; ++y)
+    differing += !std::equal(direct.pixel(0, y), direct.pixel(0, y) + kW * 4, &texture[static_cast<std::size_t>(kH - 1 - y) * kW * 4]);
+  EXPECT_EQ(differing, 0);
 }
 
 TEST_F(HeadlessRender, BackgroundChangeRepaintsTheWholeImage) {

@@ -2,12 +2,18 @@
 // lines, and the synthesis step (S is counted only when the caller passes one).
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <thread>
 
 #include "gestura/sign/sign_check.hpp"
+#include "gestura/sign/sign_synthesis.hpp"
+#include "support/signing_avatar.hpp"
 #include "support/cli.hpp"
 #include "support/shared_data.hpp"
 
@@ -97,6 +103,68 @@ TEST(SignCheck, SynthesisStepCountsWhenGiven) {
   EXPECT_EQ(r.failed, 1);
   ASSERT_EQ(r.failures.size(), 1u);
   EXPECT_EQ(r.failures[0], "t.jsonl:2: two: synthesis failed: two-handed signs not supported");
+}
+
+// `check` synthesizes on every core (GESTURA_THREADS sets how many); the report must be the serial
+// one: counts, failures in file order, notes, and where max_failures stops.
+CheckReport check_with_threads(const std::string& text, const CheckOptions& options, const char* threads) {
+  setenv("GESTURA_THREADS", threads, 1);
+  CheckReport r = check_jsonl(text, "t.jsonl", options);
+  unsetenv("GESTURA_THREADS");
+  return r;
+}
+
+void expect_same_report(const CheckReport& a, const CheckReport& b) {
+  EXPECT_EQ(a.signs, b.signs);
+  EXPECT_EQ(a.parsed, b.parsed);
+  EXPECT_EQ(a.synthesized, b.synthesized);
+  EXPECT_EQ(a.failed, b.failed);
+  EXPECT_EQ(a.failures, b.failures);
+  EXPECT_EQ(a.notes, b.notes);
+  EXPECT_EQ(a.stopped, b.stopped);
+}
+
+TEST(SignCheck, EveryCoreGivesTheSerialReport) {
+  // A stand-in step that fails two-handed signs and takes longer on them (so threads finish out of
+  // order); every 17th line is not a sign at all.
+  const char* notations[] = {"hamflathand,hamextfingeru,hampalml", "hamsymmlr,hamfist,hamextfingero,hampalmd",
+                             "hamfist,hamextfingeru,hampalml"};
+  std::string text;
+  for (int i = 0; i < 200; ++i)
+    text += i % 17 == 5 ? std::string("not json\n")
+                        : "{\"gloss\":\"S" + std::to_string(i) + "\",\"names\":\"" + notations[i % 3] + "\"}\n";
+  CheckOptions options;
+  options.synthesize = [](const HamSign& s, std::span<const NonManual>) -> std::optional<std::string> {
+    if (s.main().symmetry.kind == SymmetryKind::none) return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    return "two-handed";
+  };
+  const CheckReport serial = check_with_threads(text, options, "1");
+  const CheckReport parallel = check_with_threads(text, options, "4");
+  EXPECT_EQ(serial.signs, 200);
+  EXPECT_GT(serial.failed, 60);
+  expect_same_report(serial, parallel);
+  options.max_failures = 25;
+  const CheckReport serial_stop = check_with_threads(text, options, "1");
+  const CheckReport parallel_stop = check_with_threads(text, options, "4");
+  EXPECT_TRUE(serial_stop.stopped);
+  EXPECT_EQ(serial_stop.failed, 25);
+  expect_same_report(serial_stop, parallel_stop);
+}
+
+TEST(SignCheck, RealSynthesisOnEveryCoreMatchesSerial) {
+  // The first 24 signs of the shared DGS/PJM lexicon on the default avatar's rig, with real failures among them.
+  std::ifstream in(gestura::test::shared_data() + "/hamnosys/signs.jsonl");
+  std::string text, line;
+  for (int i = 0; i < 24 && std::getline(in, line); ++i) text += line + "\n";
+  ASSERT_FALSE(text.empty());
+  CheckOptions options;
+  options.synthesize = gestura::sign::SynthesisCheck(gestura::synthesis_check(gestura::test::signing_avatar().rig));
+  const CheckReport serial = check_with_threads(text, options, "1");
+  const CheckReport parallel = check_with_threads(text, options, "2");
+  EXPECT_EQ(serial.signs, 24);
+  EXPECT_GT(serial.synthesized, 0);
+  expect_same_report(serial, parallel);
 }
 
 }  // namespace

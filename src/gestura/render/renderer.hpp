@@ -76,7 +76,9 @@ class Renderer {
   int width() const { return width_; }
   int height() const { return height_; }
 
-  // Draws all views into the offscreen target and resolves it. Throws gestura::Error when a
+  // Draws all views into the offscreen target. The resolve into the texture happens when something
+  // needs it (present(), resolved_texture(), a multisampled read_pixels()); a one-sample target is
+  // read back directly. Throws gestura::Error when a
   // vertex refers to a joint beyond skinning.size() or more weights than morphs are given.
   void render(std::span<const View> views, std::span<const mat4> skinning, std::span<const float> morph_weights,
               SkinningDevice device = SkinningDevice::Gpu);
@@ -89,7 +91,7 @@ class Renderer {
   std::size_t max_gpu_joints() const { return max_gpu_joints_; }
   // The GL texture holding the resolved frame (rows bottom to top), for a UI that shows it as an
   // image (the studio's preview panel); 0 before the first resize().
-  unsigned resolved_texture() const;
+  unsigned resolved_texture() const;  // resolves what is pending first
   // Samples per pixel of the drawing target as the GL allocated it (after resize()).
   int samples() const { return allocated_samples_; }
   // Blocks until the GL has finished drawing (for measuring draw time alone).
@@ -99,6 +101,7 @@ class Renderer {
   struct Gl;
   void read_framebuffer(unsigned framebuffer, int width, int height, Image& out);
   void compute_bounds();
+  void resolve() const;  // blits what is pending (resolve_pending_) into the resolve texture
   PixelRect covered_rect(std::span<const View> views, std::span<const mat4> skinning,
                          std::span<const float> morph_weights) const;
   std::unique_ptr<Gl> gl_;
@@ -114,7 +117,8 @@ class Renderer {
   std::vector<float> morph_reach_;   // per morph: its largest position offset
   std::vector<Occluder> occluders_;
   vec3 resolved_background_{-1.0f};  // the colour the resolved image's untouched area holds
-  PixelRect resolved_rect_;          // where the last frame drew in the resolved image  // 1 + the largest joint index any vertex uses
+  PixelRect resolved_rect_;          // where the last frame drew in the drawing target
+  mutable PixelRect resolve_pending_;        // what the resolve texture lacks of the drawing target (frames not yet resolved)
   std::vector<vec3> scratch_positions_, scratch_normals_, skinned_positions_, skinned_normals_;
   std::vector<float> morph_scratch_;  // the caller's weights padded to one per morph target
   EdgeFilterScratch edge_scratch_;

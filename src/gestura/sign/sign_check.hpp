@@ -17,6 +17,8 @@ namespace gestura::sign {
 // The synthesis step: the manual sign and its non-manual tiers (empty outside SiGML). Returns
 // nullopt when the sign was synthesized, else the reason it was not. sign_synthesis.hpp makes one
 // for an avatar (synthesis_check); a check without one parses only.
+// Check runs it on every core (core/parallel_for.hpp), so it must be safe to call from several
+// threads at once; the report stays the serial one.
 using SynthesisCheck = std::function<std::optional<std::string>(const HamSign&, std::span<const NonManual>)>;
 
 struct CheckOptions {
