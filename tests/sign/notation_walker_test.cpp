@@ -161,6 +161,36 @@ TEST(NotationWalker, HandshapesBecomePosturesOfThePhonology) {
   EXPECT_NEAR(half.fingers[0].mcp, 0.5f * (p.fingers[0].mcp + make_handshape(BasicHandshape::Fist).fingers[0].mcp), 1e-5f);
 }
 
+// HamNoSys names the extended fingers of a one- or two-finger form after it: hamfinger2 hampinky
+// is the little finger up, with the thumb out the Y hand (ASL CALL, SAME, PLAY).
+TEST(NotationWalker, AFingerNamedAfterTheFormIsTheOneItExtends) {
+  auto posture = [](const char* names) {
+    const sign::HamSign s = sign::parse_hamnosys_names(names);
+    return hand_posture_of(*s.main().posture.handshape.dominant);
+  };
+  const float curled = deg(60.0f);
+  const HandPosture y = posture("hamfinger2,hamthumboutmod,hampinky,hamextfingeru,hampalml,hamcheek");
+  EXPECT_LT(y.finger(Finger::Pinky).mcp, deg(5.0f));  // the little finger straight
+  EXPECT_LT(y.finger(Finger::Pinky).pip, deg(5.0f));
+  for (Finger f : {Finger::Index, Finger::Middle, Finger::Ring}) EXPECT_GT(y.finger(f).mcp, curled);
+  EXPECT_EQ(y.thumb.cmc_flexion, make_handshape(BasicHandshape::Finger2, ThumbModifier::Out).thumb.cmc_flexion);
+  // The horns: index and little finger of the V form, spread as the V's.
+  const HandPosture horns = posture("hamfinger23spread,hamindexfinger,hampinky,hamextfingeru,hampalmd,hamchest");
+  EXPECT_LT(horns.finger(Finger::Index).mcp, deg(5.0f));
+  EXPECT_LT(horns.finger(Finger::Pinky).mcp, deg(5.0f));
+  EXPECT_GT(horns.finger(Finger::Middle).mcp, curled);
+  EXPECT_GT(horns.spread[3], deg(5.0f));
+  // The pinch with the middle finger: the middle finger meets the thumb, the index is straight.
+  const HandPosture pinch = posture("hampinch12,hammiddlefinger,hamextfingeru,hampalml,hamchest");
+  EXPECT_TRUE(pinch.thumb_tip_contacts & finger_bit(Finger::Middle));
+  EXPECT_FALSE(pinch.thumb_tip_contacts & finger_bit(Finger::Index));
+  EXPECT_LT(pinch.finger(Finger::Index).mcp, deg(5.0f));
+  // Naming the form's own finger, or a bending, changes which fingers are extended not at all.
+  const HandPosture index = posture("hamfinger2,hamindexfinger,hamextfingeru,hampalml,hamchest");
+  EXPECT_LT(index.finger(Finger::Index).mcp, deg(5.0f));
+  EXPECT_GT(index.finger(Finger::Pinky).mcp, curled);
+}
+
 TEST(CitationSchedule, TurnHandTakesTheNotatedTurnAndKeepsWhatIsLeftOpen) {
   const quat rest = hand_frame_from_vectors(vec3(0, -1, 0), vec3(1, 0, 0), Hand::Right).rotation;
   TurnTarget up_palm_left;

@@ -105,3 +105,20 @@ TEST(PlaceResolver, PlacePartAtPutsTheNamedPartAtTheSite) {
                                     (part->point - fx().rig.hand(Hand::Right).palm_centre_local);
   EXPECT_LT(glm::distance(at, chin.point), 1e-4f);
 }
+
+// The part of the hand facing a site is found among the hand's ends (palm faces, tips, knuckles),
+// not its middle joints: a flat hand held edge-on to the chest meets it with the thumb tip, although
+// the anatomical thumb's base joint lies 7 mm deeper (taken as the contact, it moved the hand 5.6 cm
+// up the chest, where the arm then settled it elsewhere).
+TEST(PlaceResolver, AHandMeetsASiteWithItsEndsNotItsMiddleJoints) {
+  PlaceResolver places(fx().rig);
+  const HandState edge_on = hand(vec3(0, 1, 0), vec3(1, 0, 0));  // fingers up, palm to the left
+  const SurfacePoint chest = *places.body_site("chest");
+  const HandPoints points = places.hand_points(Hand::Right, edge_on);
+  const vec3 at = places.place_at(Hand::Right, edge_on, chest, 0.0f);
+  const vec3 thumb_tip = at + points[kTipPoints];
+  EXPECT_NEAR(glm::dot(thumb_tip - chest.point, chest.normal), 0.0f, 1e-4f);  // on the site's plane
+  EXPECT_LT(glm::distance(thumb_tip, chest.point), 0.01f);                     // at the site
+  // The thumb's middle joint does stand out farther toward the body than its tip here.
+  EXPECT_LT(glm::dot(points[kMiddleJointPoints], chest.normal), glm::dot(points[kTipPoints], chest.normal));
+}

@@ -79,3 +79,16 @@ TEST(SignPlanner, BadSchedulesAndOptionsAreRefused) {
   EXPECT_THROW(plan_citation(sign::parse_hamnosys_names(kMove), fx().rig, ScheduleOptions{0.0f}), Error);
   EXPECT_THROW(plan_citation(sign::HamSign{}, fx().rig), Error);
 }
+
+// A place out in space is a region the hand may give way in, but it stays out in space: a fist
+// held close above the shoulder (ISL POWER) once gave way 7 cm inward to beside the neck, where it
+// counted as a hand at the body, held to a place the notation never named.
+TEST(SignPlanner, AHandGivingWayInSpaceStaysOutInSpace) {
+  const SignPlan c = plan_citation(
+      sign::parse_hamnosys_names("hamfist,hamextfingeru,hampalml,hamshouldertop,hamlrat,hamclose,hammoveui"), fx().rig);
+  const HandState& first = c.right.segments.front().from;
+  EXPECT_FALSE(first.at_body);
+  const vec3 shoulder = site_position(*find_site(fx().rig.sites, "r_shoulder_top"), fx().rig.bind_model);
+  EXPECT_LT(first.position.x, shoulder.x + 0.03f);  // not drawn in toward the neck
+}
+

@@ -1,6 +1,7 @@
 #include "gestura/sign/notation_walker.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace gestura {
 
@@ -408,8 +409,57 @@ class Walker {
 
 }  // namespace
 
+namespace {
+
+// A finger named after a basic form that extends one or two fingers, with no bending or part of
+// its own, says which fingers the form extends: hamfinger2 hampinky is the little finger up (with
+// hamthumboutmod, the Y hand), hamfinger23spread hamindexfinger hampinky the horns, hampinch12
+// hammiddlefinger the middle finger on the thumb. The named fingers, in order, take the postures
+// (bending, spread, thumb contact) the form gives its own fingers; a finger of the form that is
+// not named takes the posture of the form's other fingers.
+void select_fingers(HandPosture& p, BasicHandshape basic, FingerSet named) {
+  const FingerSet selected = selected_fingers(basic);
+  named &= kAllFourFingers;
+  if (named == 0 || selected == 0 || selected == kAllFourFingers || named == selected) return;
+  const HandPosture form = p;
+  std::array<std::size_t, 4> own{}, others{};
+  std::size_t own_count = 0, other_count = 0;
+  for (std::size_t f = 0; f < 4; ++f) {
+    if (selected & finger_bit(static_cast<Finger>(f + 1))) own[own_count++] = f;
+    else others[other_count++] = f;
+  }
+  auto take = [&](std::size_t to, std::size_t from) {
+    p.fingers[to] = form.fingers[from];
+    p.spread[to] = form.spread[from];
+    const FingerSet to_bit = finger_bit(static_cast<Finger>(to + 1));
+    const bool contact = form.thumb_tip_contacts & finger_bit(static_cast<Finger>(from + 1));
+    p.thumb_tip_contacts = static_cast<FingerSet>(contact ? p.thumb_tip_contacts | to_bit : p.thumb_tip_contacts & ~to_bit);
+  };
+  std::size_t k = 0;
+  for (std::size_t f = 0; f < 4; ++f) {
+    const bool is_named = named & finger_bit(static_cast<Finger>(f + 1));
+    if (is_named) take(f, own[std::min(k++, own_count - 1)]);
+  }
+  for (std::size_t f = 0; f < 4; ++f) {
+    const bool is_named = named & finger_bit(static_cast<Finger>(f + 1));
+    const bool was_own = selected & finger_bit(static_cast<Finger>(f + 1));
+    if (is_named || !was_own) continue;
+    // The form's other finger nearest this one (a curled index takes the middle finger's curl).
+    std::size_t nearest = others[0];
+    for (std::size_t i = 0; i < other_count; ++i)
+      if (std::max(f, others[i]) - std::min(f, others[i]) < std::max(f, nearest) - std::min(f, nearest)) nearest = others[i];
+    take(f, nearest);
+  }
+}
+
+}  // namespace
+
 HandPosture hand_posture_of(const sign::HandshapeForm& form) {
   HandPosture p = make_handshape(form.basic, form.thumb, form.bending);
+  if (!form.finger_modifiers.empty()) {
+    const sign::FingerModifier& first = form.finger_modifiers.front();
+    if (!first.bending && !first.part) select_fingers(p, form.basic, static_cast<FingerSet>(first.fingers.bits));
+  }
   for (const sign::FingerModifier& m : form.finger_modifiers)
     if (m.bending && !m.fingers.empty()) apply_bending(p, static_cast<FingerSet>(m.fingers.bits & kAllFourFingers), *m.bending);
   return p;

@@ -119,7 +119,9 @@ vec3 PlaceResolver::place_at(Hand hand, const HandState& state, const SurfacePoi
   // The part facing the site is found among the hand's ends (palm faces, fingertips, knuckles),
   // not its middle joints, which keep_out still keeps off the body. The anatomical thumb's base
   // joint stands 7 mm nearer the chest than its tip on a flat hand held edge-on: as the one nearest
-  // point it became the contact, 5.6 cm below the thumb tip, and lifted the hand by as much.
+  // point it became the contact, 5.6 cm below the thumb tip, and moved the hand up by as much (and
+  // the arm then settled it farther out, where a movement out was cut short). An edge-on hand's
+  // nearest point is a fragile choice either way: millimetres of depth decide centimetres of height.
   const HandPoints all = hand_points(hand, state);
   const std::span<const vec3> points(all.data(), kMiddleJointPoints);
   float nearest = 1e9f;
