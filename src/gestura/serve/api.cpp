@@ -17,6 +17,7 @@
 #include "gestura/serve/api_error.hpp"
 #include "gestura/serve/clip_glb.hpp"
 #include "gestura/serve/public_request.hpp"
+#include "gestura/serve/request_json.hpp"
 #include "gestura/serve/static_files.hpp"
 
 #ifndef GESTURA_VERSION
@@ -29,21 +30,6 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// What a client may set of each request (everything else is the server's: files, avatar assets).
-struct SayFields {
-  static constexpr std::array<std::string_view, 6> names{"text", "lang", "speed", "mouthing", "nonmanuals", "fps"};
-};
-struct VideoFields {
-  static constexpr std::array<std::string_view, 8> names{"text", "lang", "speed", "mouthing", "nonmanuals", "fps", "size", "camera"};
-};
-struct SignFields {
-  static constexpr std::array<std::string_view, 5> names{"hamnosys", "names", "gloss", "speed", "fps"};
-};
-struct GlossFields {
-  static constexpr std::array<std::string_view, 3> names{"text", "lang", "open"};
-};
-
-constexpr int kMaxJsonDepth = 32;
 constexpr int kMaxVideoPixels = 1280 * 720;
 constexpr int kMaxLexiconLimit = 1000;
 
@@ -53,16 +39,7 @@ json body_json(const ApiRequest& request) {
   if (request.content_type != "application/json")
     throw app::AppError(app::ErrorCategory::usage, app::Place{"content-type", {}},
                         "send the request as application/json (got '" + request.content_type + "')");
-  try {
-    return json::parse(request.body, [](int depth, json::parse_event_t, json&) {
-      if (depth > kMaxJsonDepth) throw app::AppError(app::ErrorCategory::usage, "the JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-      return true;
-    });
-  } catch (const json::parse_error& e) {
-    std::string message = e.what();
-    if (const std::size_t p = message.find("] "); p != std::string::npos) message = message.substr(p + 2);
-    throw app::AppError(app::ErrorCategory::usage, app::Place{"body", {}}, "not valid JSON: " + message);
-  }
+  return parse_request_json(request.body);
 }
 
 template <class R>
