@@ -59,7 +59,8 @@ R read_public_query(const ApiRequest& request, std::initializer_list<std::string
     if constexpr (std::is_same_v<std::decay_t<decltype(value)>, std::vector<std::string>>) value.clear();
     app::set_from_text(value, it->second, field);
   });
-  for (const auto& [key, value] : request.query) {
+  for (const auto& entry : request.query) {
+    const std::string& key = entry.first;  // not a structured binding: clang 14 cannot capture one
     if (std::find(ignored.begin(), ignored.end(), key) != ignored.end()) continue;
     bool found = false;
     R::fields(r, [&](auto&, const app::FieldInfo& field) { found = found || field.name == key; });
