@@ -11,6 +11,7 @@
 #include "gestura/body/morph.hpp"
 #include "gestura/body/skinning.hpp"
 #include "gestura/render/edge_filter.hpp"
+#include "gestura/render/gl_program.hpp"
 
 namespace gestura {
 namespace {
@@ -176,27 +177,7 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum type, const std::string& source) {
-  const GLuint shader = glCreateShader(type);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw Error(std::string("renderer: shader does not compile: ") + log);
-  }
-  return shader;
-}
-
-void check_gl(const char* what) {
-  const GLenum e = glGetError();
-  if (e == GL_OUT_OF_MEMORY) throw Error(std::string("renderer: out of GPU memory while ") + what);
-  if (e != GL_NO_ERROR) throw Error(std::string("renderer: OpenGL error ") + std::to_string(e) + " while " + what);
-}
+void check_gl(const char* what) { gl::check("renderer", what); }
 
 }  // namespace
 
@@ -228,24 +209,12 @@ Renderer::Renderer(const Look& look, Antialiasing antialiasing) : gl_(std::make_
   GLint block_bytes = 0;
   glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &block_bytes);
   max_gpu_joints_ = std::min<std::size_t>(1024, static_cast<std::size_t>(block_bytes) / sizeof(mat4));
-  const GLuint vs = compile(GL_VERTEX_SHADER, "#version 330 core\n#define MAX_JOINTS " + std::to_string(max_gpu_joints_) +
-                                                  "\n#define MATERIALS " + std::to_string(kMaterialCount) +
-                                                  "\n#define MAX_OCCLUDERS " + std::to_string(kMaxOccluders) + kVertexShader);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, std::string("#version 330 core\n") + kFragmentShader);
   Gl& g = *gl_;
-  g.program = glCreateProgram();
-  glAttachShader(g.program, vs);
-  glAttachShader(g.program, fs);
-  glLinkProgram(g.program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(g.program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetProgramInfoLog(g.program, sizeof log, nullptr, log);
-    throw Error(std::string("renderer: shaders do not link: ") + log);
-  }
+  g.program = gl::link_program("renderer",
+                               "#version 330 core\n#define MAX_JOINTS " + std::to_string(max_gpu_joints_) +
+                                   "\n#define MATERIALS " + std::to_string(kMaterialCount) +
+                                   "\n#define MAX_OCCLUDERS " + std::to_string(kMaxOccluders) + kVertexShader,
+                               std::string("#version 330 core\n") + kFragmentShader);
   auto loc = [&](const char* name) { return glGetUniformLocation(g.program, name); };
   g.u_view_projection = loc("u_view_projection");
   g.u_skin_on_gpu = loc("u_skin_on_gpu");

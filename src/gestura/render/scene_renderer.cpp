@@ -9,6 +9,7 @@
 #include "gestura/body/morph.hpp"
 #include "gestura/body/skinning.hpp"
 #include "gestura/core/error.hpp"
+#include "gestura/render/gl_program.hpp"
 
 namespace gestura {
 namespace {
@@ -115,44 +116,11 @@ constexpr const char* kDepthFragment = R"(#version 330 core
 void main() {}
 )";
 
-GLuint compile(GLenum type, const char* source) {
-  const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw Error(std::string("scene renderer: shader does not compile: ") + log);
-  }
-  return shader;
-}
-
 GLuint link(const char* vs_source, const char* fs_source) {
-  const GLuint vs = compile(GL_VERTEX_SHADER, vs_source), fs = compile(GL_FRAGMENT_SHADER, fs_source);
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetProgramInfoLog(program, sizeof log, nullptr, log);
-    throw Error(std::string("scene renderer: shaders do not link: ") + log);
-  }
-  return program;
+  return gl::link_program("scene renderer", vs_source, fs_source);
 }
 
-void check_gl(const char* what) {
-  const GLenum e = glGetError();
-  if (e == GL_OUT_OF_MEMORY) throw Error(std::string("scene renderer: out of GPU memory while ") + what);
-  if (e != GL_NO_ERROR) throw Error(std::string("scene renderer: OpenGL error ") + std::to_string(e) + " while " + what);
-}
+void check_gl(const char* what) { gl::check("scene renderer", what); }
 
 vec3 linear(const vec3& srgb) { return glm::pow(glm::clamp(srgb, vec3(0.0f), vec3(1.0f)), vec3(2.2f)); }
 
