@@ -447,9 +447,7 @@ std::vector<DetailBox> avatar_detail_boxes(const Skeleton& skeleton, const Avata
   DetailBox head;
   head.lo = vec3(-0.112f, 1.470f, -0.145f) * k;
   head.hi = vec3(0.112f, 1.745f, 0.15f) * k;
-  // 3.2 mm cells at 1.70 m (refine 4, 4 mm, drew the lips' borders and the nose's tip as small
-  // steps in close-ups).
-  head.refine = 5;
+  head.refine = 4;
   head.open_axis = 1;
   head.open_side = -1;
   boxes.push_back(head);
