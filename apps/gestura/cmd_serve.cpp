@@ -35,6 +35,7 @@ const Registration reg{{
     "/api/gloss, /api/lexicon, /api/avatar.glb, /api/jobs/ID, /health, /metrics; a job's progress over a\n"
     "WebSocket at /api/jobs/ID/events. --web DIR serves the page at / (the checkout's web/ folder).\n"
     "Rendered videos go under --data, the only place the server writes. Ctrl-C stops it.\n"
+    "With --broker URL (Redis) video jobs go to `gestura worker` processes on any machine instead.\n"
     "Example: gestura serve --port 8080 --web web   then open http://127.0.0.1:8080/",
     prepare,
 }};

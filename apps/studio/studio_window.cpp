@@ -16,6 +16,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -41,13 +42,21 @@
 #include "gestura/render/subject.hpp"
 #include "gestura/render/viewer_controls.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
+#include "gestura/app/motion_output.hpp"
+#include "gestura/compress/compress.hpp"
+#include "gestura/studio/figure_model.hpp"
 #include "gestura/studio/learning.hpp"
+#include "gestura/studio/limb_drag.hpp"
 #include "gestura/studio/palette.hpp"
 #include "gestura/studio/pose_editor.hpp"
 #include "gestura/studio/recovery.hpp"
 #include "gestura/studio/script.hpp"
 #include "gestura/studio/sign_preview.hpp"
 #include "gestura/studio/studio_model.hpp"
+#include "gestura/studio/timeline_clip_sign.hpp"
+#include "gestura/studio/timeline_model.hpp"
+#include "figure_panel.hpp"
+#include "timeline_panel.hpp"
 
 namespace gestura::studio_ui {
 namespace {
@@ -84,10 +93,17 @@ class Studio {
     animator_.emplace(subject_);
     renderer_.upload(subject_.mesh);
     renderer_.set_occluders(find_occluders(subject_.skeleton, subject_.mesh));
+    // While the preview plays it is drawn with one sample per pixel (on a CPU renderer a 4-sample
+    // frame costs about twice as much); a still picture is drawn again with 4 samples.
+    moving_renderer_.emplace(Look{}, Antialiasing::None);
+    moving_renderer_->upload(subject_.mesh);
+    moving_renderer_->set_occluders(find_occluders(subject_.skeleton, subject_.mesh));
     controls_.emplace(framing_box(subject_.mesh, subject_.skeleton), CameraPreset::Front, 1.0f);
     std::vector<std::string> morph_names;
     for (const MorphTarget& m : subject_.mesh.morphs) morph_names.push_back(m.name);
     pose_editor_.emplace(subject_.skeleton, morph_names);
+    timeline_.emplace(subject_.skeleton, morph_names);
+    figure_.emplace(subject_.skeleton);
     pose_model_.resize(subject_.skeleton.size());
     pose_skinning_.resize(subject_.skeleton.size());
     inverse_bind_.resize(subject_.skeleton.size());
@@ -149,6 +165,24 @@ class Studio {
   void show_clip(const Clip& clip);
   void draw_learn(const ImVec2& pos, const ImVec2& size);
   void draw_word(const ImVec2& pos, const ImVec2& size);
+  // timeline and figure modes, IK drag (the part of the file after "timeline and figure")
+  void set_timeline_mode(bool on);
+  void set_figure_mode(bool on);
+  bool execute_timeline_or_figure(const ScriptStep& step);
+  void timeline_source_from_say(const std::string& text);
+  void timeline_source_from_sign();
+  void key_pose_now(float time);
+  void sync_timeline_pose();
+  void start_timeline_export(const std::string& path);
+  void save_clip_sign(const std::string& gloss, const std::string& language);
+  void figure_skinning(std::vector<mat4>& model, std::vector<mat4>& skinning) const;
+  bool ik_drag_to(int joint, const vec3& target, const std::string& merge_key);
+  void pick_limb(float fx, float fy, const vec2& size);
+  void draw_preview_overlay(const ImVec2& origin, const ImVec2& size);
+  void draw_timeline_ui(float top, float w, float h, float status_h);
+  void draw_figure_ui(float top, float w, float h, float status_h);
+  nlohmann::json dump_timeline_and_figure();
+  bool figure_or_timeline() const { return timeline_mode_ || figure_mode_; }
 
   // ---- per frame ----
   void update_preview(Clock::time_point now);
@@ -182,7 +216,10 @@ class Studio {
   StudioModel model_;
   std::string recovery_file_;
   WindowGlContext window_;
-  Renderer renderer_;
+  Renderer renderer_;                       // still pictures (4x MSAA)
+  std::optional<Renderer> moving_renderer_;  // while playing (one sample)
+  Renderer* shown_renderer_ = &renderer_;    // the one whose picture the preview shows
+  bool rendered_moving_ = false;
   app::Workspace* workspace_ = nullptr;
   std::unique_ptr<app::Workspace> own_workspace_;
   const SigningRig* rig_ = nullptr;
@@ -250,6 +287,26 @@ class Studio {
   std::optional<PoseEditor> pose_editor_;
   int pose_joint_ = -1;
   std::vector<mat4> pose_model_, pose_skinning_, inverse_bind_;
+  // IK drag of a hand or foot in the view
+  bool ik_tool_ = false;
+  std::optional<DragLimb> ik_limb_;
+  vec3 ik_target_{0.0f};
+  float ik_residual_ = -1.0f;
+  bool ik_dragging_ = false;
+  vec3 ik_plane_point_{0.0f};
+  // timeline mode
+  bool timeline_mode_ = false;
+  std::optional<Timeline> timeline_;
+  TimelineView tl_view_;
+  float tl_synced_time_ = -1.0f;
+  std::uint64_t tl_synced_revision_ = ~0ull, pose_synced_revision_ = 0;
+  bool show_export_timeline_ = false, show_clip_sign_ = false;
+  // figure mode
+  bool figure_mode_ = false;
+  std::optional<FigureEditor> figure_;
+  FigureView fig_view_;
+  FramingBox sign_box_;
+  std::uint64_t render_stamp_ = ~0ull;  // what the pose/timeline/figure preview last showed
   bool orbited_ = false;  // the learner moved the left view's camera
   CameraPreset second_view_ = CameraPreset::Side;
   std::uint64_t frame_ = 0;
@@ -351,6 +408,7 @@ void Studio::show_clip(const Clip& clip) {
 }
 
 void Studio::set_learning(bool on) {
+  if (on) set_timeline_mode(false), set_figure_mode(false);
   if (on && posing_) posing_ = false, rendered_ = false;
   if (on == learning_) return;
   learning_ = on;
@@ -368,6 +426,7 @@ void Studio::set_learning(bool on) {
 }
 
 void Studio::set_posing(bool on) {
+  if (on) set_timeline_mode(false), set_figure_mode(false);
   if (on == posing_) return;
   if (on) set_learning(false);
   posing_ = on;
@@ -509,6 +568,7 @@ void Studio::execute(const ScriptStep& step) {
   };
   static const char* const keeps_message[] = {"screenshot", "dump", "wait", "time", "play", "pause", "speed", "camera", "views", "panel"};
   if (std::none_of(std::begin(keeps_message), std::end(keeps_message), [&](const char* k) { return a == k; })) message_.clear();
+  if (execute_timeline_or_figure(step)) return;
   if (a == "open") {
     EntryKey key{arg(0), step.args.size() > 1 ? arg(1) : "ase", step.args.size() > 2 ? number(2) : 1};
     model_.open(key);
@@ -607,9 +667,9 @@ void Studio::execute(const ScriptStep& step) {
     write_dump(arg(0));
   } else if (a == "mode") {
     if (arg(0) == "learn") set_learning(true);
-    else if (arg(0) == "edit") set_learning(false), set_posing(false);
+    else if (arg(0) == "edit") set_learning(false), set_posing(false), set_timeline_mode(false), set_figure_mode(false);
     else if (arg(0) == "pose") set_posing(true);
-    else say("no mode '" + arg(0) + "' (learn, edit)");
+    else say("no mode '" + arg(0) + "' (learn, edit, pose, timeline, figure)");
   } else if (a == "topic") {
     set_learning(true);
     select_topic(arg(0));
@@ -696,12 +756,26 @@ float Studio::flexion_at(float t, char side) {
 void Studio::render_preview() {
   const int width = std::max(16, static_cast<int>(preview_panel_.x * request_.preview_scale));
   const int height = std::max(16, static_cast<int>(preview_panel_.y * request_.preview_scale));
+  const bool moving = timeline_mode_ ? tl_view_.playing : controls_->playing && !posing_ && !figure_mode_;
+  Renderer& renderer = moving ? *moving_renderer_ : renderer_;
   if (width != preview_width_ || height != preview_height_) {
     renderer_.resize(width, height);
+    moving_renderer_->resize(width, height);
     preview_width_ = width, preview_height_ = height;
   }
   const bool two = learning_ && two_views_;
-  if (posing_) rendered_ = false;  // the pose changes under the sliders: draw every frame
+  if (posing_ || figure_or_timeline()) {
+    // The pose (sliders, IK drag), the timeline's pose at the playhead or the figure: drawn again
+    // when one of them changed.
+    std::uint32_t time_bits = 0;
+    std::memcpy(&time_bits, &tl_synced_time_, sizeof time_bits);
+    std::uint64_t stamp = pose_editor_->revision();
+    stamp = stamp * 1000003ull + (figure_mode_ ? figure_->revision() + 1 : 0);
+    stamp = stamp * 1000003ull + (timeline_mode_ ? tl_synced_revision_ + 1 : 0);
+    stamp = stamp * 1000003ull + time_bits;
+    stamp = stamp * 31ull + (figure_mode_ ? 2u : timeline_mode_ ? 1u : 0u) + (fig_view_.show_body ? 4u : 0u);
+    if (stamp != render_stamp_) rendered_ = false, render_stamp_ = stamp;
+  }
   const int left_width = two ? width / 2 : width;
   controls_->aspect = static_cast<float>(left_width) / static_cast<float>(height);
   // Two narrow views: the left one is the front framing fitted to its width until the learner orbits.
@@ -722,19 +796,28 @@ void Studio::render_preview() {
   // A still picture is not drawn again: paused, same camera, same clip, same size.
   const bool same = rendered_ && rendered_clip_ == shown_clip_ && rendered_time_ == controls_->time &&
                     rendered_view_ == view.camera.view && rendered_projection_ == view.camera.projection &&
-                    rendered_size_ == glm::ivec2(width, height) && rendered_layout_ == (two ? 1 + static_cast<int>(second_view_) : 0);
+                    rendered_size_ == glm::ivec2(width, height) && rendered_layout_ == (two ? 1 + static_cast<int>(second_view_) : 0) &&
+                    rendered_moving_ == moving;
   if (same) return;
+  rendered_moving_ = moving;
+  shown_renderer_ = &renderer;
   rendered_layout_ = two ? 1 + static_cast<int>(second_view_) : 0;
   rendered_ = true, rendered_clip_ = shown_clip_, rendered_time_ = controls_->time;
   rendered_view_ = view.camera.view, rendered_projection_ = view.camera.projection, rendered_size_ = glm::ivec2(width, height);
-  if (posing_) {
+  if (figure_mode_) {
+    figure_skinning(pose_model_, pose_skinning_);
+    const std::vector<float> no_morphs(subject_.mesh.morphs.size(), 0.0f);
+    renderer.render(views, pose_skinning_, no_morphs);
+    return;
+  }
+  if (posing_ || timeline_mode_) {
     pose_editor_->model(pose_model_);
     for (std::size_t j = 0; j < pose_model_.size(); ++j) pose_skinning_[j] = pose_model_[j] * inverse_bind_[j];
-    renderer_.render(views, pose_skinning_, pose_editor_->morph_weights());
+    renderer.render(views, pose_skinning_, pose_editor_->morph_weights());
     return;
   }
   animator_->pose_at(controls_->time);
-  renderer_.render(views, animator_->skinning(), animator_->morph_weights());
+  renderer.render(views, animator_->skinning(), animator_->morph_weights());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -759,6 +842,8 @@ void Studio::draw_menu() {
     if (ImGui::MenuItem("Import SiGML or JSONL...", nullptr, false, model_.writable())) show_import_ = true;
     if (ImGui::MenuItem("Export SiGML or JSONL...")) show_export_ = true;
     if (ImGui::MenuItem("Export the sign as motion or video...", nullptr, false, !export_.valid())) show_export_sign_ = true;
+    if (ImGui::MenuItem("Export the timeline (BVH, glTF, .gcl, MP4, WebM)...", nullptr, false, !export_.valid())) show_export_timeline_ = true;
+    if (ImGui::MenuItem("Save the timeline as a clip sign...", nullptr, false, model_.writable())) show_clip_sign_ = true;
     ImGui::Separator();
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) quit_ = true;
     ImGui::EndMenu();
@@ -776,9 +861,12 @@ void Studio::draw_menu() {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Mode")) {
-    if (ImGui::MenuItem("Sign editor", "F9", !learning_ && !posing_)) set_learning(false), set_posing(false);
+    if (ImGui::MenuItem("Sign editor", "F9", !learning_ && !posing_ && !figure_or_timeline()))
+      set_learning(false), set_posing(false), set_timeline_mode(false), set_figure_mode(false);
     if (ImGui::MenuItem("Learning", "F10", learning_)) set_learning(true);
     if (ImGui::MenuItem("Pose editor", "F11", posing_)) set_posing(true);
+    if (ImGui::MenuItem("Timeline editor", "F8", timeline_mode_)) set_timeline_mode(true);
+    if (ImGui::MenuItem("Figure editor", "F7", figure_mode_)) set_figure_mode(true);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
@@ -973,31 +1061,55 @@ void Studio::draw_palette(const ImVec2& pos, const ImVec2& size) {
 
 void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
   if (begin_panel("Preview", pos, size)) {
-    const float bar = ImGui::GetFrameHeightWithSpacing() * 2 + 30;
+    // Room below the picture: the clip's timeline and transport, or one row of camera buttons.
+    const float bar = figure_or_timeline() || posing_ ? ImGui::GetFrameHeightWithSpacing() + 4 : ImGui::GetFrameHeightWithSpacing() * 2 + 30;
     ImVec2 avail = ImGui::GetContentRegionAvail();
     avail.y = std::max(32.0f, avail.y - bar);
     preview_panel_ = avail;
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(renderer_.resolved_texture())), avail,
-                 ImVec2(0, static_cast<float>(preview_height_) / static_cast<float>(std::max(1, renderer_.height()))),
-                 ImVec2(static_cast<float>(preview_width_) / static_cast<float>(std::max(1, renderer_.width())), 0));
-    if (posing_ && ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
-      // Pick the joint nearest to the click, as the camera projects it.
+    const Renderer& shown = *shown_renderer_;
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(shown.resolved_texture())), avail,
+                 ImVec2(0, static_cast<float>(preview_height_) / static_cast<float>(std::max(1, shown.height()))),
+                 ImVec2(static_cast<float>(preview_width_) / static_cast<float>(std::max(1, shown.width())), 0));
+    draw_preview_overlay(ImGui::GetItemRectMin(), avail);
+    if ((posing_ || timeline_mode_) && !ik_tool_ && ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
+      // Pick the bone under the click (the mouse ray against the bones' capsules), else the joint
+      // nearest to the click as the camera projects it.
       const ImVec2 origin = ImGui::GetItemRectMin(), m = ImGui::GetIO().MousePos;
-      const Camera camera = controls_->camera(controls_->aspect);
-      float best = 400.0f;  // 20 px
-      for (std::size_t j = 0; j < pose_model_.size(); ++j) {
-        const vec4 clip = camera.projection * camera.view * vec4(vec3(pose_model_[j][3]), 1.0f);
-        if (clip.w <= 0.0f) continue;
-        const float x = origin.x + (clip.x / clip.w * 0.5f + 0.5f) * avail.x, y = origin.y + (0.5f - clip.y / clip.w * 0.5f) * avail.y;
-        const float d = (x - m.x) * (x - m.x) + (y - m.y) * (y - m.y);
-        if (d < best) best = d, pose_joint_ = static_cast<int>(j);
+      const int before = pose_joint_;
+      pose_joint_ = -1;
+      pick_limb((m.x - origin.x) / avail.x, (m.y - origin.y) / avail.y, vec2(avail.x, avail.y));
+      if (pose_joint_ < 0) {
+        pose_joint_ = before;
+        const Camera camera = controls_->camera(controls_->aspect);
+        float best = 400.0f;  // 20 px
+        for (std::size_t j = 0; j < pose_model_.size(); ++j) {
+          const vec4 clip = camera.projection * camera.view * vec4(vec3(pose_model_[j][3]), 1.0f);
+          if (clip.w <= 0.0f) continue;
+          const float x = origin.x + (clip.x / clip.w * 0.5f + 0.5f) * avail.x, y = origin.y + (0.5f - clip.y / clip.w * 0.5f) * avail.y;
+          const float d = (x - m.x) * (x - m.x) + (y - m.y) * (y - m.y);
+          if (d < best) best = d, pose_joint_ = static_cast<int>(j);
+        }
       }
     }
     if (ImGui::IsItemHovered()) {
       const ImGuiIO& io = ImGui::GetIO();
-      if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) controls_->orbit_drag(io.MouseDelta.x, io.MouseDelta.y), orbited_ = true;
+      if (ImGui::IsMouseDragging(ImGuiMouseButton_Left) && !ik_dragging_) controls_->orbit_drag(io.MouseDelta.x, io.MouseDelta.y), orbited_ = true;
       if (ImGui::IsMouseDragging(ImGuiMouseButton_Right)) controls_->pan_drag(io.MouseDelta.x, io.MouseDelta.y), orbited_ = true;
       if (io.MouseWheel != 0.0f) controls_->zoom(io.MouseWheel), orbited_ = true;
+    }
+    if (figure_or_timeline() || posing_) {
+      // The timeline editor has its own transport; the figure has no motion. Cameras and the IK tool.
+      for (const auto& [label, command] : {std::pair{"front", ViewerCommand::Front}, std::pair{"side", ViewerCommand::Side},
+                                           std::pair{"3/4", ViewerCommand::ThreeQuarter}, std::pair{"top", ViewerCommand::Top}}) {
+        if (ImGui::SmallButton(label)) controls_->apply(command);
+        ImGui::SameLine();
+      }
+      if (!figure_mode_) {
+        ImGui::Checkbox("drag hand/foot (IK)", &ik_tool_);
+        if (ik_residual_ >= 0.0f) ImGui::SameLine(), ImGui::TextDisabled("IK: %.1f mm from the target", ik_residual_ * 1000.0f);
+      }
+      ImGui::End();
+      return;
     }
     // The timeline: the clip, the signing part, problem marks and the playhead; click to scrub.
     const float duration = animator_->duration();
@@ -1229,6 +1341,12 @@ void Studio::draw_joint(const ImVec2& pos, const ImVec2& size) {
     if (ImGui::Button("Undo")) pose_editor_->undo();
     ImGui::SameLine();
     if (ImGui::Button("Redo")) pose_editor_->redo();
+    if (posing_) {
+      // Key the pose into the timeline at its playhead (Mode -> Timeline editor shows it there).
+      char label[48];
+      std::snprintf(label, sizeof label, "Key pose into the timeline at %.2f s", tl_view_.time);
+      if (ImGui::Button(label)) key_pose_now(tl_view_.time);
+    }
     if (ImGui::CollapsingHeader("Handshape presets", ImGuiTreeNodeFlags_DefaultOpen)) {
       for (const char side : {'r', 'l'}) {
         ImGui::TextDisabled("%s hand", side == 'r' ? "right" : "left");
@@ -1312,11 +1430,31 @@ void Studio::draw_popups() {
     if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }
+  if (show_export_timeline_) ImGui::OpenPopup("Export timeline"), show_export_timeline_ = false;
+  if (ImGui::BeginPopupModal("Export timeline", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("The timeline as motion or video: .bvh, .glb, .gltf, .json, .gcl (compressed clip), .png, .gif, .mp4, .webm");
+    ImGui::InputText("file", &io_path_);
+    if (ImGui::Button("Export")) start_timeline_export(io_path_), ImGui::CloseCurrentPopup();
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+  if (show_clip_sign_) ImGui::OpenPopup("Save clip sign"), show_clip_sign_ = false;
+  if (ImGui::BeginPopupModal("Save clip sign", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("The timeline's motion as a clip sign in your lexicon (%s)", setup_.user_db.c_str());
+    ImGui::InputText("gloss", &tl_view_.clip_gloss);
+    if (ImGui::Button("Save")) save_clip_sign(tl_view_.clip_gloss, "ase"), ImGui::CloseCurrentPopup();
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
   if (show_help_) ImGui::OpenPopup("Keys"), show_help_ = false;
   if (ImGui::BeginPopupModal("Keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::Text("Ctrl+N new   Ctrl+S save   Ctrl+Z undo   Ctrl+Y / Ctrl+Shift+Z redo   Ctrl+D duplicate   Ctrl+Q quit");
     ImGui::Text("Del remove the selected symbol   Space play/pause   , . step a frame   F1..F4 front, side, 3/4, top");
     ImGui::Text("Preview: left drag orbit, right drag pan, wheel zoom; click the timeline to scrub");
+    ImGui::Text("F7 figure editor   F8 timeline editor   F9 sign editor   F10 learning   F11 pose editor   K key the pose (timeline)");
+    ImGui::Text("Pose/timeline: tick 'drag hand/foot (IK)' under the view, then drag an arm or leg");
     if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }
@@ -1326,6 +1464,18 @@ void Studio::shortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
   const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
   if (io.KeyCtrl) {
+    if (figure_mode_) {
+      if (pressed(GLFW_KEY_Z) && !io.KeyShift) figure_->undo();
+      if (pressed(GLFW_KEY_Y) || (pressed(GLFW_KEY_Z) && io.KeyShift)) figure_->redo();
+      return;
+    }
+    if (timeline_mode_) {
+      // An unkeyed pose edit is undone first, then the timeline's edits.
+      const bool pose_edited = pose_editor_->revision() != pose_synced_revision_;
+      if (pressed(GLFW_KEY_Z) && !io.KeyShift) pose_edited ? (void)pose_editor_->undo() : (void)timeline_->undo();
+      if (pressed(GLFW_KEY_Y) || (pressed(GLFW_KEY_Z) && io.KeyShift)) pose_edited ? (void)pose_editor_->redo() : (void)timeline_->redo();
+      return;
+    }
     if (posing_) {
       if (pressed(GLFW_KEY_Z) && !io.KeyShift) pose_editor_->undo();
       if (pressed(GLFW_KEY_Y) || (pressed(GLFW_KEY_Z) && io.KeyShift)) pose_editor_->redo();
@@ -1343,7 +1493,8 @@ void Studio::shortcuts() {
     return;
   }
   if (io.WantTextInput) return;
-  if (pressed(GLFW_KEY_SPACE)) controls_->apply(ViewerCommand::PlayPause);
+  if (pressed(GLFW_KEY_SPACE) && timeline_mode_) tl_view_.playing = !tl_view_.playing;
+  else if (pressed(GLFW_KEY_SPACE)) controls_->apply(ViewerCommand::PlayPause);
   if (pressed(GLFW_KEY_COMMA)) controls_->apply(ViewerCommand::StepBack);
   if (pressed(GLFW_KEY_PERIOD)) controls_->apply(ViewerCommand::StepForward);
   if (pressed(GLFW_KEY_F1)) controls_->apply(ViewerCommand::Front);
@@ -1352,6 +1503,10 @@ void Studio::shortcuts() {
   if (pressed(GLFW_KEY_F4)) controls_->apply(ViewerCommand::Top);
   if (pressed(GLFW_KEY_F9)) set_learning(false), set_posing(false);
   if (pressed(GLFW_KEY_F11)) set_posing(true);
+  if (pressed(GLFW_KEY_F8)) set_timeline_mode(true);
+  if (pressed(GLFW_KEY_F7)) set_figure_mode(true);
+  if (pressed(GLFW_KEY_F9)) set_timeline_mode(false), set_figure_mode(false);
+  if (timeline_mode_ && pressed(GLFW_KEY_K)) key_pose_now(tl_view_.time);
   if (pressed(GLFW_KEY_F10)) set_learning(true);
   if (pressed(GLFW_KEY_R) && learning_) controls_->time = 0.0f, controls_->playing = true;
   if (pressed(GLFW_KEY_DELETE) && selected_symbol_ >= 0) model_.remove_symbol(selected_symbol_), selected_symbol_ = -1;
@@ -1364,6 +1519,8 @@ void Studio::draw_ui() {
   const float w = vp->WorkSize.x, h = vp->WorkSize.y - status_h;
   const float left = std::round(w * 0.2f), right = std::round(w * 0.3f), centre = w - left - right;
   const float problems_h = std::round(h * 0.2f), meta_h = std::round(h * 0.36f), notation_h = std::round(h * 0.26f);
+  if (timeline_mode_) return draw_timeline_ui(top, w, h, status_h);
+  if (figure_mode_) return draw_figure_ui(top, w, h, status_h);
   if (posing_) {
     draw_skeleton({0, top}, {left, h});
     draw_preview({left, top}, {centre, h});
@@ -1391,6 +1548,486 @@ void Studio::draw_ui() {
   draw_status({0, top + h}, {w, status_h});
   draw_popups();
   shortcuts();
+}
+
+// ---------------------------------------------------------------------------------------------
+// timeline and figure (ALIAS Timeline Editor ch. 8, Tree Editor ch. 3), IK drag in the view
+
+void Studio::set_timeline_mode(bool on) {
+  if (on == timeline_mode_) return;
+  if (on) {
+    set_learning(false), set_figure_mode(false);
+    posing_ = false;
+    controls_->playing = false;  // the sign editor's clip does not play behind the timeline
+    tl_synced_time_ = -1.0f;  // show the timeline's pose at the playhead
+  }
+  timeline_mode_ = on;
+  rendered_ = false;
+  if (on) say("timeline editor: pose the avatar (right), Key pose (K) keys it at the playhead; drag keys and bar edges to retime");
+}
+
+void Studio::set_figure_mode(bool on) {
+  if (on == figure_mode_) return;
+  if (on) set_learning(false), set_timeline_mode(false), posing_ = false, controls_->playing = false;
+  // The figure is seen whole (a sign frames the upper body); the sign's framing comes back after.
+  if (on) {
+    sign_box_ = controls_->box;
+    controls_->box = framing_box(subject_.mesh, subject_.skeleton);
+    controls_->box.hips_y = controls_->box.min.y;  // the cut at the feet: the whole figure
+  }
+  else controls_->box = sign_box_;
+  controls_->select(CameraPreset::Front);
+  figure_mode_ = on;
+  rendered_ = false;
+  if (on) say("figure editor: the skeleton as a tree; edit a joint on the right, save a skeleton file (BVH)");
+}
+
+void Studio::sync_timeline_pose() {
+  if (tl_view_.key_requested) tl_view_.key_requested = false, key_pose_now(tl_view_.time);
+  if (tl_view_.say_requested && !tl_view_.say_text.empty()) timeline_source_from_say(tl_view_.say_text);
+  if (tl_view_.sign_requested) timeline_source_from_sign();
+  if (tl_view_.clear_requested) timeline_->set_source(Clip{}, {}, {}), say("timeline: no source motion");
+  tl_view_.say_requested = tl_view_.sign_requested = tl_view_.clear_requested = false;
+  if (tl_view_.time == tl_synced_time_ && timeline_->revision() == tl_synced_revision_) return;
+  // The pose at the playhead replaces an unkeyed edit, as in every key-frame editor.
+  Pose pose;
+  pose.resize(subject_.skeleton.size());
+  std::vector<float> morphs(pose_editor_->morph_names().size());
+  timeline_->sample(tl_view_.time, pose, morphs);
+  pose_editor_->assign(pose, morphs);
+  pose_synced_revision_ = pose_editor_->revision();
+  tl_synced_time_ = tl_view_.time;
+  tl_synced_revision_ = timeline_->revision();
+  ik_residual_ = -1.0f;
+}
+
+void Studio::key_pose_now(float time) {
+  const int keys = timeline_->key_pose(pose_editor_->pose(), pose_editor_->morph_weights(), time);
+  char text[96];
+  std::snprintf(text, sizeof text, "keyed the pose at %.2f s (%d channel%s)", time, keys, keys == 1 ? "" : "s");
+  say(text);
+  tl_synced_time_ = -1.0f;  // show what the timeline now holds there
+}
+
+void Studio::timeline_source_from_say(const std::string& text) {
+  app::SayRequest request;
+  request.text = text;
+  app::RunContext context;
+  context.workspace = workspace_;
+  try {
+    const app::SayResult r = app::run(request, context);
+    std::vector<SourceSign> signs;
+    for (const PerformedGloss& g : r.performance.glosses) signs.push_back({g.gloss, g.start, g.end});
+    timeline_->set_source(r.performance.clip, signs, text);
+    tl_view_.time = 0.0f, tl_synced_time_ = -1.0f;
+    say("timeline: '" + text + "' as " + std::to_string(timeline_->bars().size()) + " bars");
+  } catch (const std::exception& e) {
+    say(std::string("cannot sign '") + text + "': " + e.what());
+  }
+}
+
+void Studio::timeline_source_from_sign() {
+  if (!preview_.clip) {
+    say("the draft has no performed sign to put on the timeline");
+    return;
+  }
+  const std::string gloss = model_.draft().gloss.empty() ? std::string("sign") : model_.draft().gloss;
+  const std::vector<SourceSign> signs{{gloss, preview_.sign_start, preview_.sign_end}};
+  timeline_->set_source(*preview_.clip, signs, gloss);
+  tl_view_.time = 0.0f, tl_synced_time_ = -1.0f;
+  say("timeline: the sign " + gloss);
+}
+
+void Studio::start_timeline_export(const std::string& path) {
+  if (export_.valid()) {
+    say("an export is already running");
+    return;
+  }
+  const bool gcl = std::filesystem::path(path).extension() == ".gcl";
+  app::MotionOutput out;
+  out.output = path;
+  if (!gcl) {
+    try {
+      app::validate(out, true);
+    } catch (const std::exception& e) {
+      say(std::string("not exported: ") + e.what() + " (or .gcl)");
+      return;
+    }
+  }
+  export_stop_ = std::stop_source();
+  *export_done_ = 0, *export_total_ = 0;
+  app::RunContext context;
+  context.workspace = workspace_;
+  context.stop = export_stop_.get_token();
+  context.progress = [done = export_done_, total = export_total_](const app::ProgressUpdate& p) { *done = p.done, *total = p.total; };
+  const Clip clip = timeline_->bake(30.0f);
+  const float still = tl_view_.time;
+  export_ = std::async(std::launch::async, [out, clip, gcl, still, context, skeleton = &subject_.skeleton, mesh = &subject_.mesh]() -> std::string {
+    try {
+      if (gcl) {
+        const CompressedClip compressed = compress(clip, *skeleton);
+        write_file_atomically(out.output, std::string_view(reinterpret_cast<const char*>(compressed.bytes().data()), compressed.bytes().size()));
+        return "exported " + out.output + " (" + std::to_string(compressed.bytes().size()) + " bytes)";
+      }
+      const app::WrittenFile w = app::write_motion(out, *skeleton, clip, mesh, still, context);
+      return "exported " + w.path + " (" + std::to_string(w.frames) + " frames)";
+    } catch (const std::exception& e) {
+      const app::ErrorReport report = app::classify(e);
+      return report.category == app::ErrorCategory::cancelled ? std::string("export cancelled, nothing written")
+                                                               : "export failed, nothing written: " + std::string(e.what());
+    }
+  });
+  say("exporting the timeline to " + path + " ...");
+}
+
+void Studio::save_clip_sign(const std::string& gloss, const std::string& language) {
+  if (!model_.writable()) {
+    say("not saved: your lexicon is read-only");
+    return;
+  }
+  try {
+    const SignEntry entry = clip_sign_entry(gloss, language, timeline_->bake(30.0f), subject_.skeleton);
+    store_clip_sign(setup_.user_db, entry);
+    refresh_browse();
+    say("saved the timeline as the clip sign " + gloss + " (" + std::to_string(entry.clip.size()) + " bytes)");
+  } catch (const std::exception& e) {
+    say(std::string("not saved: ") + e.what());
+  }
+}
+
+void Studio::figure_skinning(std::vector<mat4>& model, std::vector<mat4>& skinning) const {
+  // The avatar's body bound to the edited figure by joint name: a joint the figure has takes the
+  // figure's rest frame; one it lacks follows its parent as it does at rest.
+  const Skeleton& f = figure_->skeleton();
+  const Skeleton& a = subject_.skeleton;
+  std::vector<mat4> fm(f.size());
+  local_to_model(f, rest_pose(f), fm);
+  for (std::size_t j = 0; j < a.size(); ++j) {
+    const int k = f.find(a.names[j]);
+    const mat4 rest = glm::inverse(inverse_bind_[j]);
+    if (k >= 0) model[j] = fm[static_cast<std::size_t>(k)];
+    else if (a.parents[j] >= 0) model[j] = model[static_cast<std::size_t>(a.parents[j])] * inverse_bind_[static_cast<std::size_t>(a.parents[j])] * rest;
+    else model[j] = rest;
+    skinning[j] = model[j] * inverse_bind_[j];
+  }
+}
+
+bool Studio::ik_drag_to(int joint, const vec3& target, const std::string& merge_key) {
+  const auto limb = limb_of(subject_.skeleton, joint);
+  if (!limb) {
+    say("not a limb: pick an arm, hand, leg or foot");
+    return false;
+  }
+  ik_limb_ = limb;
+  ik_target_ = target;
+  Pose pose = pose_editor_->pose();
+  ik_residual_ = drag_limb(subject_.skeleton, pose, *limb, target);
+  pose_editor_->set_pose(pose, merge_key);
+  pose_joint_ = limb->end;
+  return true;
+}
+
+void Studio::pick_limb(float fx, float fy, const vec2& size) {
+  const Camera camera = controls_->camera(size.x / std::max(1.0f, size.y));
+  const mat4 inverse = glm::inverse(camera.projection * camera.view);
+  const float x = fx * 2.0f - 1.0f, y = 1.0f - fy * 2.0f;
+  const vec4 near = inverse * vec4(x, y, -1.0f, 1.0f), far = inverse * vec4(x, y, 1.0f, 1.0f);
+  const vec3 origin = vec3(near) / near.w, direction = vec3(far) / far.w - origin;
+  std::vector<mat4> model(subject_.skeleton.size());
+  pose_editor_->model(model);
+  const int joint = pick_bone(subject_.skeleton, model, origin, direction);
+  if (joint < 0) return;
+  pose_joint_ = joint;
+  const auto limb = limb_of(subject_.skeleton, joint);
+  say("picked " + subject_.skeleton.names[static_cast<std::size_t>(joint)] +
+      (limb ? " (drag moves the " + std::string(limb->arm ? "hand" : "foot") + ")" : std::string()));
+  if (limb) ik_limb_ = limb, ik_plane_point_ = vec3(model[static_cast<std::size_t>(limb->end)][3]);
+}
+
+void Studio::draw_preview_overlay(const ImVec2& origin, const ImVec2& size) {
+  const Camera camera = controls_->camera(controls_->aspect);
+  const auto project = [&](const vec3& p, ImVec2& out) {
+    const vec4 c = camera.projection * camera.view * vec4(p, 1.0f);
+    if (c.w <= 0.0f) return false;
+    out = ImVec2(origin.x + (c.x / c.w * 0.5f + 0.5f) * size.x, origin.y + (0.5f - c.y / c.w * 0.5f) * size.y);
+    return true;
+  };
+  ImDrawList* d = ImGui::GetWindowDrawList();
+  d->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+  struct PopClip {
+    ImDrawList* d;
+    ~PopClip() { d->PopClipRect(); }
+  } pop{d};
+  if (figure_mode_) {
+    if (!fig_view_.show_body) d->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(40, 42, 48, 255));
+    if (!fig_view_.show_sticks) return;
+    const Skeleton& f = figure_->skeleton();
+    std::vector<mat4> fm(f.size());
+    local_to_model(f, rest_pose(f), fm);
+    for (std::size_t j = 0; j < f.size(); ++j) {
+      ImVec2 a, b;
+      if (!project(vec3(fm[j][3]), b)) continue;
+      const bool selected = static_cast<int>(j) == fig_view_.joint;
+      if (f.parents[j] >= 0 && project(vec3(fm[static_cast<std::size_t>(f.parents[j])][3]), a))
+        d->AddLine(a, b, selected ? IM_COL32(255, 140, 60, 255) : IM_COL32(90, 230, 120, 255), selected ? 3.0f : 1.5f);
+      d->AddCircleFilled(b, selected ? 5.0f : 2.5f, f.dofs[j].count() ? IM_COL32(250, 250, 120, 255) : IM_COL32(150, 150, 150, 255));
+    }
+    if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
+      const ImVec2 m = ImGui::GetIO().MousePos;
+      float best = 400.0f;
+      for (std::size_t j = 0; j < f.size(); ++j) {
+        ImVec2 p;
+        if (!project(vec3(fm[j][3]), p)) continue;
+        const float dd = (p.x - m.x) * (p.x - m.x) + (p.y - m.y) * (p.y - m.y);
+        if (dd < best) best = dd, fig_view_.joint = static_cast<int>(j);
+      }
+    }
+    return;
+  }
+  if (!posing_ && !timeline_mode_) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  // The IK tool: press on a limb, drag its hand or foot in the plane facing the camera.
+  if (ik_tool_ && ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
+    pick_limb((io.MousePos.x - origin.x) / size.x, (io.MousePos.y - origin.y) / size.y, vec2(size.x, size.y));
+    ik_dragging_ = ik_limb_.has_value();
+  }
+  if (ik_dragging_ && ImGui::IsMouseDown(ImGuiMouseButton_Left) && ik_limb_) {
+    const mat4 inverse = glm::inverse(camera.projection * camera.view);
+    const float x = (io.MousePos.x - origin.x) / size.x * 2.0f - 1.0f, y = 1.0f - (io.MousePos.y - origin.y) / size.y * 2.0f;
+    const vec4 n = inverse * vec4(x, y, -1.0f, 1.0f), f = inverse * vec4(x, y, 1.0f, 1.0f);
+    const vec3 o = vec3(n) / n.w, dir = vec3(f) / f.w - o;
+    const vec3 normal = glm::normalize(camera.target - camera.eye);
+    const float den = glm::dot(dir, normal);
+    if (std::abs(den) > 1e-6f && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+      const vec3 target = o + dir * (glm::dot(ik_plane_point_ - o, normal) / den);
+      ik_drag_to(ik_limb_->end, target, "ik-drag");
+    }
+  }
+  if (ik_dragging_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) ik_dragging_ = false, pose_editor_->seal();
+  if (ik_limb_ && ik_residual_ >= 0.0f) {
+    ImVec2 p;
+    if (project(ik_target_, p)) d->AddCircle(p, 7.0f, IM_COL32(255, 90, 60, 255), 16, 2.0f);
+  }
+}
+
+void Studio::draw_timeline_ui(float top, float w, float h, float status_h) {
+  const float left = std::round(w * 0.18f), right = std::round(w * 0.27f), centre = w - left - right;
+  const float tracks_h = std::round(h * 0.56f);
+  if (begin_panel("Channels", {0, top}, {left, h})) draw_timeline_channels(*timeline_, tl_view_);
+  ImGui::End();
+  draw_preview({left, top}, {centre, h - tracks_h});
+  if (begin_panel("Timeline", {left, top + h - tracks_h}, {centre, tracks_h})) draw_timeline_tracks(*timeline_, tl_view_);
+  ImGui::End();
+  draw_joint({left + centre, top}, {right, h});
+  draw_status({0, top + h}, {w, status_h});
+  draw_popups();
+  shortcuts();
+}
+
+void Studio::draw_figure_ui(float top, float w, float h, float status_h) {
+  const float left = std::round(w * 0.22f), right = std::round(w * 0.32f), centre = w - left - right;
+  if (begin_panel("Figure", {0, top}, {left, h})) draw_figure_tree(*figure_, fig_view_);
+  ImGui::End();
+  draw_preview({left, top}, {centre, h});
+  if (begin_panel("Figure joint", {left + centre, top}, {right, h})) draw_figure_joint(*figure_, fig_view_);
+  ImGui::End();
+  draw_status({0, top + h}, {w, status_h});
+  draw_popups();
+  shortcuts();
+}
+
+bool Studio::execute_timeline_or_figure(const ScriptStep& step) {
+  const std::string& a = step.action;
+  const auto arg = [&](std::size_t i) { return i < step.args.size() ? step.args[i] : std::string(); };
+  const auto number = [&](std::size_t i) {
+    try {
+      std::size_t used = 0;
+      const float v = std::stof(arg(i), &used);
+      if (used != arg(i).size() || !std::isfinite(v)) throw std::invalid_argument("");
+      return v;
+    } catch (const std::exception&) {
+      throw Error(SourceLocation{request_.script, step.line}, "'" + arg(i) + "' is not a number");
+    }
+  };
+  const auto channel = [&](const std::string& name) {
+    const int c = timeline_->channel_for(name);
+    if (c < 0) say("no channel " + name + " (JOINT.x|y|z of a free axis, or a face channel)");
+    return c;
+  };
+  if (a == "mode" && arg(0) == "timeline") return set_timeline_mode(true), true;
+  if (a == "mode" && arg(0) == "figure") return set_figure_mode(true), true;
+  // pose editor: picking and IK (in pose and timeline mode)
+  if (a == "pose-pick") {
+    if (!posing_ && !timeline_mode_) set_posing(true);
+    pick_limb(number(0), number(1), vec2(preview_panel_.x, preview_panel_.y));
+    return true;
+  }
+  if (a == "pose-drag" || a == "pose-drag-by") {
+    if (!posing_ && !timeline_mode_) set_posing(true);
+    const int joint = subject_.skeleton.find(arg(0));
+    if (joint < 0) return say("no joint " + arg(0)), true;
+    vec3 target(number(1), number(2), number(3));
+    if (a == "pose-drag-by") {
+      const auto limb = limb_of(subject_.skeleton, joint);
+      if (!limb) return say("not a limb: " + arg(0)), true;
+      std::vector<mat4> model(subject_.skeleton.size());
+      pose_editor_->model(model);
+      target += vec3(model[static_cast<std::size_t>(limb->end)][3]);
+    }
+    if (ik_drag_to(joint, target, {})) {
+      char text[96];
+      std::snprintf(text, sizeof text, "dragged the %s: %.1f mm from the target", ik_limb_->arm ? "hand" : "foot", ik_residual_ * 1000.0f);
+      say(text);
+    }
+    return true;
+  }
+  const bool timeline_action = a.rfind("timeline-", 0) == 0 || a == "key-pose" || a == "key" || a == "move-key" || a == "move-keys-at" ||
+                               a == "key-interp" || a == "bar-duration" || a == "export-timeline" || a == "save-clip-sign" ||
+                               a == "strip-zoom" || a == "loop";
+  if (timeline_action && !timeline_mode_) set_timeline_mode(true);
+  if (timeline_mode_) {
+    if (a == "timeline-say") tl_view_.say_text = arg(0), timeline_source_from_say(arg(0));
+    else if (a == "timeline-sign") timeline_source_from_sign();
+    else if (a == "timeline-clear") timeline_->set_source(Clip{}, {}, {});
+    else if (a == "key-pose") key_pose_now(step.args.empty() ? tl_view_.time : number(0));
+    else if (a == "key") {
+      if (const int c = channel(arg(0)); c >= 0)
+        tl_view_.key = timeline_->set_key(c, number(1), number(2)), tl_view_.channel = c, tl_view_.follow_selection = true;
+    } else if (a == "move-key") {
+      const int c = timeline_->find_channel(arg(0));
+      if (c < 0 || !timeline_->move_key(c, static_cast<int>(number(1)), number(2))) say("no key " + arg(1) + " on " + arg(0));
+    } else if (a == "move-keys-at") {
+      say("moved " + std::to_string(timeline_->move_keys_at(number(0), number(1))) + " keys");
+    } else if (a == "key-interp") {
+      KeyInterpolation kind{};
+      const int c = timeline_->find_channel(arg(0));
+      if (!parse_key_interpolation(arg(2), kind)) say("no interpolation '" + arg(2) + "' (step, linear, catmull-rom, kb)");
+      else if (c < 0 || !timeline_->set_interpolation(c, static_cast<int>(number(1)), kind,
+                                                        Tcb{step.args.size() > 3 ? number(3) : 0.0f, step.args.size() > 4 ? number(4) : 0.0f,
+                                                            step.args.size() > 5 ? number(5) : 0.0f}))
+        say("no key " + arg(1) + " on " + arg(0));
+      else tl_view_.channel = c, tl_view_.key = static_cast<int>(number(1)), tl_view_.follow_selection = true;
+    } else if (a == "bar-duration") {
+      if (!timeline_->set_bar_duration(static_cast<int>(number(0)), number(1))) say("no bar " + arg(0));
+    } else if (a == "export-timeline") start_timeline_export(arg(0));
+    else if (a == "save-clip-sign") save_clip_sign(arg(0), step.args.size() > 1 ? arg(1) : "ase");
+    else if (a == "timeline-zoom") tl_view_.zoom = std::clamp(number(0), 1.0f, 16.0f);
+    else if (a == "strip-zoom") tl_view_.strip_zoom = std::clamp(number(0), 0.5f, 3.0f);
+    else if (a == "loop") tl_view_.loop = arg(0) == "on";
+    else if (a == "time") tl_view_.playing = false, tl_view_.time = std::clamp(number(0), 0.0f, timeline_->duration());
+    else if (a == "play") tl_view_.playing = true;
+    else if (a == "pause") tl_view_.playing = false;
+    else if (a == "speed") tl_view_.speed = std::clamp(number(0), 0.25f, 2.0f);
+    else if (a == "undo") {
+      const bool pose_edited = pose_editor_->revision() != pose_synced_revision_;
+      say((pose_edited ? pose_editor_->undo() : timeline_->undo()) ? "undid" : "nothing to undo");
+    } else if (a == "redo") {
+      say(timeline_->redo() ? "redid" : "nothing to redo");
+    } else return false;
+    return true;
+  }
+  const bool figure_action = a.rfind("figure-", 0) == 0;
+  if (figure_action && !figure_mode_) set_figure_mode(true);
+  if (!figure_mode_) return false;
+  FigureEditor& f = *figure_;
+  const int j = fig_view_.joint;
+  const auto report = [&](bool ok, const std::string& done) { say(ok ? done : f.error()); };
+  if (a == "figure-joint") {
+    fig_view_.joint = f.skeleton().find(arg(0));
+    if (fig_view_.joint < 0) say("no joint " + arg(0));
+  } else if (a == "figure-rename") report(f.rename(j, arg(0)), "renamed to " + arg(0));
+  else if (a == "figure-add") {
+    const int added = f.add_joint(j, arg(0), vec3(number(1), number(2), number(3)));
+    report(added >= 0, "added " + arg(0));
+    if (added >= 0) fig_view_.joint = added;
+  } else if (a == "figure-remove") {
+    const int parent = j >= 0 && j < static_cast<int>(f.skeleton().size()) ? f.skeleton().parents[static_cast<std::size_t>(j)] : -1;
+    const bool ok = f.remove_joint(j);
+    report(ok, "removed the joint");
+    if (ok) fig_view_.joint = parent;
+  } else if (a == "figure-copy") {
+    const int copy = f.copy_branch(j);
+    report(copy >= 0, "copied the branch");
+    if (copy >= 0) fig_view_.joint = copy;
+  } else if (a == "figure-mirror") {
+    const int n = f.mirror_branch(j);
+    report(n >= 0, "mirrored " + std::to_string(n) + " joints");
+  } else if (a == "figure-offset") report(f.set_rest_offset(j, vec3(number(0), number(1), number(2))), "rest offset set");
+  else if (a == "figure-limits" || a == "figure-order") {
+    if (j < 0 || j >= static_cast<int>(f.skeleton().size())) return say("no joint selected"), true;
+    JointDofs d = f.skeleton().dofs[static_cast<std::size_t>(j)];
+    if (a == "figure-order") {
+      const auto order = parse_rotation_order(arg(0));
+      if (!order) return say("no rotation order " + arg(0)), true;
+      d.order = *order;
+    } else {
+      const int axis = arg(0).size() == 1 ? arg(0)[0] - 'x' : -1;
+      if (axis < 0 || axis > 2) return say("no axis " + arg(0) + " (x, y, z)"), true;
+      d.axes = static_cast<std::uint8_t>(d.axes | (1u << axis));
+      d.min_angle[axis] = glm::radians(number(1)), d.max_angle[axis] = glm::radians(number(2));
+    }
+    report(f.set_dofs(j, d), "degrees of freedom set");
+  } else if (a == "figure-dh") report(f.set_dh(j, f.dh_from_rest(j)), "Denavit-Hartenberg description from the rest offset");
+  else if (a == "figure-save") {
+    try {
+      f.save(arg(0));
+      say("saved " + arg(0) + " (BVH) and " + figure_sidecar_path(arg(0)));
+    } catch (const Error& e) {
+      say(std::string("not saved: ") + e.what());
+    }
+  } else if (a == "figure-load") say(f.load(arg(0)) ? "loaded " + arg(0) : "not loaded: " + f.error());
+  else if (a == "figure-view") fig_view_.show_body = arg(0) != "sticks", fig_view_.show_sticks = arg(0) != "body";
+  else if (a == "undo") say(f.undo() ? "undid the figure edit" : "nothing to undo");
+  else if (a == "redo") say(f.redo() ? "redid the figure edit" : "nothing to redo");
+  else return false;
+  fig_view_.message = status();
+  return true;
+}
+
+nlohmann::json Studio::dump_timeline_and_figure() {
+  nlohmann::json out;
+  nlohmann::json t{{"active", timeline_mode_}, {"duration", timeline_->duration()}, {"time", tl_view_.time},
+                   {"title", timeline_->title()}, {"can_undo", timeline_->can_undo()}, {"speed", tl_view_.speed}};
+  auto& bars = t["bars"] = nlohmann::json::array();
+  for (const TimelineBar& b : timeline_->bars()) bars.push_back({{"label", b.label}, {"kind", to_string(b.kind)}, {"duration", b.duration}});
+  auto& channels = t["channels"] = nlohmann::json::object();
+  for (const TimelineChannel& c : timeline_->channels()) {
+    auto& keys = channels[c.name] = nlohmann::json::array();
+    for (const TimelineKey& k : c.keys) keys.push_back({{"time", k.time}, {"value", k.value}, {"interpolation", to_string(k.interpolation)}});
+  }
+  out["timeline"] = t;
+  const Skeleton& s = figure_->skeleton();
+  nlohmann::json f{{"active", figure_mode_}, {"joints", s.size()}, {"file", figure_->file()}, {"can_undo", figure_->can_undo()}};
+  if (fig_view_.joint >= 0 && fig_view_.joint < static_cast<int>(s.size())) {
+    const std::size_t j = static_cast<std::size_t>(fig_view_.joint);
+    const vec3 o = s.rest_translations[j];
+    f["joint"] = {{"name", s.names[j]}, {"offset", {o.x, o.y, o.z}}, {"dofs", s.dofs[j].count()},
+                  {"parent", s.parents[j] < 0 ? std::string() : s.names[static_cast<std::size_t>(s.parents[j])]}};
+  }
+  out["figure"] = f;
+  // The IK drag: the dragged limb's end where the pose has it now, and the last target.
+  nlohmann::json ik{{"joint", pose_joint_ >= 0 ? subject_.skeleton.names[static_cast<std::size_t>(pose_joint_)] : std::string()}};
+  {
+    std::vector<mat4> model(subject_.skeleton.size());
+    pose_editor_->model(model);
+    for (const char* name : {"r_wrist", "l_wrist", "r_ankle", "l_ankle"})
+      if (const int k = subject_.skeleton.find(name); k >= 0) {
+        const vec3 p(model[static_cast<std::size_t>(k)][3]);
+        ik[name] = {p.x, p.y, p.z};
+      }
+  }
+  if (ik_limb_) {
+    std::vector<mat4> model(subject_.skeleton.size());
+    pose_editor_->model(model);
+    const vec3 end(model[static_cast<std::size_t>(ik_limb_->end)][3]);
+    ik["end_joint"] = subject_.skeleton.names[static_cast<std::size_t>(ik_limb_->end)];
+    ik["end"] = {end.x, end.y, end.z};
+    ik["target"] = {ik_target_.x, ik_target_.y, ik_target_.z};
+    ik["residual"] = ik_residual_;
+    ik["can_undo"] = pose_editor_->revision() > 0;
+  }
+  out["ik"] = ik;
+  return out;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1463,6 +2100,7 @@ void Studio::write_dump(const std::string& path) {
                      {"word", quiz_->word().gloss}};
   }
   j["learning"] = learn;
+  j.update(dump_timeline_and_figure());
   if (posing_) {
     std::vector<mat4> model(subject_.skeleton.size());
     pose_editor_->model(model);
@@ -1523,6 +2161,10 @@ int Studio::run() {
     const std::size_t syntheses = synthesis_ms_.size();
     update_preview(start);
     controls_->advance(static_cast<float>(std::chrono::duration<double>(start - last).count()), animator_->duration());
+    if (timeline_mode_) {
+      advance(tl_view_, static_cast<float>(std::chrono::duration<double>(start - last).count()), timeline_->duration());
+      sync_timeline_pose();
+    }
     last = start;
 
     int width = 0, height = 0;

@@ -226,12 +226,12 @@ TEST_F(BuiltinAse, MotherIsAnOpenFiveWithTheThumbOnTheChin_FatherOnTheForehead) 
   for (const auto& [gloss, site] : {std::pair{"MOTHER", Site::chin}, std::pair{"FATHER", Site::forehead}}) {
     const ManualSign s = sign(gloss);
     ASSERT_TRUE(s.posture.handshape.dominant) << gloss;
-    EXPECT_EQ(s.posture.handshape.dominant->form.basic, BasicHandshape::finger2345) << gloss;
-    EXPECT_EQ(s.posture.handshape.dominant->form.thumb, ThumbPosition::out) << gloss;
+    EXPECT_EQ(s.posture.handshape.dominant->form.basic, BasicHandshape::Finger2345) << gloss;
+    EXPECT_EQ(s.posture.handshape.dominant->form.thumb, ThumbModifier::Out) << gloss;
     ASSERT_TRUE(s.posture.location.dominant) << gloss;
     EXPECT_EQ(s.posture.location.dominant->site, site) << gloss;
     EXPECT_EQ(s.posture.location.dominant->proximity, Proximity::touch) << gloss;
-    EXPECT_EQ(s.posture.orientation.dominant->extended_finger, Direction::up) << gloss;
+    EXPECT_EQ(s.posture.orientation.dominant->extended_finger, Direction::U) << gloss;
     EXPECT_EQ(s.symmetry.kind, SymmetryKind::none) << gloss;  // one-handed
     EXPECT_TRUE(has_repetition(s.actions)) << gloss << ": the thumb taps twice";
   }
@@ -239,7 +239,7 @@ TEST_F(BuiltinAse, MotherIsAnOpenFiveWithTheThumbOnTheChin_FatherOnTheForehead) 
 
 TEST_F(BuiltinAse, ThankYouLeavesTheChinForwardAndDown) {
   const ManualSign s = sign("THANK-YOU");
-  EXPECT_EQ(s.posture.handshape.dominant->form.basic, BasicHandshape::flat);
+  EXPECT_EQ(s.posture.handshape.dominant->form.basic, BasicHandshape::Flat);
   EXPECT_EQ(s.posture.location.dominant->site, Site::chin);
   const Motion* m = first_motion(s.actions);
   ASSERT_NE(m, nullptr);
@@ -251,12 +251,12 @@ TEST_F(BuiltinAse, ThankYouLeavesTheChinForwardAndDown) {
 
 TEST_F(BuiltinAse, HelloIsASaluteFromTheForehead) {
   const ManualSign s = sign("HELLO");
-  EXPECT_EQ(s.posture.handshape.dominant->form.basic, BasicHandshape::flat);
+  EXPECT_EQ(s.posture.handshape.dominant->form.basic, BasicHandshape::Flat);
   EXPECT_EQ(s.posture.location.dominant->site, Site::forehead);
   EXPECT_EQ(s.posture.location.dominant->side, Side::dominant_side);
   // Fingers up (tilted toward the forehead, as in a salute) with palm "d": the palm faces away from the signer.
   EXPECT_EQ(components(*s.posture.orientation.dominant->extended_finger).vertical, 1);
-  EXPECT_EQ(s.posture.orientation.dominant->palm, Direction::down);
+  EXPECT_EQ(s.posture.orientation.dominant->palm, Direction::D);
   const Motion* m = first_motion(s.actions);
   ASSERT_TRUE(m && m->direction);
   EXPECT_EQ(components(*m->direction).sagittal, 1);  // out, away from the head
@@ -264,48 +264,48 @@ TEST_F(BuiltinAse, HelloIsASaluteFromTheForehead) {
 
 TEST_F(BuiltinAse, YesNodsAFist_NoSnapsTwoFingersOntoTheThumb) {
   const ManualSign yes = sign("YES");
-  EXPECT_EQ(yes.posture.handshape.dominant->form.basic, BasicHandshape::fist);
+  EXPECT_EQ(yes.posture.handshape.dominant->form.basic, BasicHandshape::Fist);
   EXPECT_TRUE(has_motion_kind(yes.actions, MotionKind::nodding));
   const ManualSign no = sign("NO");
-  EXPECT_EQ(no.posture.handshape.dominant->form.basic, BasicHandshape::finger23);
-  EXPECT_EQ(no.posture.handshape.dominant->form.thumb, ThumbPosition::out);
+  EXPECT_EQ(no.posture.handshape.dominant->form.basic, BasicHandshape::Finger23);
+  EXPECT_EQ(no.posture.handshape.dominant->form.thumb, ThumbModifier::Out);
   const Motion* m = first_motion(no.actions);
   ASSERT_TRUE(m && m->kind == MotionKind::replacement && m->new_handshape);
-  EXPECT_EQ(m->new_handshape->form.basic, BasicHandshape::pinch12);
+  EXPECT_EQ(m->new_handshape->form.basic, BasicHandshape::Pinch12);
 }
 
 TEST_F(BuiltinAse, PointingSignsAndTwoHandedSigns) {
   const ManualSign me = sign("IX-1");
-  EXPECT_EQ(me.posture.handshape.dominant->form.basic, BasicHandshape::finger2);
-  EXPECT_EQ(me.posture.orientation.dominant->extended_finger, Direction::in);  // at the signer
+  EXPECT_EQ(me.posture.handshape.dominant->form.basic, BasicHandshape::Finger2);
+  EXPECT_EQ(me.posture.orientation.dominant->extended_finger, Direction::I);  // at the signer
   EXPECT_EQ(me.posture.location.dominant->site, Site::chest);
-  EXPECT_EQ(sign("IX-2").posture.orientation.dominant->extended_finger, Direction::out);
+  EXPECT_EQ(sign("IX-2").posture.orientation.dominant->extended_finger, Direction::O);
   EXPECT_EQ(sign("GO").symmetry.kind, SymmetryKind::parallel);
   EXPECT_EQ(sign("WANT").symmetry.kind, SymmetryKind::mirrored_lr);
   // SCHOOL: the dominant hand claps onto a different (palm-up) non-dominant hand.
   const ManualSign school = sign("SCHOOL");
   ASSERT_TRUE(school.posture.orientation.nondominant);
-  EXPECT_EQ(school.posture.orientation.nondominant->palm, Direction::up);
-  EXPECT_EQ(school.posture.orientation.dominant->palm, Direction::down);
+  EXPECT_EQ(school.posture.orientation.nondominant->palm, Direction::U);
+  EXPECT_EQ(school.posture.orientation.dominant->palm, Direction::D);
 }
 
 TEST_F(BuiltinAse, CardinalNumbersOneToFiveFaceTheSignerSixToNineFaceOut) {
   for (int n = 1; n <= 9; ++n) {
     const ManualSign s = sign(std::to_string(n));
-    EXPECT_EQ(s.posture.orientation.dominant->extended_finger, Direction::up) << n;
+    EXPECT_EQ(s.posture.orientation.dominant->extended_finger, Direction::U) << n;
     // Fingers up: palm "u" faces the signer, palm "d" the addressee.
-    EXPECT_EQ(s.posture.orientation.dominant->palm, n <= 5 ? Direction::up : Direction::down) << n;
+    EXPECT_EQ(s.posture.orientation.dominant->palm, n <= 5 ? Direction::U : Direction::D) << n;
   }
-  EXPECT_EQ(sign("1").posture.handshape.dominant->form.basic, BasicHandshape::finger2);
-  EXPECT_EQ(sign("2").posture.handshape.dominant->form.basic, BasicHandshape::finger23spread);
-  EXPECT_EQ(sign("5").posture.handshape.dominant->form.basic, BasicHandshape::finger2345);
-  EXPECT_EQ(sign("5").posture.handshape.dominant->form.thumb, ThumbPosition::out);
-  EXPECT_NE(sign("4").posture.handshape.dominant->form.thumb, ThumbPosition::out);
+  EXPECT_EQ(sign("1").posture.handshape.dominant->form.basic, BasicHandshape::Finger2);
+  EXPECT_EQ(sign("2").posture.handshape.dominant->form.basic, BasicHandshape::Finger23Spread);
+  EXPECT_EQ(sign("5").posture.handshape.dominant->form.basic, BasicHandshape::Finger2345);
+  EXPECT_EQ(sign("5").posture.handshape.dominant->form.thumb, ThumbModifier::Out);
+  EXPECT_NE(sign("4").posture.handshape.dominant->form.thumb, ThumbModifier::Out);
   for (int n = 0; n <= 20; ++n) EXPECT_TRUE(lexicon_->find(std::to_string(n), "ase")) << n;
   for (int n = 30; n <= 100; n += 10) EXPECT_TRUE(lexicon_->find(std::to_string(n), "ase")) << n;
   // A ten ends in the O of zero.
   const ManualSign forty = sign("40");
   const Motion* m = first_motion(forty.actions);
   ASSERT_TRUE(m && m->new_handshape);
-  EXPECT_EQ(m->new_handshape->form.basic, BasicHandshape::pinchall);
+  EXPECT_EQ(m->new_handshape->form.basic, BasicHandshape::PinchAll);
 }

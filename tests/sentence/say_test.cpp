@@ -12,6 +12,7 @@
 #include "gestura/lexicon/lexicon_files.hpp"
 #include "gestura/render/subject.hpp"
 #include "gestura/sentence/signer.hpp"
+#include "gestura/sign/hand_geometry.hpp"
 #include "gestura/sign/sign_performer.hpp"
 
 namespace gestura {
@@ -239,12 +240,11 @@ TEST(ProsodyRate, GlobalSpeedScalesTheWholeUtterance) {
 }
 
 // Palm centre of each hand (model space) in the pose the animator holds.
-std::array<vec3, 2> palm_centres(const Animator& animator, const SigningRig& rig) {
-  std::array<vec3, 2> out;
-  for (int h = 0; h < 2; ++h) {
-    const HandRig& hand = rig.hands[static_cast<std::size_t>(h)];
-    out[static_cast<std::size_t>(h)] =
-        vec3(animator.model()[static_cast<std::size_t>(hand.wrist)] * vec4(hand.palm_centre_local, 1.0f));
+ByHand<vec3> palm_centres(const Animator& animator, const SigningRig& rig) {
+  ByHand<vec3> out;
+  for (Hand h : kBothHands) {
+    const HandRig& hand = rig.hand(h);
+    out[h] = vec3(animator.model()[joint_slot(hand.wrist)] * vec4(hand.palm_centre_local, 1.0f));
   }
   return out;
 }
@@ -269,8 +269,8 @@ TEST(SayMotion, CachedMotionReachesTheTargetsNearlyAsWellAsIkEveryFrame) {
     const Clip reference = perform_plan(p.plan, rig, PerformOptions{30.0f});
     const RenderSubject fast_subject{a.skeleton, a.mesh, p.clip}, reference_subject{a.skeleton, a.mesh, reference};
     Animator fast(fast_subject), slow(reference_subject);
-    for (int h = 0; h < 2; ++h) {
-      const HandTimeline& timeline = h == 0 ? p.plan.right : p.plan.left;
+    for (Hand h : kBothHands) {
+      const HandTimeline& timeline = p.plan.hand(h);
       for (const HandSegment& seg : timeline.segments) {
         for (const float t : {seg.start, seg.end}) {
           const bool in_sign = std::any_of(p.glosses.begin(), p.glosses.end(), [&](const PerformedGloss& g) {
@@ -280,8 +280,8 @@ TEST(SayMotion, CachedMotionReachesTheTargetsNearlyAsWellAsIkEveryFrame) {
           if (!in_sign || !planned.active) continue;
           fast.pose_at(t);
           slow.pose_at(t);
-          const float f = glm::distance(palm_centres(fast, rig)[static_cast<std::size_t>(h)], planned.position);
-          const float r = glm::distance(palm_centres(slow, rig)[static_cast<std::size_t>(h)], planned.position);
+          const float f = glm::distance(palm_centres(fast, rig)[h], planned.position);
+          const float r = glm::distance(palm_centres(slow, rig)[h], planned.position);
           ++instants;
           not_worse += f <= r + 0.01f ? 1 : 0;
           cached_on_plan += f <= 0.01f ? 1 : 0;
@@ -305,7 +305,7 @@ float deepest_penetration(const Clip& clip, float duration) {
   const SigningRig& rig = world().signer->rig();
   const RenderSubject subject{a.skeleton, a.mesh, clip};
   Animator animator(subject);
-  std::vector<vec3> points;
+  HandPoints points;
   float deepest = -1.0f;
   for (float t = 0.0f; t <= duration; t += 1.0f / 30.0f) {
     animator.pose_at(t);

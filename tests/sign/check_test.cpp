@@ -1,5 +1,5 @@
 // `gestura check` and the library behind it: counts, one line per failing sign, robustness to bad
-// lines, and the synthesis hook (S is counted only when something is connected).
+// lines, and the synthesis step (S is counted only when the caller passes one).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -76,7 +76,7 @@ TEST(SignCheck, MalformedSigmlAndBadArgumentsFailCleanly) {
   EXPECT_NE(r.output.find("expected .jsonl or .sigml"), std::string::npos);
 }
 
-TEST(SignCheck, SynthesisHookCountsWhenConnected) {
+TEST(SignCheck, SynthesisStepCountsWhenGiven) {
   const std::string text =
       "{\"gloss\":\"one\",\"names\":\"hamflathand,hamextfingeru,hampalml\"}\n"
       "{\"gloss\":\"two\",\"names\":\"hamsymmlr,hamfist,hamextfingero,hampalmd\"}\n";
@@ -84,12 +84,12 @@ TEST(SignCheck, SynthesisHookCountsWhenConnected) {
   EXPECT_FALSE(r.synthesis_connected);
   EXPECT_EQ(r.synthesized, 0);
   // A stand-in synthesizer that handles only one-handed signs.
-  set_synthesis_hook([](const HamSign& s, std::span<const NonManual>) -> std::optional<std::string> {
+  CheckOptions options;
+  options.synthesize = [](const HamSign& s, std::span<const NonManual>) -> std::optional<std::string> {
     if (s.main().symmetry.kind != SymmetryKind::none) return "two-handed signs not supported";
     return std::nullopt;
-  });
-  r = check_jsonl(text, "t.jsonl");
-  set_synthesis_hook({});
+  };
+  r = check_jsonl(text, "t.jsonl", options);
   EXPECT_TRUE(r.synthesis_connected);
   EXPECT_EQ(r.signs, 2);
   EXPECT_EQ(r.parsed, 2);

@@ -66,19 +66,21 @@ TEST(HamnosysSymbols, TableMatchesPublishedCodepoints) {
 }
 
 TEST(HamnosysDirections, ComponentsVectorsAndMerging) {
-  EXPECT_EQ(direction_code(Direction::up_out_left), "uol");
-  EXPECT_EQ(direction_from_code("dir"), Direction::down_in_right);
+  EXPECT_EQ(to_string(Direction::UOL), "uol");
+  EXPECT_EQ(gestura::parse_direction("dir"), Direction::DIR);
   // Avatar frame: +X is the avatar's left, +Y up, +Z forward.
-  EXPECT_EQ(direction_vector(Direction::left), glm::vec3(1, 0, 0));
-  EXPECT_EQ(direction_vector(Direction::out), glm::vec3(0, 0, 1));
-  EXPECT_EQ(direction_vector(Direction::down), glm::vec3(0, -1, 0));
-  EXPECT_EQ(merge_directions(Direction::up_out, Direction::out_left), Direction::up_out_left);
-  EXPECT_EQ(merge_directions(Direction::down_in, Direction::in_right), Direction::down_in_right);
-  EXPECT_EQ(merge_directions(Direction::up, Direction::down), std::nullopt);
-  EXPECT_EQ(merge_directions(Direction::down_out, Direction::in_right), std::nullopt);
+  EXPECT_EQ(direction_vector(Direction::L), glm::vec3(1, 0, 0));
+  EXPECT_EQ(direction_vector(Direction::O), glm::vec3(0, 0, 1));
+  EXPECT_EQ(direction_vector(Direction::D), glm::vec3(0, -1, 0));
+  EXPECT_EQ(merge_directions(Direction::UO, Direction::OL), Direction::UOL);
+  EXPECT_EQ(merge_directions(Direction::DI, Direction::IR), Direction::DIR);
+  EXPECT_EQ(merge_directions(Direction::U, Direction::D), std::nullopt);
+  EXPECT_EQ(merge_directions(Direction::DO, Direction::IR), std::nullopt);
   for (int d = 0; d < 26; ++d) {
     const auto dir = static_cast<Direction>(d);
-    EXPECT_EQ(direction_from_code(direction_code(dir)), dir);
+    EXPECT_EQ(gestura::parse_direction(to_string(dir)), dir);
+    const DirectionComponents c = components(dir);  // the model's components are the vector's axes
+    EXPECT_EQ(direction_vector(dir), glm::normalize(glm::vec3(c.lateral, c.vertical, c.sagittal)));
   }
 }
 
@@ -92,23 +94,23 @@ TEST(HamnosysParser, PillHandshapeLocationAndReplacement) {
   const ManualSign& m = sign.main();
   EXPECT_EQ(m.symmetry.kind, SymmetryKind::none);
   ASSERT_TRUE(m.posture.handshape.dominant);
-  EXPECT_EQ(m.posture.handshape.dominant->form.basic, BasicHandshape::pinch12);
-  EXPECT_EQ(m.posture.orientation.dominant->extended_finger, Direction::up_left);
-  EXPECT_EQ(m.posture.orientation.dominant->palm, Direction::left);
+  EXPECT_EQ(m.posture.handshape.dominant->form.basic, BasicHandshape::Pinch12);
+  EXPECT_EQ(m.posture.orientation.dominant->extended_finger, Direction::UL);
+  EXPECT_EQ(m.posture.orientation.dominant->palm, Direction::L);
   EXPECT_EQ(m.posture.location.dominant->site, Site::lips);
   ASSERT_EQ(m.actions.size(), 3u);
   const Element& par = m.actions[0];
   EXPECT_EQ(par.kind, ElementKind::parallel);
   ASSERT_EQ(par.children.size(), 2u);
   EXPECT_EQ(par.children[0].motion()->kind, MotionKind::straight);
-  EXPECT_EQ(par.children[0].motion()->direction, Direction::in);
+  EXPECT_EQ(par.children[0].motion()->direction, Direction::I);
   EXPECT_EQ(par.children[0].motion()->size, Size::small);
   const Motion& replace = *par.children[1].motion();
   EXPECT_EQ(replace.kind, MotionKind::replacement);
   ASSERT_TRUE(replace.new_handshape);
-  EXPECT_EQ(replace.new_handshape->form.basic, BasicHandshape::cee12);
-  EXPECT_EQ(replace.new_handshape->form.bending, FingerBending::bent);
-  EXPECT_EQ(replace.new_handshape->form.thumb, ThumbPosition::open);
+  EXPECT_EQ(replace.new_handshape->form.basic, BasicHandshape::Cee12);
+  EXPECT_EQ(replace.new_handshape->form.bending, FingerBending::Bent);
+  EXPECT_EQ(replace.new_handshape->form.thumb, ThumbModifier::Opposed);
   EXPECT_EQ(m.actions[1].contact()->proximity, Proximity::close);
   EXPECT_EQ(m.actions[2].repetition()->kind, RepetitionKind::from_start);
   EXPECT_TRUE(sign.notes.empty());
@@ -116,8 +118,8 @@ TEST(HamnosysParser, PillHandshapeLocationAndReplacement) {
 
 TEST(HamnosysParser, ThreeAxisDirectionFromTwoSymbols) {
   const HamSign sign = parse_hamnosys_names("hamfinger2,hamextfingeruo,hamextfingerol,hampalmd");
-  EXPECT_EQ(sign.main().posture.orientation.dominant->extended_finger, Direction::up_out_left);
-  EXPECT_EQ(sign.main().posture.orientation.dominant->palm, Direction::down);
+  EXPECT_EQ(sign.main().posture.orientation.dominant->extended_finger, Direction::UOL);
+  EXPECT_EQ(sign.main().posture.orientation.dominant->palm, Direction::D);
 }
 
 // DGS ARM2^-like: hands given separately, the other hand's shape left open, constellation at the
@@ -127,16 +129,16 @@ TEST(HamnosysParser, HandPairPostureAndTargetContact) {
       "hamparbegin,hamfinger2,hamextfingerol,hampalmd,hamplus,hamnondominant,hametc,hamextfingeror,hampalmd,"
       "hamparend,hamwristback,hamclose,hammoved,hamtouch");
   const Posture& p = sign.main().posture;
-  EXPECT_EQ(p.handshape.dominant->form.basic, BasicHandshape::finger2);
+  EXPECT_EQ(p.handshape.dominant->form.basic, BasicHandshape::Finger2);
   EXPECT_FALSE(p.handshape.nondominant);
   EXPECT_TRUE(p.nondominant_unspecified);
-  EXPECT_EQ(p.orientation.dominant->extended_finger, Direction::out_left);
-  EXPECT_EQ(p.orientation.nondominant->extended_finger, Direction::out_right);
+  EXPECT_EQ(p.orientation.dominant->extended_finger, Direction::OL);
+  EXPECT_EQ(p.orientation.nondominant->extended_finger, Direction::OR);
   EXPECT_EQ(p.location.dominant->site, Site::wrist_back);
   EXPECT_EQ(p.location.dominant->proximity, Proximity::close);
   ASSERT_EQ(sign.main().actions.size(), 1u);
   const Motion& move = *sign.main().actions[0].motion();
-  EXPECT_EQ(move.direction, Direction::down);
+  EXPECT_EQ(move.direction, Direction::D);
   EXPECT_EQ(move.target_contact, Proximity::touch);
 }
 
@@ -147,17 +149,17 @@ TEST(HamnosysParser, SymmetryCircleSideAndModifiers) {
   const ManualSign& m = sign.main();
   EXPECT_EQ(m.symmetry.kind, SymmetryKind::mirrored_lr);
   const HandshapeForm& hs = m.posture.handshape.dominant->form;
-  EXPECT_EQ(hs.thumb, ThumbPosition::out);
+  EXPECT_EQ(hs.thumb, ThumbModifier::Out);
   ASSERT_EQ(hs.finger_modifiers.size(), 1u);
-  EXPECT_TRUE(hs.finger_modifiers[0].fingers.contains(Finger::index));
-  EXPECT_FALSE(hs.finger_modifiers[0].fingers.contains(Finger::middle));
-  EXPECT_EQ(hs.finger_modifiers[0].bending, FingerBending::round);
+  EXPECT_TRUE(hs.finger_modifiers[0].fingers.contains(Finger::Index));
+  EXPECT_FALSE(hs.finger_modifiers[0].fingers.contains(Finger::Middle));
+  EXPECT_EQ(hs.finger_modifiers[0].bending, FingerBending::Round);
   EXPECT_EQ(m.posture.location.dominant->site, Site::chest);
   EXPECT_EQ(m.posture.location.dominant->side, Side::dominant_side);
   ASSERT_EQ(m.actions.size(), 2u);
   const Motion& circle = *m.actions[0].motion();
   EXPECT_EQ(circle.kind, MotionKind::circle);
-  EXPECT_EQ(circle.direction, Direction::in);
+  EXPECT_EQ(circle.direction, Direction::I);
   EXPECT_EQ(circle.size, Size::large);
   EXPECT_TRUE(circle.manner.fast);
   EXPECT_EQ(m.actions[1].repetition()->kind, RepetitionKind::continued_several);
@@ -169,14 +171,14 @@ TEST(HamnosysParser, FingerLocationBetweenHandshapeAndTargetedMotion) {
       "hamseqbegin,hammover,hamwavy,hamindexfinger,hamfingertip,hamtouch,hamseqend");
   const ManualSign& m = sign.main();
   ASSERT_TRUE(m.posture.handshape.dominant->between);
-  EXPECT_EQ(m.posture.handshape.dominant->between->bending, FingerBending::bent);
+  EXPECT_EQ(m.posture.handshape.dominant->between->bending, FingerBending::Bent);
   ASSERT_EQ(m.actions.size(), 1u);
   EXPECT_EQ(m.actions[0].kind, ElementKind::sequence);
   const Motion& move = *m.actions[0].children.at(0).motion();
   EXPECT_EQ(move.path, PathShape::wavy);
   ASSERT_TRUE(move.target);
   EXPECT_EQ(move.target->site, Site::fingers);
-  EXPECT_TRUE(move.target->fingers.contains(Finger::index));
+  EXPECT_TRUE(move.target->fingers.contains(Finger::Index));
   EXPECT_EQ(move.target->finger_part, FingerPart::tip);
   EXPECT_EQ(move.target_contact, Proximity::touch);
 }
@@ -202,10 +204,10 @@ TEST(HamnosysParser, SharedFingerDirectionWithPalmPerHand) {
   const HamSign sign = parse_hamnosys_names(
       "hamsymmlr,hamflathand,hamextfingerdo,hamparbegin,hampalml,hamplus,hampalmr,hamparend,hammoveo");
   const Posture& p = sign.main().posture;
-  EXPECT_EQ(p.orientation.dominant->extended_finger, Direction::down_out);
-  EXPECT_EQ(p.orientation.dominant->palm, Direction::left);
-  EXPECT_EQ(p.orientation.nondominant->extended_finger, Direction::down_out);
-  EXPECT_EQ(p.orientation.nondominant->palm, Direction::right);
+  EXPECT_EQ(p.orientation.dominant->extended_finger, Direction::DO);
+  EXPECT_EQ(p.orientation.dominant->palm, Direction::L);
+  EXPECT_EQ(p.orientation.nondominant->extended_finger, Direction::DO);
+  EXPECT_EQ(p.orientation.nondominant->palm, Direction::R);
   EXPECT_TRUE(sign.notes.empty());
 }
 
@@ -220,7 +222,7 @@ TEST(HamnosysParser, HandPartAtLocation) {
   EXPECT_EQ(loc.hand_part->finger_part, FingerPart::tip);
   EXPECT_EQ(loc.proximity, Proximity::touch);
   ASSERT_EQ(sign.main().actions.size(), 1u);
-  EXPECT_EQ(sign.main().actions[0].motion()->direction, Direction::out);
+  EXPECT_EQ(sign.main().actions[0].motion()->direction, Direction::O);
 }
 
 // DGS PROFESSION1A: after the arc, "…chin, (touch, thumb tip)" again names the part of the moving
@@ -253,7 +255,7 @@ TEST(HamnosysParser, UnicodeAndNamesGiveTheSameSymbols) {
 TEST(HamnosysParser, CompoundSegmentsAndLenientNotes) {
   const HamSign sign = parse_hamnosys_names("hamflathand,hamextfingeru,hampalml,hammoved,hamplus,hamfist,hamextfingero,hampalmd");
   ASSERT_EQ(sign.segments.size(), 2u);
-  EXPECT_EQ(sign.segments[1].posture.handshape.dominant->form.basic, BasicHandshape::fist);
+  EXPECT_EQ(sign.segments[1].posture.handshape.dominant->form.basic, BasicHandshape::Fist);
   EXPECT_EQ(sign.segments[1].first_symbol, 5);
   // A group left open at the end: lenient notes it, strict rejects it at the opening bracket.
   const std::string open = "hamflathand,hamextfingeru,hampalml,hamparbegin,hammoved,hamreplace,hamfist";

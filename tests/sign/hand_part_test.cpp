@@ -69,8 +69,8 @@ TEST(SignHandPart, PartsLieOnTheirSideOfTheHand) {
   auto part = [&](sign::Site s, std::optional<sign::FingerPart> fp = std::nullopt) {
     return *hand_part_site(rig, Hand::Right, pose, make_handshape(BasicHandshape::Flat), sign::SitePoint{s, {}, fp, sign::Side::centre});
   };
-  const HandPartSite palm = part(sign::Site::palm), back = part(sign::Site::hand_back);
-  const HandPartSite pad = part(sign::Site::fingers, sign::FingerPart::pad), nail = part(sign::Site::fingers, sign::FingerPart::nail);
+  const SurfacePoint palm = part(sign::Site::palm), back = part(sign::Site::hand_back);
+  const SurfacePoint pad = part(sign::Site::fingers, sign::FingerPart::pad), nail = part(sign::Site::fingers, sign::FingerPart::nail);
   EXPECT_LT(glm::dot(palm.normal, back.normal), -0.99f);
   EXPECT_GT(glm::dot(pad.normal, palm.normal), 0.9f);  // a straight finger's pad faces like the palm
   EXPECT_LT(glm::dot(nail.normal, palm.normal), -0.9f);

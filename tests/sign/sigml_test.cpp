@@ -39,17 +39,17 @@ TEST(Sigml, AustraliaManualAndMouthPicture) {
   EXPECT_EQ(s.symbols.front(), Symbol::flathand);
   EXPECT_EQ(s.symbol_lines.front(), 8);
   const Posture& p = s.manual.main().posture;
-  EXPECT_EQ(p.handshape.dominant->form.basic, BasicHandshape::flat);
-  EXPECT_EQ(p.orientation.dominant->extended_finger, Direction::up);
-  EXPECT_EQ(p.orientation.dominant->palm, Direction::up_left);
+  EXPECT_EQ(p.handshape.dominant->form.basic, BasicHandshape::Flat);
+  EXPECT_EQ(p.orientation.dominant->extended_finger, Direction::U);
+  EXPECT_EQ(p.orientation.dominant->palm, Direction::UL);
   EXPECT_EQ(p.location.dominant->site, Site::forehead);
   EXPECT_EQ(p.location.dominant->side, Side::beside);
   EXPECT_EQ(p.location.dominant->proximity, Proximity::close);
   const Motion& first = *s.manual.main().actions.at(0).motion();
   EXPECT_EQ(first.kind, MotionKind::replacement);
-  EXPECT_EQ(first.new_orientation->extended_finger, Direction::in_left);
-  EXPECT_EQ(first.new_orientation->extended_finger_between, Direction::up);
-  EXPECT_EQ(first.new_orientation->palm, Direction::down);
+  EXPECT_EQ(first.new_orientation->extended_finger, Direction::IL);
+  EXPECT_EQ(first.new_orientation->extended_finger_between, Direction::U);
+  EXPECT_EQ(first.new_orientation->palm, Direction::D);
 }
 
 TEST(Sigml, GesturalTableSign) {
@@ -59,16 +59,16 @@ TEST(Sigml, GesturalTableSign) {
   EXPECT_TRUE(s.gestural);
   const ManualSign& m = s.manual.main();
   EXPECT_EQ(m.symmetry.kind, SymmetryKind::mirrored_lr);
-  EXPECT_EQ(m.posture.handshape.dominant->form.basic, BasicHandshape::flat);
-  EXPECT_EQ(m.posture.handshape.dominant->form.thumb, ThumbPosition::across);
-  EXPECT_EQ(m.posture.orientation.dominant->extended_finger, Direction::out);
-  EXPECT_EQ(m.posture.orientation.dominant->palm, Direction::down);
+  EXPECT_EQ(m.posture.handshape.dominant->form.basic, BasicHandshape::Flat);
+  EXPECT_EQ(m.posture.handshape.dominant->form.thumb, ThumbModifier::Across);
+  EXPECT_EQ(m.posture.orientation.dominant->extended_finger, Direction::O);
+  EXPECT_EQ(m.posture.orientation.dominant->palm, Direction::D);
   EXPECT_EQ(m.posture.hands_contact, Proximity::touch);
   ASSERT_EQ(m.actions.size(), 3u);
-  EXPECT_EQ(m.actions[0].motion()->direction, Direction::right);
+  EXPECT_EQ(m.actions[0].motion()->direction, Direction::R);
   EXPECT_EQ(m.actions[1].motion()->kind, MotionKind::replacement);
-  EXPECT_EQ(m.actions[1].motion()->new_orientation->palm, Direction::left);
-  EXPECT_EQ(m.actions[2].motion()->direction, Direction::down);
+  EXPECT_EQ(m.actions[1].motion()->new_orientation->palm, Direction::L);
+  EXPECT_EQ(m.actions[2].motion()->direction, Direction::D);
 }
 
 TEST(Sigml, AllNonManualTiersTyped) {

@@ -11,6 +11,7 @@
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sigml.hpp"
 #include "gestura/sign/arm_reach.hpp"
+#include "gestura/sign/hand_geometry.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
 #include "support/shared_data.hpp"
 #include "support/signing_avatar.hpp"
@@ -82,7 +83,7 @@ TEST(Synthesis, TouchingSignsReachTheirSiteWithin3cm) {
   for (const Case& c : cases) {
     const SignSynthesis r = synth(c.names);
     const auto m = held_pose(r);
-    std::vector<vec3> pts;
+    HandPoints pts;
     hand_surface_points(fx().rig, Hand::Right, m, pts);
     const BodySite* site = find_site(fx().rig.sites, c.site);
     ASSERT_NE(site, nullptr) << c.site;
@@ -200,14 +201,14 @@ TEST(Synthesis, EveryIslSigmlSignIsPerformedWithinLimitsAndWithoutNaN) {
   std::printf("ISL SiGML: %d signs performed; %d with a hand more than 1 cm inside the collision body; %d off "
               "their planned key postures (IK residual over 2 cm or 25 degrees)\n", signs, deep, off);
   EXPECT_EQ(deep, 0);   // issue #5: no hand more than 1 cm inside the body (5 before the analytic swivel seed, 1 before detours)
-  EXPECT_LE(off, 22);   // ratchet: measured 22 (19 with the chin found by a fixed-height ray; 30 before hands in space took reachable places; 57 before the analytic swivel seed)
+  EXPECT_LE(off, 17);   // ratchet: measured 17 on the anatomical hands of issue 14 (the same 17 signs as the planner before the sign layer became passes); 15 on the previous avatar (22 before the planner kept the performer's hand points off the body; 19 with the chin found by a fixed-height ray; 30 before hands in space took reachable places; 57 before the analytic swivel seed)
 }
 
 TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
   // The dominant fist's little-finger side on the other hand's palm, in front of the body.
   const SignSynthesis r = synth("hamfist,hamthumboutmod,hamextfingero,hampalml,hamparbegin,hampinkyside,hamplus,hampalm,hamparend,hamtouch");
   const auto m = held_pose(r);
-  std::vector<vec3> right, left;
+  HandPoints right, left;
   hand_surface_points(fx().rig, Hand::Right, m, right);
   hand_surface_points(fx().rig, Hand::Left, m, left);
   float nearest = 1e9f;
@@ -223,11 +224,14 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 // place, 446 turned, 86 in the body.
 // A hand at the body is measured at the point where it meets the body (planned_contact) since
 // the lower face joined the collision body and its sites (chin, lips) count as at the body.
-// The anatomical hands of issue 14 (re-laid finger and thumb bones, sculpted nose) cost 33 signs
-// off place and 27 turned (393 → 426, 199 → 226): a regression, recorded in docs/avatar.md, that
-// the sign layer's planner work must win back before these come down again.
-constexpr int kMaxOffPlace = 430;   // measured 426 (393 with the previous avatar)
-constexpr int kMaxOffTurn = 230;    // measured 226 (199 with the previous avatar)
+// Since the planner plans with the performer's hand points (hand_geometry.hpp; 11 of its 16
+// before): 393 off place, 199 turned; measured 341 and 182 on the previous avatar.
+// The anatomical hands of issue 14 (re-laid finger and thumb bones, sculpted nose) measured 426
+// off place and 226 turned with the planner of the time, 409 and 227 with the sign layer as
+// passes (a flat hand's contact found among the hand's ends, hands settling in space staying
+// there).
+constexpr int kMaxOffPlace = 410;   // measured 409
+constexpr int kMaxOffTurn = 228;    // measured 227
 
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits, no hand more
 // than 1 cm inside the collision body (issue #5; 140 signs did before the analytic swivel seed,

@@ -1,7 +1,7 @@
 #include "gestura/app/avatar_choice.hpp"
 
 #include "gestura/body/avatar_look.hpp"
-#include "gestura/body/avatar_source.hpp"
+#include "gestura/io/avatar_source.hpp"
 
 namespace gestura::app {
 

@@ -10,7 +10,7 @@
 namespace gestura::app {
 
 struct AvatarChoice {
-  std::string avatar = "default";  // default | a built-in look | makehuman:DIR | FILE.vrm/.glb/.gltf (body/avatar_source.hpp)
+  std::string avatar = "default";  // default | a built-in look | makehuman:DIR | FILE.vrm/.glb/.gltf (io/avatar_source.hpp)
   AvatarParams params;
   SkinWeightMethod weights = SkinWeightMethod::FieldDiffused;
 

@@ -1,6 +1,10 @@
 #include "gestura/app/check.hpp"
 
+#include <optional>
+
+#include "gestura/app/avatar_choice.hpp"
 #include "gestura/app/input_file.hpp"
+#include "gestura/app/workspace.hpp"
 #include "gestura/core/file_extension.hpp"
 #include "gestura/sign/sigml.hpp"
 #include "gestura/sign/sign_synthesis.hpp"
@@ -14,7 +18,7 @@ void validate(const CheckRequest& request) {
     usage_error("file", request.file + ": unknown file type: expected .jsonl or .sigml");
 }
 
-CheckResult run(const CheckRequest& request, const RunContext&) {
+CheckResult run(const CheckRequest& request, const RunContext& context) {
   validate(request);
   require_file("file", request.file);
   const std::string text = sign::read_text_file(request.file);
@@ -28,8 +32,12 @@ CheckResult run(const CheckRequest& request, const RunContext&) {
   options.max_failures = request.max_errors;
   CheckResult result;
   result.synthesized = !request.parse_only;
-  if (result.synthesized) connect_synthesis_to_check();
-  else sign::set_synthesis_hook({});
+  // Synthesis on the default avatar's rig, built once for the whole file (or the workspace's).
+  std::optional<RunWorkspace> workspace;
+  if (result.synthesized) {
+    workspace.emplace(context);
+    options.synthesize = synthesis_check((*workspace)->rig(AvatarChoice{}));
+  }
   result.report = has_extension(request.file, ".jsonl") ? sign::check_jsonl(text, request.file, options)
                                                         : sign::check_sigml(text, request.file, options);
   return result;

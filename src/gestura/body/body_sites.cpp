@@ -309,6 +309,10 @@ vec3 site_normal(const BodySite& site, std::span<const mat4> model) {
   return glm::normalize(vec3(model[static_cast<std::size_t>(site.joint)] * vec4(site.local_normal, 0.0f)));
 }
 
+SurfacePoint site_surface(const BodySite& site, std::span<const mat4> model) {
+  return {site_position(site, model), site_normal(site, model)};
+}
+
 std::string body_sites_json(const Skeleton& skeleton, std::span<const BodySite> sites) {
   std::vector<mat4> model(skeleton.size());
   local_to_model(skeleton, rest_pose(skeleton), model);

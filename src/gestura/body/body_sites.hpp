@@ -30,9 +30,17 @@ std::vector<BodySite> find_body_sites(const Skeleton& skeleton, const Mesh& mesh
 
 const BodySite* find_site(std::span<const BodySite> sites, const std::string& name);
 
+// A point on a surface and the direction the surface faces there (outward): where a hand meets a
+// body site, a part of the other hand or a part of itself.
+struct SurfacePoint {
+  vec3 point{0.0f};
+  vec3 normal{0.0f, 0.0f, 1.0f};
+};
+
 // Model-space position / normal of a site for joint model matrices `model` (from local_to_model).
 vec3 site_position(const BodySite& site, std::span<const mat4> model);
 vec3 site_normal(const BodySite& site, std::span<const mat4> model);
+SurfacePoint site_surface(const BodySite& site, std::span<const mat4> model);
 
 // The sites at bind pose as JSON: {"sites": {"forehead": {"position": [x, y, z], "normal": [...],
 // "joint": "skullbase"}, …}} in metres, +Y up, the avatar facing +Z.

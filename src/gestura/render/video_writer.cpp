@@ -163,6 +163,9 @@ VideoWriter::VideoWriter(const std::string& path, int width, int height, int fps
     av_opt_set(s.codec->priv_data, "row-mt", "1", 0);
     av_opt_set(s.codec->priv_data, "crf", "32", 0);
   }
+  // The WebM muxer otherwise writes a random segment UID: the same request would give different bytes
+  // (render workers sharing jobs check their videos against a one-process render byte for byte).
+  if (s.format == VideoFormat::WebM) s.container->flags |= AVFMT_FLAG_BITEXACT;
   if (s.container->oformat->flags & AVFMT_GLOBALHEADER) s.codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   rc = avcodec_open2(s.codec, codec, nullptr);
   if (rc < 0) s.fail(std::string("cannot open the ") + encoder + " encoder", rc);

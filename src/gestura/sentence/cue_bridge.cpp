@@ -32,7 +32,7 @@ void bridge_arms(Clip& clip, const Skeleton& skeleton, float from, float to, flo
   if (!std::isfinite(from) || !std::isfinite(to) || !(from < to)) throw Error("bridge: needs a finite interval with from < to");
   const int steps = std::max(2, static_cast<int>(std::ceil((to - from) * fps)));
   for (int j : arm_joints(skeleton)) {
-    QuatTrack& track = clip.rotations[static_cast<std::size_t>(j)];
+    QuatTrack& track = clip.rotations[joint_slot(j)];
     if (track.size() == 0) continue;
     const quat a = sample_track(track, from), b = sample_track(track, to);
     QuatTrack bridged;

@@ -13,8 +13,10 @@
 #include "gestura/face/face_channels.hpp"
 #include "gestura/sign/fingerspelling_asl.hpp"
 #include "gestura/sign/fingerspelling_bsl.hpp"
+#include "gestura/sign/hand_geometry.hpp"
 #include "gestura/sign/movement_timing.hpp"
 #include "gestura/sign/sign_performer.hpp"
+#include "gestura/sign/two_hand_timeline.hpp"
 
 namespace gestura {
 
@@ -45,31 +47,21 @@ struct HandParts {
 };
 
 HandParts parts_of(const SigningRig& rig, Hand hand, const HandState& s, Pose& scratch) {
-  const HandRig& hr = rig.hand(hand);
-  apply_hand_posture(rig, hand, s.shape, scratch);
-  clamp_to_limits(rig.skeleton(), scratch);  // as the performer will
-  const HandGeometry g = hand_geometry(rig, hand, scratch);
-  const quat wrist = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), s.orientation}, hr.rest_frame.rotation,
-                                        hr.rest_wrist_rotation);
+  const HandPoints points = planned_hand_points(rig, hand, s, scratch);
   HandParts p;
-  for (std::size_t f = 0; f < 5; ++f) p.tips[f] = wrist * (g.tips[f] - g.palm_centre);
-  for (std::size_t f = 0; f < 4; ++f) p.knuckles[f] = wrist * (g.knuckles[f] - g.palm_centre);
+  std::copy_n(points.begin() + kTipPoints, 5, p.tips.begin());
+  std::copy_n(points.begin() + kKnucklePoints, 4, p.knuckles.begin());
   p.finger = s.orientation * vec3(0, 1, 0);
   p.palm = s.orientation * vec3(0, 0, 1);
   p.thumb_side = hand_frame_from_vectors(p.finger, p.palm, hand).thumb_side;
   p.half_width = 0.5f * glm::length(p.knuckles[0] - p.knuckles[3]) + 0.01f;
-  p.half_thickness = hr.palm_half_thickness;
+  p.half_thickness = rig.hand(hand).palm_half_thickness;
   return p;
 }
 
 // A contact site on the non-dominant hand: the point (relative to its palm centre) and the side
 // the dominant hand comes from.
-struct Site {
-  vec3 point{0.0f};
-  vec3 normal{0.0f, 0.0f, -1.0f};
-};
-
-Site site_on(const HandParts& n, BslContactSite site) {
+SurfacePoint site_on(const HandParts& n, BslContactSite site) {
   const vec3 middle_of_index = 0.5f * (n.knuckles[0] + n.tips[1]);
   switch (site) {
     case BslContactSite::None: break;
@@ -89,7 +81,7 @@ Site site_on(const HandParts& n, BslContactSite site) {
     case BslContactSite::LittleFinger: return {n.tips[4], n.finger};
     case BslContactSite::Fingers: return {n.finger * 0.06f, n.palm};
   }
-  return {};
+  return {vec3(0.0f), vec3(0.0f, 0.0f, -1.0f)};  // no site: the dominant hand comes from in front
 }
 
 // The point of the dominant hand that makes the contact, relative to its palm centre.
@@ -112,8 +104,8 @@ vec3 part_of(const HandParts& d, BslDominantPart part) {
 // What the two hands do for one letter: the configuration formed, the dominant hand's own
 // movement after it (J, Z, BSL H and J), and where a doubled letter's bounce goes.
 struct LetterPose {
-  std::array<HandState, 2> formed;  // [0] dominant (right), [1] non-dominant (left)
-  std::array<HandState, 2> after;   // after the letter's movement (= formed without one)
+  ByHand<HandState> formed;  // dominant (right), non-dominant (left)
+  ByHand<HandState> after;   // after the letter's movement (= formed without one)
   std::optional<MovementPath> movement;
   vec3 bounce{0.0f};                // displacement at the bottom of a bounce
 };
@@ -122,7 +114,7 @@ class LetterPoser {
  public:
   LetterPoser(const SigningRig& rig) : rig_(rig), scratch_(rig.rest) {
     const int shoulder = rig.hand(Hand::Right).shoulder;
-    asl_origin_ = vec3(rig.bind_model[static_cast<std::size_t>(shoulder)][3]) + kAslSpellingOffset;
+    asl_origin_ = joint_position(rig.bind_model, shoulder) + kAslSpellingOffset;
     const BodySite* chest = find_site(rig.sites, "chest");
     const vec3 chest_point = chest ? site_position(*chest, rig.bind_model) : vec3(0.0f, 1.25f, 0.12f);
     bsl_base_ = chest_point + kBslBaseOffset;
@@ -137,18 +129,18 @@ class LetterPoser {
   LetterPose asl(const LetterTarget& target) const {
     const AslLetter& letter = *find_asl_letter(target.letter);
     LetterPose p;
-    HandState& s = p.formed[0];
+    HandState& s = p.formed[Hand::Right];
     s.position = asl_origin_ + target.offset;
     s.orientation = letter_frame(letter, Hand::Right).rotation;
     s.shape = asl_handshape(letter.handshape);
     s.active = true;
-    p.formed[1] = rest_hand_state(rig_, Hand::Left);
+    p.formed[Hand::Left] = rest_hand_state(rig_, Hand::Left);
     p.after = p.formed;
     p.movement = letter_movement(letter, Hand::Right);
     if (p.movement) {
-      p.after[0].position += path_end(*p.movement);
+      p.after[Hand::Right].position += path_end(*p.movement);
       if (letter.end_palm)
-        p.after[0].orientation =
+        p.after[Hand::Right].orientation =
             hand_frame_from_vectors(direction_vector(letter.finger), direction_vector(*letter.end_palm), Hand::Right)
                 .rotation;
     }
@@ -160,7 +152,7 @@ class LetterPoser {
     const BslLetter& letter = *find_bsl_letter(target.letter);
     LetterPose p;
     const quat present = glm::angleAxis(glm::radians(kBslPresentDegrees), vec3(0.0f, 1.0f, 0.0f));
-    HandState& d = p.formed[0];
+    HandState& d = p.formed[Hand::Right];
     // The dominant hand turns with the base to lay itself on the base's palm; pointing at a
     // fingertip or an edge it turns the other way, forward into the presented hand (turned with the
     // base, a pointing hand had to reach round with its elbow out at shoulder height).
@@ -169,13 +161,13 @@ class LetterPoser {
     else d.orientation = glm::inverse(present) * d.orientation;
     d.shape = letter.dominant.posture;
     d.active = true;
-    HandState& n = p.formed[1];
+    HandState& n = p.formed[Hand::Left];
     if (const std::optional<HandFrame> frame = non_dominant_frame(letter, Hand::Right)) {
       n.position = bsl_base_;
       n.orientation = present * frame->rotation;
       n.shape = letter.non_dominant->posture;
       n.active = true;
-      const Site site = site_on(parts_of(rig_, Hand::Left, n, scratch_), letter.site);
+      const SurfacePoint site = site_on(parts_of(rig_, Hand::Left, n, scratch_), letter.site);
       const vec3 part = part_of(parts_of(rig_, Hand::Right, d, scratch_), letter.part);
       d.position = n.position + site.point + site.normal * kContactGap - part;
       p.bounce = site.normal * kBslTapLift;
@@ -188,7 +180,7 @@ class LetterPoser {
     p.after = p.formed;
     if (letter.movement) {
       p.movement = letter.movement;
-      p.after[0].position += path_end(*letter.movement);
+      p.after[Hand::Right].position += path_end(*letter.movement);
     }
     return p;
   }
@@ -206,17 +198,6 @@ Movement timed(const MovementPath& path, float duration) {
   return m;
 }
 
-void push(HandTimeline& timeline, const HandState& from, const HandState& to, float t0, float t1,
-          std::vector<Movement> paths = {}) {
-  HandSegment seg;
-  seg.start = t0;
-  seg.end = t1;
-  seg.from = from;
-  seg.to = to;
-  seg.paths = std::move(paths);
-  timeline.segments.push_back(std::move(seg));
-}
-
 void check_speed(float speed) {
   if (!(speed >= 0.25f && speed <= 4.0f)) throw Error("fingerspelling speed " + std::to_string(speed) + " is outside 0.25–4");
 }
@@ -230,51 +211,56 @@ SpelledHands spell_with_hands(const SpellingPlan& plan, const SigningRig& rig, f
   auto clock = [&](float t) { return std::max(0.0f, (t - origin) / speed); };
 
   SpelledHands out;
-  std::array<HandTimeline*, 2> timeline{&out.right, &out.left};
   LetterPoser poser(rig);
-  std::array<HandState, 2> state{};
-  float now = 0.0f;
+  // Time 0 is the first letter formed: the timeline starts there.
+  const LetterPose first = poser.pose(plan.alphabet, plan.letters.front(), rest_hand_state(rig, Hand::Left));
+  TwoHandTimeline timeline(first.formed);
   for (std::size_t k = 0; k < plan.letters.size(); ++k) {
     const LetterTarget& target = plan.letters[k];
-    const HandState previous_left = k == 0 ? rest_hand_state(rig, Hand::Left) : state[1];
-    const LetterPose pose = poser.pose(plan.alphabet, target, previous_left);
+    const LetterPose pose = k == 0 ? first : poser.pose(plan.alphabet, target, timeline.state(Hand::Left));
     LetterTarget timed_target = target;
-    if (k == 0) {
-      state = pose.formed;
-      timed_target.start = 0.0f;
-    } else {
+    timed_target.start = 0.0f;
+    if (k > 0) {
       // The pause between words: the last letter is held.
-      const float transition_start = std::max(now, clock(target.start));
-      if (transition_start > now)
-        for (int h = 0; h < 2; ++h) push(*timeline[h], state[h], state[h], now, transition_start);
+      const float transition_start = std::max(timeline.now(), clock(target.start));
+      for (Hand h : kBothHands) timeline.hold_until(h, transition_start);
       const float reached = std::max(transition_start + 1e-3f, clock(target.reached));
-      for (int h = 0; h < 2; ++h) {
-        std::vector<Movement> bounce;
-        if (h == 0 && target.doubled == DoubleMark::Bounce)
-          bounce.push_back(timed(polyline_path({vec3(0.0f), pose.bounce, vec3(0.0f)}, true), reached - transition_start));
-        push(*timeline[h], state[h], pose.formed[h], transition_start, reached, std::move(bounce));
+      for (Hand h : kBothHands) {
+        HandSegment to_letter;
+        to_letter.from = timeline.state(h);
+        to_letter.to = pose.formed[h];
+        to_letter.end = reached - transition_start;
+        if (h == Hand::Right && target.doubled == DoubleMark::Bounce)
+          to_letter.paths.push_back(timed(polyline_path({vec3(0.0f), pose.bounce, vec3(0.0f)}, true), to_letter.end));
+        timeline.append(h, std::move(to_letter));
       }
-      state = pose.formed;
-      now = reached;
       timed_target.start = transition_start;
     }
-    timed_target.reached = now;
+    timed_target.reached = timeline.now();
     if (pose.movement) {
-      const float moved = std::max(now + 1e-3f, clock(target.movement_end));
-      push(*timeline[0], state[0], pose.after[0], now, moved, {timed(*pose.movement, moved - now)});
-      push(*timeline[1], state[1], pose.after[1], now, moved);
-      state = pose.after;
-      now = moved;
+      const float moved = std::max(timeline.now() + 1e-3f, clock(target.movement_end));
+      HandSegment traced;
+      traced.from = timeline.state(Hand::Right);
+      traced.to = pose.after[Hand::Right];
+      traced.end = moved - timeline.now();
+      traced.paths.push_back(timed(*pose.movement, traced.end));
+      timeline.append(Hand::Right, std::move(traced));
+      timeline.move_to(Hand::Left, pose.after[Hand::Left], moved - timeline.clock(Hand::Left));
     }
-    timed_target.movement_end = now;
-    const float end = std::max(now, clock(target.end));
-    if (end > now || k + 1 == plan.letters.size())
-      for (int h = 0; h < 2; ++h) push(*timeline[h], state[h], state[h], now, std::max(end, now + 1e-3f));
-    now = std::max(end, now + (k + 1 == plan.letters.size() ? 1e-3f : 0.0f));
-    timed_target.end = now;
+    timed_target.movement_end = timeline.now();
+    const bool last = k + 1 == plan.letters.size();
+    const float end = std::max(timeline.now(), clock(target.end));
+    if (end > timeline.now() || last) {
+      const float held = std::max(end, timeline.now() + 1e-3f);
+      for (Hand h : kBothHands) timeline.hold_until(h, held);
+    }
+    timed_target.end = timeline.now();
     out.letters.push_back(timed_target);
   }
-  out.duration = now;
+  out.duration = timeline.now();
+  SignPlan hands = timeline.finish(0.0f, out.duration);
+  out.right = std::move(hands.right);
+  out.left = std::move(hands.left);
   return out;
 }
 
@@ -283,32 +269,20 @@ FingerspellingPerformance perform_fingerspelling(const SpellingPlan& plan, const
   check_speed(options.speed);
   if (!(options.fps >= 1.0f && options.fps <= 240.0f)) throw Error("fps " + std::to_string(options.fps) + " is outside 1–240");
   const SpelledHands hands = spell_with_hands(plan, rig, options.speed);
-  const std::array<const HandTimeline*, 2> spelled{&hands.right, &hands.left};
-  std::array<HandState, 2> rest{rest_hand_state(rig, Hand::Right), rest_hand_state(rig, Hand::Left)};
+  const ByHand<HandState> rest{{rest_hand_state(rig, Hand::Right), rest_hand_state(rig, Hand::Left)}};
 
   // Approach from rest and return to rest as a single sign's would (sign_planner), both hands
   // together, as long as the longer path needs.
-  auto travel = [&](const HandState& a, const HandState& b) {
-    return (transition_duration(glm::distance(a.position, b.position)) + 0.1f) / options.speed;
-  };
   float approach = 0.0f, back = 0.0f;
-  for (int h = 0; h < 2; ++h) {
-    approach = std::max(approach, travel(rest[h], spelled[h]->segments.front().from));
-    back = std::max(back, travel(spelled[h]->final_state(), rest[h]));
+  for (Hand h : kBothHands) {
+    approach = std::max(approach, transition_time(rest[h], hands.first(h), options.speed));
+    back = std::max(back, transition_time(hands.hand(h).final_state(), rest[h], options.speed));
   }
-  SignPlan motion;
-  std::array<HandTimeline*, 2> out{&motion.right, &motion.left};
-  for (int h = 0; h < 2; ++h) {
-    push(*out[h], rest[h], spelled[h]->segments.front().from, 0.0f, approach);
-    for (HandSegment seg : spelled[h]->segments) {
-      seg.start += approach;
-      seg.end += approach;
-      out[h]->segments.push_back(std::move(seg));
-    }
-    push(*out[h], spelled[h]->final_state(), rest[h], approach + hands.duration, approach + hands.duration + back);
-  }
-  motion.sign_start = approach;
-  motion.sign_end = approach + hands.duration;
+  TwoHandTimeline timeline(rest);
+  timeline.move_both_to(ByHand<HandState>{{hands.first(Hand::Right), hands.first(Hand::Left)}}, approach);
+  for (Hand h : kBothHands) timeline.append_shifted(h, hands.hand(h), approach);
+  timeline.move_both_to(rest, back);
+  const SignPlan motion = timeline.finish(approach, approach + hands.duration);
 
   FingerspellingPerformance result;
   result.clip = perform_plan(motion, rig, PerformOptions{options.fps});

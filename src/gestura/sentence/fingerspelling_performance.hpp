@@ -35,7 +35,8 @@ struct SpelledHands {
   std::vector<LetterTarget> letters;  // the plan's letters with times on this clock
   float duration = 0.0f;              // end of the last letter's hold
 
-  const HandState& first(Hand hand) const { return (hand == Hand::Right ? right : left).segments.front().from; }
+  const HandTimeline& hand(Hand h) const { return h == Hand::Right ? right : left; }
+  const HandState& first(Hand h) const { return hand(h).segments.front().from; }
 };
 
 // Contract: rig built for the avatar that will perform. Throws gestura::Error for an empty plan or

@@ -8,6 +8,7 @@
 #include "gestura/sign/hand_solver.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sign_performer.hpp"
+#include "gestura/sign/two_hand_timeline.hpp"
 
 namespace gestura {
 
@@ -23,20 +24,6 @@ constexpr float kCitationRate = 40.0f;
 constexpr float kPlanTolerance = 0.01f;
 // Seconds of the approach from the relaxed posture a sign is performed with before its first posture.
 constexpr float kApproachSeconds = 0.4f;
-
-int side_of(Hand hand) { return hand == Hand::Right ? 0 : 1; }
-
-// The plan of a timeline from `start` on, shifted so that `start` becomes time 0.
-void shift_to_start(HandTimeline& timeline, float start) {
-  std::vector<HandSegment> kept;
-  for (HandSegment& seg : timeline.segments) {
-    if (seg.end <= start) continue;  // the approach from rest
-    seg.start = std::max(seg.start, start) - start;
-    seg.end -= start;
-    kept.push_back(std::move(seg));
-  }
-  timeline.segments = std::move(kept);
-}
 
 void append(std::string& key, float v) {
   char bytes[sizeof(float)];
@@ -67,23 +54,9 @@ std::vector<int> hand_motion_joints(const SigningRig& rig, Hand hand) {
   return joints;
 }
 
-HandState relaxed_hand_state(const SigningRig& rig, Hand hand) {
-  std::vector<mat4> model(rig.skeleton().size());
-  local_to_model(rig.skeleton(), rig.neutral, model);
-  const HandRig& h = rig.hand(hand);
-  const mat4& wrist = model[static_cast<std::size_t>(h.wrist)];
-  HandState s = rest_hand_state(rig, hand);
-  s.position = vec3(wrist * vec4(h.palm_centre_local, 1.0f));
-  // The hand frame turns with the wrist from its bind-pose relation.
-  s.orientation = glm::normalize(glm::quat_cast(mat3(wrist)) * glm::inverse(h.rest_wrist_rotation) * h.rest_frame.rotation);
-  s.active = true;
-  return s;
-}
-
 void CitationMotion::sample(Hand hand, float t, std::span<quat> out) const {
-  const int side = side_of(hand);
-  const std::size_t n = joints[static_cast<std::size_t>(side)];
-  const std::vector<quat>& s = samples[static_cast<std::size_t>(side)];
+  const std::size_t n = joints[hand];
+  const std::vector<quat>& s = samples[hand];
   // perform_plan keys at least two frames.
   const float f = std::clamp((first_posture + t) * rate, first_posture * rate, static_cast<float>(frames - 1));
   const auto i = static_cast<std::size_t>(std::min(static_cast<int>(f), frames - 2));
@@ -94,49 +67,38 @@ void CitationMotion::sample(Hand hand, float t, std::span<quat> out) const {
 }
 
 SignMotionCache::SignMotionCache(const SigningRig& rig) : rig_(&rig) {
-  joints_[0] = hand_motion_joints(rig, Hand::Right);
-  joints_[1] = hand_motion_joints(rig, Hand::Left);
+  for (Hand hand : kBothHands) joints_[hand] = hand_motion_joints(rig, hand);
 }
 
-SignPlan SignMotionCache::approached_from_relaxed(const SignPlan& plan) const {
-  // Each hand the sign uses first moves from its relaxed posture to the sign's first posture
-  // (replacing the planner's instant entry from rest).
-  SignPlan out = plan;
-  for (int side = 0; side < 2; ++side) {
-    HandTimeline& timeline = side == 0 ? out.right : out.left;
-    shift_to_start(timeline, plan.sign_start);
-    if (timeline.segments.empty()) continue;
-    for (HandSegment& seg : timeline.segments) seg.start += kApproachSeconds, seg.end += kApproachSeconds;
-    HandSegment approach;
-    approach.end = kApproachSeconds;
-    approach.to = timeline.segments.front().from;
-    approach.from = approach.to.active ? relaxed_hand_state(*rig_, side == 0 ? Hand::Right : Hand::Left) : approach.to;
-    timeline.segments.insert(timeline.segments.begin(), approach);
+SignPlan SignMotionCache::approached_from_relaxed(const SignPlan& citation) const {
+  // Each hand the sign uses first moves from its relaxed posture to the sign's first posture.
+  ByHand<HandState> first, start;
+  for (Hand hand : kBothHands) {
+    first[hand] = citation.hand(hand).segments.front().from;
+    start[hand] = first[hand].active ? relaxed_hand_state(*rig_, hand) : first[hand];
   }
-  out.sign_start = kApproachSeconds;
-  out.sign_end = plan.sign_end - plan.sign_start + kApproachSeconds;
-  return out;
+  TwoHandTimeline timeline(start);
+  for (Hand hand : kBothHands) timeline.move_to(hand, first[hand], kApproachSeconds);
+  for (Hand hand : kBothHands) timeline.append_shifted(hand, citation.hand(hand), kApproachSeconds);
+  return timeline.finish(kApproachSeconds + citation.sign_start, kApproachSeconds + citation.sign_end);
 }
 
-std::unique_ptr<CitationMotion> SignMotionCache::perform_citation(SignPlan plan) const {
+std::unique_ptr<CitationMotion> SignMotionCache::perform_citation(const SignPlan& citation, Start start) const {
+  const SignPlan performed = start == Start::FromRelaxed ? approached_from_relaxed(citation) : citation;
+  const Clip clip = perform_plan(performed, *rig_, PerformOptions{kCitationRate});
   auto motion = std::make_unique<CitationMotion>();
-  const Clip clip = perform_plan(plan, *rig_, PerformOptions{kCitationRate});
-  motion->first_posture = plan.sign_start;
-  shift_to_start(plan.right, plan.sign_start);
-  shift_to_start(plan.left, plan.sign_start);
-  plan.sign_end -= plan.sign_start;
-  plan.sign_start = 0.0f;
-  motion->plan = std::move(plan);
+  motion->plan = citation;
+  motion->first_posture = performed.sign_start;
   motion->rate = kCitationRate;
-  for (int side = 0; side < 2; ++side) {
-    const std::vector<int>& joints = joints_[static_cast<std::size_t>(side)];
-    const std::size_t frames = clip.rotations[static_cast<std::size_t>(joints.front())].size();
+  for (Hand hand : kBothHands) {
+    const std::vector<int>& joints = this->joints(hand);
+    const std::size_t frames = clip.rotations[joint_slot(joints.front())].size();
     motion->frames = static_cast<int>(frames);
-    motion->joints[static_cast<std::size_t>(side)] = joints.size();
-    std::vector<quat>& out = motion->samples[static_cast<std::size_t>(side)];
+    motion->joints[hand] = joints.size();
+    std::vector<quat>& out = motion->samples[hand];
     out.resize(frames * joints.size());
     for (std::size_t j = 0; j < joints.size(); ++j) {
-      const QuatTrack& track = clip.rotations[static_cast<std::size_t>(joints[j])];
+      const QuatTrack& track = clip.rotations[joint_slot(joints[j])];
       for (std::size_t f = 0; f < frames; ++f) out[f * joints.size() + j] = track.values[f];
     }
   }
@@ -151,19 +113,18 @@ float SignMotionCache::plan_error(const CitationMotion& motion) const {
   std::vector<quat> posture;
   float worst = 0.0f;
   for (float t = 0.0f; t <= motion.movement() + 0.5f / motion.rate; t += 1.0f / motion.rate) {
-    for (int side = 0; side < 2; ++side) {
-      const Hand hand = side == 0 ? Hand::Right : Hand::Left;
-      const HandTimeline& timeline = side == 0 ? motion.plan.right : motion.plan.left;
+    for (Hand hand : kBothHands) {
+      const HandTimeline& timeline = motion.plan.hand(hand);
       if (timeline.segments.empty()) continue;
       const HandState planned = sample_hand(timeline, t);
       if (!planned.active) continue;
       const std::vector<int>& joints = this->joints(hand);
       posture.resize(joints.size());
       motion.sample(hand, t, posture);
-      for (std::size_t j = 0; j < joints.size(); ++j) pose.rotations[static_cast<std::size_t>(joints[j])] = posture[j];
+      for (std::size_t j = 0; j < joints.size(); ++j) pose.rotations[joint_slot(joints[j])] = posture[j];
       local_to_model(skeleton, pose, model);
       const HandRig& h = rig_->hand(hand);
-      const vec3 palm = vec3(model[static_cast<std::size_t>(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
+      const vec3 palm = vec3(model[joint_slot(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
       worst = std::max(worst, glm::distance(palm, planned.position));
     }
   }
@@ -182,45 +143,35 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
   }
   // Computed outside the lock: two threads may both compute a new sign; the first stored wins.
-  // The solver's result depends on where it starts from. The sign is performed approached from the
-  // relaxed signing posture in front (as in running signing, where the hands arrive from the
-  // signing space — starting at the first posture itself, the solver may end in another arm
-  // configuration, e.g. the hand behind the head for SLEEP); if a palm strays more than 1 cm from
-  // the plan, it is performed again started cold at its first posture, which is kept only if it is
-  // closer to the plan by more than 1 cm.
-  const sign::HamSign parsed = sign::parse_hamnosys_unicode(notation);
-  PlanOptions options;
-  options.from_rest = false;
-  options.to_rest = false;
-  options.initial_hold = 0.0f;
-  options.final_hold = 0.0f;
-  const SignPlan plan = plan_sign(parsed, *rig_, options);
-  std::unique_ptr<CitationMotion> motion = perform_citation(approached_from_relaxed(plan));
+  // The citation form is stored as the planner makes it. The arm the solver finds depends on where
+  // it starts: arriving from the relaxed posture in front, as in running signing, it keeps the
+  // elbows low (started at the first posture, STORE comes out with both elbows at shoulder
+  // height). Continuing from there, it can also get stuck with a hand centimetres off its plan
+  // (14 of the 416 ASL signs, by 1–17 cm): a sign whose palm strays more than 1 cm is performed
+  // from its first posture as well, and that one kept if it is closer to the plan by over 1 cm.
+  const SignPlan citation = plan_citation(sign::parse_hamnosys_unicode(notation), *rig_, ScheduleOptions{1.0f, 0.0f, 0.0f});
+  std::unique_ptr<CitationMotion> motion = perform_citation(citation, Start::FromRelaxed);
   const float error = plan_error(*motion);
   if (error > kPlanTolerance) {
-    SignPlan at_first_posture = plan;  // without the planner's instant entry from rest
-    shift_to_start(at_first_posture.right, plan.sign_start);
-    shift_to_start(at_first_posture.left, plan.sign_start);
-    at_first_posture.sign_end -= plan.sign_start;
-    at_first_posture.sign_start = 0.0f;
-    auto cold = perform_citation(std::move(at_first_posture));
-    if (plan_error(*cold) < error - kPlanTolerance) motion = std::move(cold);
+    auto at_first_posture = perform_citation(citation, Start::AtFirstPosture);
+    if (plan_error(*at_first_posture) < error - kPlanTolerance) motion = std::move(at_first_posture);
   }
   std::lock_guard lock(mutex_);
   return *signs_.emplace(key, std::move(motion)).first->second;
 }
 
 HandJointPosture SignMotionCache::solve(Hand hand, const HandState& state) const {
-  // A plan that holds the state for an instant, performed like any sign (IK, joint limits, the
-  // hand kept out of the body); the other hand rests.
-  SignPlan plan;
-  HandSegment hold;
-  hold.from = hold.to = state;
-  (hand == Hand::Right ? plan.right : plan.left).segments.push_back(hold);
-  const Clip clip = perform_plan(plan, *rig_, PerformOptions{});
+  // Solved from the relaxed posture with nothing before it, as the first frame of a performance
+  // is (the other hand plays no part).
+  Pose pose = rig_->neutral;
+  std::vector<mat4> model(rig_->skeleton().size());
+  HandPoints points;
+  HandSolverState solver(rig_->hand(hand).arm);
+  pose_hand(*rig_, hand, state, PerformOptions{}.body_margin, true, solver, pose, model, points);
+  clamp_to_limits(rig_->skeleton(), pose);
   const std::vector<int>& joints = this->joints(hand);
   HandJointPosture out(joints.size());
-  for (std::size_t j = 0; j < joints.size(); ++j) out[j] = clip.rotations[static_cast<std::size_t>(joints[j])].values.front();
+  for (std::size_t j = 0; j < joints.size(); ++j) out[j] = pose.rotations[joint_slot(joints[j])];
   return out;
 }
 
@@ -230,20 +181,20 @@ HandJointPosture SignMotionCache::solve_from(Hand hand, const HandState& state, 
   const Skeleton& s = rig_->skeleton();
   const HandRig& h = rig_->hand(hand);
   Pose pose = rig_->neutral;
-  for (std::size_t j = 0; j < joints.size(); ++j) pose.rotations[static_cast<std::size_t>(joints[j])] = seed[j];
+  for (std::size_t j = 0; j < joints.size(); ++j) pose.rotations[joint_slot(joints[j])] = seed[j];
   apply_hand_posture(*rig_, hand, state.shape, pose);
   // The solver of perform_plan (sign/hand_solver.hpp), so both solve the same problem; the seed's
   // elbow is where the analytic arm solver looks first.
   std::vector<mat4> model(s.size());
-  std::vector<vec3> points;
+  HandPoints points;
   local_to_model(s, pose, model);
-  const auto at = [&](int j) { return vec3(model[static_cast<std::size_t>(j)][3]); };
+  const auto at = [&](int j) { return joint_position(model, j); };
   HandSolverState solver(h.arm);
   solver.swivel = measure_swivel(h.swivel, at(h.shoulder), at(h.elbow), at(h.wrist));
   solve_hand(*rig_, hand, state, PerformOptions{}.body_margin, true, solver, pose, model, points);
   clamp_to_limits(s, pose);
   HandJointPosture out(joints.size());
-  for (std::size_t j = 0; j < joints.size(); ++j) out[j] = pose.rotations[static_cast<std::size_t>(joints[j])];
+  for (std::size_t j = 0; j < joints.size(); ++j) out[j] = pose.rotations[joint_slot(joints[j])];
   return out;
 }
 

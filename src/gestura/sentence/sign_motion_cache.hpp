@@ -20,6 +20,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "gestura/sign/hand_geometry.hpp"
 #include "gestura/sign/sign_planner.hpp"
 
 namespace gestura {
@@ -28,22 +29,18 @@ namespace gestura {
 // wrist), then thumb1..3, index1..3, … pinky1..3.
 std::vector<int> hand_motion_joints(const SigningRig& rig, Hand hand);
 
-// The hand as it is in the rig's relaxed signing posture (rig.neutral: low, in front), active: where
-// a hand waits between signs and where a sign's cached performance is approached from.
-HandState relaxed_hand_state(const SigningRig& rig, Hand hand);
-
 // One hand's joint rotations, in hand_motion_joints order.
 using HandJointPosture = std::vector<quat>;
 
-// A lexicon sign in citation form: planned at speed 1 without holds, time 0 at its first posture,
-// and performed once.
+// A lexicon sign in citation form: planned at speed 1 without holds (plan_citation), time 0 at its
+// first posture, and performed once.
 struct CitationMotion {
-  SignPlan plan;          // sign_start = 0; sign_end = seconds of movement
+  SignPlan plan;          // as the planner made it: sign_start = 0; sign_end = seconds of movement
   float rate = 40.0f;     // samples per second of citation time
-  float first_posture = 0.0f;  // sample time of the first posture (the approach from rest comes before)
+  float first_posture = 0.0f;  // sample time of the first posture (an approach may come before)
   int frames = 0;             // at least 2
-  std::array<std::vector<quat>, 2> samples;  // per hand [0] right, [1] left: frames × joints, frame-major
-  std::array<std::size_t, 2> joints{};       // joints per hand
+  ByHand<std::vector<quat>> samples;  // per hand: frames × joints, frame-major
+  ByHand<std::size_t> joints{};       // joints per hand
 
   float movement() const { return plan.sign_end; }
   // The hand's joint rotations at citation time `t` (clamped to the sign), linearly interpolated
@@ -74,16 +71,19 @@ class SignMotionCache {
   const HandJointPosture& posture_from(Hand hand, const HandState& state, std::span<const quat> seed);
 
   const SigningRig& rig() const { return *rig_; }
-  const std::vector<int>& joints(Hand hand) const { return joints_[hand == Hand::Right ? 0 : 1]; }
+  const std::vector<int>& joints(Hand hand) const { return joints_[hand]; }
   std::size_t signs_stored() const;
 
  private:
-  SignPlan approached_from_relaxed(const SignPlan& plan) const;
-  std::unique_ptr<CitationMotion> perform_citation(SignPlan plan) const;
+  // Where the solver starts a citation form: arriving from the relaxed posture in front (as in
+  // running signing), or at its first posture with a full search of the elbow's circle.
+  enum class Start : std::uint8_t { FromRelaxed, AtFirstPosture };
+  SignPlan approached_from_relaxed(const SignPlan& citation) const;
+  std::unique_ptr<CitationMotion> perform_citation(const SignPlan& citation, Start start) const;
   float plan_error(const CitationMotion& motion) const;
 
   const SigningRig* rig_;
-  std::array<std::vector<int>, 2> joints_;
+  ByHand<std::vector<int>> joints_;
   mutable std::mutex mutex_;
   std::unordered_map<std::string, std::unique_ptr<CitationMotion>> signs_;
   std::unordered_map<std::string, std::unique_ptr<HandJointPosture>> postures_;

@@ -21,6 +21,7 @@
 #include "gestura/sign/fingerspelling_plan.hpp"
 #include "gestura/sign/movement_timing.hpp"
 #include "gestura/sign/sign_planner.hpp"
+#include "gestura/sign/two_hand_timeline.hpp"
 #include "gestura/text/lexicon_inventory.hpp"
 #include "gestura/text/translator.hpp"
 
@@ -32,17 +33,18 @@ constexpr float kMouthingAmplitude = 0.6f;        // ASL mouthing is reduced
 
 // Joins per-sign plans into one plan for the utterance: each sign is planned without rest at either
 // end, shifted to the utterance clock, and reached from the previous sign's last state by a
-// minimum-jerk transition (movement epenthesis), never through the rest position.
+// minimum-jerk transition (movement epenthesis), never through the rest position. Both hands end
+// every sign, word and pause at the same instant.
 class UtteranceBuilder {
  public:
-  UtteranceBuilder(const SigningRig& rig, float speed) : rig_(rig), speed_(speed) {
-    for (int h = 0; h < 2; ++h) state_[h] = rest_hand_state(rig, hand_of(h));
+  UtteranceBuilder(const SigningRig& rig, float speed)
+      : rig_(rig), speed_(speed), timeline_(ByHand<HandState>{{rest_hand_state(rig, Hand::Right), rest_hand_state(rig, Hand::Left)}}) {
     // Where a hand that has signed waits while the other signs alone: low in front, as in the rig's
     // relaxed signing posture (a signer does not drop it to the hip between signs).
-    for (int h = 0; h < 2; ++h) idle_[h] = relaxed_hand_state(rig, hand_of(h));
+    for (Hand hand : kBothHands) idle_[hand] = relaxed_hand_state(rig, hand);
   }
 
-  float now() const { return now_; }
+  float now() const { return timeline_.now(); }
   const std::vector<CachedSignSpan>& spans() const { return spans_; }
 
   // Appends one sign (its cached citation form) with its running-signing timing
@@ -50,49 +52,37 @@ class UtteranceBuilder {
   std::array<float, 2> add_sign(const CitationMotion& motion, bool phrase_final, float extra_hold) {
     const SignPlan& plan = motion.plan;
     const SignTiming timing = running_sign_timing(motion.movement(), phrase_final, extra_hold, speed_);
-    const std::array<const HandTimeline*, 2> timeline{&plan.right, &plan.left};
-    std::array<HandState, 2> first;
-    for (int h = 0; h < 2; ++h) {
-      const HandTimeline& t = *timeline[h];
-      first[h] = t.segments.empty() ? rest_hand_state(rig_, hand_of(h)) : sample_hand(t, 0.0f);
+    ByHand<HandState> first;
+    for (Hand hand : kBothHands) {
+      const HandTimeline& t = plan.hand(hand);
+      first[hand] = t.segments.empty() ? rest_hand_state(rig_, hand) : sample_hand(t, 0.0f);
     }
     // The hands the sign uses set the transition time; a hand it does not use drifts to rest — or,
     // once it has signed, to its idle place low in front — over as long as it needs (up to the
     // whole sign) instead of snapping there.
-    const float t0 = now_;
+    const float t0 = now();
     float d = 0.0f;
-    for (int h = 0; h < 2; ++h)
-      if (first[h].active) d = std::max(d, move_time(state_[h], first[h]));
-    if (d == 0.0f) d = move_time(state_[0], state_[0]);
+    for (Hand hand : kBothHands)
+      if (first[hand].active) d = std::max(d, move_time(timeline_.state(hand), first[hand]));
+    if (d == 0.0f) d = move_time(timeline_.state(Hand::Right), timeline_.state(Hand::Right));
     const float start = t0 + d;
     const float moving = start + timing.initial_hold;
     const float end = moving + timing.movement + timing.final_hold;
-    for (int h = 0; h < 2; ++h) {
-      if (!first[h].active) continue;
-      push(h, state_[h], first[h], t0, start);
-      push(h, first[h], first[h], start, moving);
-      for (HandSegment seg : timeline[h]->segments) {
-        seg.start = moving + seg.start / timing.tempo;  // the cached plan starts at its first posture
-        seg.end = moving + seg.end / timing.tempo;
-        out_[h].segments.push_back(std::move(seg));
+    for (Hand hand : kBothHands) {
+      if (first[hand].active) {
+        timeline_.move_to(hand, first[hand], d);
+        timeline_.hold_until(hand, moving);
+        timeline_.append_shifted(hand, plan.hand(hand), moving, timing.tempo);  // the cached plan starts at its first posture
+        spans_.push_back({hand, start, moving, end, timing.tempo, &motion});
+        signed_[hand] = true;
+      } else {
+        const HandState rest = signed_[hand] ? idle_[hand] : rest_hand_state(rig_, hand);
+        const float arrival = std::min(std::max(start, t0 + move_time(timeline_.state(hand), rest)), end);
+        timeline_.move_to(hand, rest, arrival - t0);
       }
-      state_[h] = out_[h].final_state();
-      spans_.push_back({hand_of(h), start, moving, end, timing.tempo, &motion});
-    }
-    for (int h = 0; h < 2; ++h) {
-      if (first[h].active) {
-        signed_[h] = true;
-        continue;
-      }
-      const HandState rest = signed_[h] ? idle_[h] : rest_hand_state(rig_, hand_of(h));
-      const float arrival = std::min(std::max(start, t0 + move_time(state_[h], rest)), end);
-      push(h, state_[h], rest, t0, arrival);
-      state_[h] = rest;
     }
     // Both hands continue from the same clock: the final hold, and the shorter timeline holds.
-    for (int h = 0; h < 2; ++h)
-      if (out_[h].end_time() < end) push(h, state_[h], state_[h], out_[h].end_time(), end);
-    now_ = end;
+    for (Hand hand : kBothHands) timeline_.hold_until(hand, end);
     return {start, end};
   }
 
@@ -100,70 +90,40 @@ class UtteranceBuilder {
   // current state like the first posture of a sign.
   std::array<float, 2> add_spelling(const SpellingPlan& plan) {
     const SpelledHands hands = spell_with_hands(plan, rig_, speed_);
-    transition_to({hands.first(Hand::Right), hands.first(Hand::Left)});
-    const float start = now_;
-    const std::array<const HandTimeline*, 2> spelled{&hands.right, &hands.left};
-    for (int h = 0; h < 2; ++h)
-      for (HandSegment seg : spelled[h]->segments) {
-        seg.start += start;
-        seg.end += start;
-        out_[h].segments.push_back(std::move(seg));
-      }
-    state_ = {hands.right.final_state(), hands.left.final_state()};
-    now_ = start + hands.duration;
-    return {start, now_};
+    transition_to({{hands.first(Hand::Right), hands.first(Hand::Left)}});
+    const float start = now();
+    for (Hand hand : kBothHands) timeline_.append_shifted(hand, hands.hand(hand), start);
+    return {start, now()};
   }
 
   void hold(float seconds) {
-    if (seconds <= 0.0f) return;
-    for (int h = 0; h < 2; ++h) push(h, state_[h], state_[h], now_, now_ + seconds);
-    now_ += seconds;
+    if (seconds > 0.0f) timeline_.hold_both(seconds);
   }
 
   // The return to rest at the end of the utterance; returns the joined plan.
   SignPlan finish(float sign_start, float sign_end) {
-    transition_to({rest_hand_state(rig_, Hand::Right), rest_hand_state(rig_, Hand::Left)});
-    SignPlan plan;
-    plan.right = std::move(out_[0]);
-    plan.left = std::move(out_[1]);
-    plan.sign_start = sign_start;
-    plan.sign_end = sign_end;
-    return plan;
+    transition_to({{rest_hand_state(rig_, Hand::Right), rest_hand_state(rig_, Hand::Left)}});
+    return timeline_.finish(sign_start, sign_end);
   }
 
  private:
-  static Hand hand_of(int h) { return h == 0 ? Hand::Right : Hand::Left; }
-
-  void push(int h, const HandState& from, const HandState& to, float t0, float t1) {
-    HandSegment seg;
-    seg.start = t0;
-    seg.end = t1;
-    seg.from = from;
-    seg.to = to;
-    out_[h].segments.push_back(std::move(seg));
-  }
-
   float move_time(const HandState& from, const HandState& to) const {
     return transition_duration(glm::length(to.position - from.position)) / (speed_ * kTransitionTempo);
   }
 
   // Both hands move to their targets together, taking as long as the longer path needs.
-  void transition_to(const std::array<HandState, 2>& target) {
+  void transition_to(const ByHand<HandState>& target) {
     float d = 0.0f;
-    for (int h = 0; h < 2; ++h) d = std::max(d, move_time(state_[h], target[h]));
-    for (int h = 0; h < 2; ++h) push(h, state_[h], target[h], now_, now_ + d);
-    now_ += d;
-    state_ = target;
+    for (Hand hand : kBothHands) d = std::max(d, move_time(timeline_.state(hand), target[hand]));
+    timeline_.move_both_to(target, d);
   }
 
   const SigningRig& rig_;
   float speed_;
-  float now_ = 0.0f;
-  std::array<HandState, 2> state_;
-  std::array<HandTimeline, 2> out_;
+  TwoHandTimeline timeline_;
   std::vector<CachedSignSpan> spans_;
-  std::array<HandState, 2> idle_;
-  std::array<bool, 2> signed_{false, false};  // the hand has signed in this utterance
+  ByHand<HandState> idle_;
+  ByHand<bool> signed_{{false, false}};  // the hand has signed in this utterance
 };
 
 std::string letters_only(std::string_view text) {

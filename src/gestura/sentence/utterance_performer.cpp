@@ -5,6 +5,7 @@
 
 #include "gestura/core/error.hpp"
 #include "gestura/sign/movement_timing.hpp"
+#include "gestura/sign/hand_geometry.hpp"
 #include "gestura/sign/sign_performer.hpp"
 
 namespace gestura {
@@ -214,7 +215,7 @@ class HandPerformer {
     const SigningRig& rig = cache_.rig();
     const std::vector<int>& joints = cache_.joints(hand_);
     blend(m, p, u, scratch_posture_);
-    for (std::size_t j = 0; j < n_; ++j) scratch_pose_.rotations[static_cast<std::size_t>(joints[j])] = scratch_posture_[j];
+    for (std::size_t j = 0; j < n_; ++j) scratch_pose_.rotations[joint_slot(joints[j])] = scratch_posture_[j];
     local_to_model(rig.skeleton(), scratch_pose_, scratch_model_);
     return hand_penetration(rig, hand_, scratch_model_, scratch_points_);
   }
@@ -228,7 +229,7 @@ class HandPerformer {
   // Scratch for the body checks (the rest of the body stays in the signing rig's neutral pose).
   mutable Pose scratch_pose_ = cache_.rig().neutral;
   mutable std::vector<mat4> scratch_model_ = std::vector<mat4>(cache_.rig().skeleton().size());
-  mutable std::vector<vec3> scratch_points_;
+  mutable HandPoints scratch_points_;
   mutable std::vector<quat> scratch_posture_ = std::vector<quat>(n_);
 };
 
@@ -239,34 +240,33 @@ Clip perform_utterance(const SignPlan& plan, std::span<const CachedSignSpan> sig
   if (!(fps >= 1.0f && fps <= 240.0f)) throw Error("fps must be between 1 and 240");
   const SigningRig& rig = cache.rig();
   const Skeleton& s = rig.skeleton();
-  const int frames = std::max(2, static_cast<int>(std::ceil(plan.duration() * fps)) + 1);
+  const std::size_t frames = std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(plan.duration() * fps)) + 1);
   UtteranceStats st;
-  st.frames = frames;
+  st.frames = static_cast<int>(frames);
 
   Clip clip;
   clip.name = "sign";
   clip.duration = static_cast<float>(frames - 1) / fps;
   clip.resize_joints(s.size());
-  for (int side = 0; side < 2; ++side) {
-    const Hand hand = side == 0 ? Hand::Right : Hand::Left;
-    const HandTimeline& timeline = side == 0 ? plan.right : plan.left;
+  for (Hand hand : kBothHands) {
+    const HandTimeline& timeline = plan.hand(hand);
     const std::vector<int>& joints = cache.joints(hand);
     std::vector<QuatTrack*> tracks;
     for (int j : joints) {
-      QuatTrack& tr = clip.rotations[static_cast<std::size_t>(j)];
+      QuatTrack& tr = clip.rotations[joint_slot(j)];
       tr.interpolation = Interpolation::Linear;
-      tr.times.resize(static_cast<std::size_t>(frames));
-      tr.values.resize(static_cast<std::size_t>(frames));
+      tr.times.resize(frames);
+      tr.values.resize(frames);
       tracks.push_back(&tr);
     }
     const HandJointPosture& rest = cache.posture(hand, rest_hand_state(rig, hand));
     std::vector<quat> posture(rest.begin(), rest.end());
     if (timeline.segments.empty()) {
       // A hand the utterance never uses rests throughout.
-      for (int f = 0; f < frames; ++f)
+      for (std::size_t f = 0; f < frames; ++f)
         for (std::size_t j = 0; j < joints.size(); ++j) {
-          tracks[j]->times[static_cast<std::size_t>(f)] = static_cast<float>(f) / fps;
-          tracks[j]->values[static_cast<std::size_t>(f)] = posture[j];
+          tracks[j]->times[f] = static_cast<float>(f) / fps;
+          tracks[j]->values[f] = posture[j];
         }
       continue;
     }
@@ -276,12 +276,12 @@ Clip perform_utterance(const SignPlan& plan, std::span<const CachedSignSpan> sig
     HandPerformer performer(hand, timeline, std::move(spans), cache, fps);
     const HandMotion motion = performer.build(st);
     std::size_t cursor = 0;
-    for (int f = 0; f < frames; ++f) {
+    for (std::size_t f = 0; f < frames; ++f) {
       const float t = static_cast<float>(f) / fps;
       performer.evaluate(motion, t, cursor, posture);
       for (std::size_t j = 0; j < joints.size(); ++j) {
-        tracks[j]->times[static_cast<std::size_t>(f)] = t;
-        tracks[j]->values[static_cast<std::size_t>(f)] = posture[j];
+        tracks[j]->times[f] = t;
+        tracks[j]->values[f] = posture[j];
       }
     }
     for (QuatTrack* tr : tracks) make_continuous(*tr);

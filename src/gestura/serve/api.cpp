@@ -16,6 +16,8 @@
 #include "gestura/io/gltf_export.hpp"
 #include "gestura/serve/api_error.hpp"
 #include "gestura/serve/clip_glb.hpp"
+#include "gestura/serve/local_render_jobs.hpp"
+#include "gestura/serve/redis_render_jobs.hpp"
 #include "gestura/serve/public_request.hpp"
 #include "gestura/serve/request_json.hpp"
 #include "gestura/serve/static_files.hpp"
@@ -30,7 +32,6 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-constexpr int kMaxVideoPixels = 1280 * 720;
 constexpr int kMaxLexiconLimit = 1000;
 
 // The body as a JSON object; 415 for another media type, 400 for malformed JSON (binary bodies
@@ -131,8 +132,18 @@ Api::Api(ServeOptions options) : options_(std::move(options)) {
     web_ = fs::canonical(options_.web);
   }
   if (!options_.lexicon.empty()) setenv("GESTURA_LEXICON", options_.lexicon.c_str(), 1);  // the workspace's user lexicon
-  workspaces_ = std::make_unique<WorkspacePool>(options_.threads + options_.jobs);
-  jobs_ = std::make_unique<JobQueue>((data_ / "jobs").string(), options_.jobs, static_cast<std::size_t>(options_.queue));
+  // With a broker the workers render: this server needs no workspaces for jobs.
+  workspaces_ = std::make_unique<WorkspacePool>(options_.threads + (options_.broker.empty() ? options_.jobs : 0));
+  if (options_.broker.empty()) {
+    jobs_ = std::make_unique<LocalRenderJobs>((data_ / "jobs").string(), options_.jobs, static_cast<std::size_t>(options_.queue), *workspaces_);
+  } else {
+    BrokerUrl url = parse_broker_url(options_.broker);
+    try {
+      jobs_ = std::make_unique<RedisRenderJobs>(std::move(url), static_cast<std::size_t>(options_.queue));
+    } catch (const std::exception& e) {
+      throw app::AppError(app::ErrorCategory::usage, app::Place{"broker", {}}, e.what());
+    }
+  }
   add_routes();
 }
 
@@ -144,7 +155,7 @@ void Api::add_routes() {
   router_.add("GET", "/metrics", "metrics", [this](ApiRequest&, const app::RunContext&) {
     ApiResponse r;
     r.content_type = "text/plain; version=0.0.4";
-    r.body = metrics_.prometheus(jobs_->waiting(), jobs_->running());
+    r.body = metrics_.prometheus(jobs_->waiting(), jobs_->running()) + jobs_->metrics();
     return r;
   });
   router_.add("POST", "/api/say", "say", [this](ApiRequest& q, const app::RunContext& c) { return say(q, c); });
@@ -199,6 +210,9 @@ ApiResponse Api::handle(ApiRequest& request) {
     context.stop = deadline.token();  // handlers that compute lease a workspace into their own context
     try {
       response = (*match.handler)(request, context);
+    } catch (const BrokerUnavailable& e) {
+      response = error_response(503, "unavailable", std::string("the render queue is unreachable: ") + e.what());
+      response.headers.emplace_back("Retry-After", "10");
     } catch (...) {
       response = current_error_response();
       if (deadline.expired())
@@ -361,29 +375,9 @@ ApiResponse Api::avatar(ApiRequest& request) {
 }
 
 ApiResponse Api::video(ApiRequest& request) {
-  json body = body_json(request);
-  std::string format = "mp4";
-  if (body.is_object() && body.contains("format")) {
-    if (!body["format"].is_string() || (body["format"] != "mp4" && body["format"] != "webm")) app::usage_error("format", "is mp4 or webm");
-    format = body["format"].get<std::string>();
-    body.erase("format");
-  }
-  app::SayRequest say = read_public<Public<app::SayRequest, VideoFields>>(body).request;
-  check_text(say.text, options_.max_text);
-  if (say.output.picture.size.width * say.output.picture.size.height > kMaxVideoPixels)
-    throw app::AppError(app::ErrorCategory::too_large, app::Place{"size", {}}, "videos are at most 1280x720 pixels here");
-  say.output.output = (data_ / "jobs" / ("check." + format)).string();
-  app::validate(say);  // every mistake is the request's answer, not a failed job later
-  const std::optional<std::string> id = jobs_->submit(
-      [this, say](const std::string& file, const app::RunContext& context) {
-        app::SayRequest r = say;
-        r.output.output = file;
-        const WorkspacePool::Lease workspace = workspaces_->acquire();
-        app::RunContext c = context;
-        c.workspace = workspace.get();
-        app::run(r, c);
-      },
-      "." + format, format == "mp4" ? "video/mp4" : "video/webm");
+  const json body = body_json(request);
+  const VideoJob job = parse_video_job(body, options_.max_text);
+  const std::optional<std::string> id = jobs_->submit(body, job);
   if (!id) {
     ApiResponse r = error_response(503, "busy", "the render queue is full; try again later");
     r.headers.emplace_back("Retry-After", "10");
@@ -400,7 +394,10 @@ ApiResponse Api::job(ApiRequest& request) {
   json out{{"id", s->id}, {"status", to_string(s->status)}, {"stage", s->stage}, {"done", s->done}, {"total", s->total},
            {"progress", s->status == JobStatus::done ? 1.0 : s->total > 0 ? double(s->done) / s->total : 0.0}};
   if (s->status == JobStatus::done) out["download"] = "/api/jobs/" + s->id + "/download";
-  if (s->status == JobStatus::failed && !s->error_json.empty()) out["error"] = json::parse(s->error_json)["error"];
+  if (s->status == JobStatus::failed) {
+    const json error = json::parse(s->error_json, nullptr, false);
+    if (error.is_object() && error.contains("error")) out["error"] = error["error"];
+  }
   return ApiResponse::json(200, out.dump());
 }
 
@@ -408,10 +405,14 @@ ApiResponse Api::job_download(ApiRequest& request) {
   const std::optional<JobState> s = jobs_->state(request.params["id"]);
   if (!s) return error_response(404, "not_found", "no job " + request.params["id"], "id");
   if (s->status != JobStatus::done) return error_response(409, "conflict", "the job is " + to_string(s->status) + ", not done", "id");
+  std::optional<JobResult> video = jobs_->result(s->id);
+  if (!video) return error_response(404, "not_found", "the video of job " + s->id + " is no longer kept", "id");
   ApiResponse r;
-  r.content_type = s->content_type;
-  r.file = s->file;
-  r.headers.emplace_back("Content-Disposition", "attachment; filename=\"gestura-" + s->id + fs::path(s->file).extension().string() + "\"");
+  r.content_type = video->content_type;
+  r.file = video->file;
+  r.body = std::move(video->bytes);
+  const std::string extension = r.content_type == "video/webm" ? ".webm" : ".mp4";
+  r.headers.emplace_back("Content-Disposition", "attachment; filename=\"gestura-" + s->id + extension + "\"");
   return r;
 }
 

@@ -9,7 +9,7 @@
 
 #include "gestura/app/workspace.hpp"
 #include "gestura/serve/deadline.hpp"
-#include "gestura/serve/job_queue.hpp"
+#include "gestura/serve/render_jobs.hpp"
 #include "gestura/serve/message.hpp"
 #include "gestura/serve/metrics.hpp"
 #include "gestura/serve/router.hpp"
@@ -36,7 +36,7 @@ class Api {
 
   const ServeOptions& options() const { return options_; }
   Metrics& metrics() { return metrics_; }
-  JobQueue& jobs() { return *jobs_; }
+  RenderJobs& jobs() { return *jobs_; }
   // Whether a request only reads state (health, metrics, job status, static files): the server
   // answers those at once instead of queueing them behind signing.
   bool quick(ApiRequest& request) const;
@@ -64,7 +64,7 @@ class Api {
   std::unique_ptr<WorkspacePool> workspaces_;  // one per request thread and render job
   Metrics metrics_;
   Deadlines deadlines_;
-  std::unique_ptr<JobQueue> jobs_;
+  std::unique_ptr<RenderJobs> jobs_;  // the in-process queue or the broker (--broker)
   Router router_;
   std::mutex avatar_mutex_;
   std::string avatar_glb_, avatar_etag_;

@@ -21,6 +21,7 @@ struct ServeOptions {
   int max_text = 2000;            // bytes of text a say/gloss/video request signs
   int timeout = 20;               // seconds a request may compute (reading it has its own 10 s)
   int max_connections = 256;      // connections open at once
+  std::string broker;             // empty: render jobs in this process; redis://… or unix://…: Redis Streams
 
   template <class Self, class Visit>
   static void fields(Self& self, Visit&& visit) {
@@ -36,6 +37,7 @@ struct ServeOptions {
     visit(self.max_body, FieldInfo{.name = "max_body", .help = "bytes of a request body (more: 413)", .value = "BYTES", .min = 1024, .max = 16 * 1024 * 1024, .group = "Limits"});
     visit(self.max_text, FieldInfo{.name = "max_text", .help = "bytes of text one request signs (more: 413)", .value = "BYTES", .min = 16, .max = 16 * 1024, .group = "Limits"});
     visit(self.timeout, FieldInfo{.name = "timeout", .help = "seconds a request may compute (more: 503)", .value = "S", .min = 1, .max = 3600, .group = "Limits"});
+    visit(self.broker, FieldInfo{.name = "broker", .help = "send /api/video jobs to `gestura worker` processes through Redis (redis://HOST[:PORT][/DB] or unix:///PATH/redis.sock); default: render in this process", .value = "URL"});
     visit(self.max_connections, FieldInfo{.name = "max_connections", .help = "connections open at once (more are closed at once)", .value = "N", .min = 1, .max = 100000, .group = "Limits"});
   }
 };

@@ -251,6 +251,9 @@ struct Server::Impl {
   // A job's progress as JSON text messages until it ends: {id, status, stage, done, total}.
   asio::awaitable<void> job_events(beast::tcp_stream stream, http::request<http::string_body> req, std::string id) {
     websocket::stream<beast::tcp_stream> ws(std::move(stream));
+    // The WebSocket keeps its own timeouts; the HTTP deadline still armed on the stream would cut a
+    // long job's progress off mid-way (Beast: disable the tcp_stream's timer for a websocket).
+    beast::get_lowest_layer(ws).expires_never();
     ws.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws.read_message_max(4096);
     boost::system::error_code ec;

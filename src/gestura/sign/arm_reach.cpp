@@ -18,7 +18,7 @@ float arm_reach_excess(const SigningRig& rig, Hand hand, const vec3& palm_positi
   const HandRig& h = rig.hand(hand);
   // The shoulder as the hand solver seeds it: the rest of the body neutral, the clavicle relaxed.
   const mat4 shoulder_parent = parent_model_matrix(s, rig.neutral, h.shoulder);
-  const vec3 shoulder_at = vec3(shoulder_parent * vec4(s.rest_translations[static_cast<std::size_t>(h.shoulder)], 1.0f));
+  const vec3 shoulder_at = vec3(shoulder_parent * vec4(s.rest_translations[joint_slot(h.shoulder)], 1.0f));
   const quat parent_rotation = glm::normalize(glm::quat_cast(mat3(shoulder_parent)));
   const quat wrist = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), orientation}, h.rest_frame.rotation,
                                         h.rest_wrist_rotation);

@@ -34,8 +34,8 @@ std::string_view part_name(FingerPart p) {
 
 std::string form_name(const HandshapeForm& f) {
   std::string out(basic_name(f.basic));
-  if (f.thumb != ThumbPosition::unspecified)
-    out += f.thumb == ThumbPosition::out ? " thumb-out" : f.thumb == ThumbPosition::across ? " thumb-across" : " thumb-open";
+  if (f.thumb != ThumbModifier::Default)
+    out += f.thumb == ThumbModifier::Out ? " thumb-out" : f.thumb == ThumbModifier::Across ? " thumb-across" : " thumb-open";
   if (f.bending) out.append(" ").append(std::string(bending_name(*f.bending)));
   for (const FingerModifier& m : f.finger_modifiers) {
     out.append(" [").append(fingers_name(m.fingers));
@@ -57,7 +57,7 @@ std::string point_name(Site site, FingerSet fingers, std::optional<FingerPart> p
   return out;
 }
 
-std::string dir(std::optional<Direction> d) { return d ? std::string(direction_code(*d)) : "?"; }
+std::string dir(std::optional<Direction> d) { return d ? std::string(to_string(*d)) : "?"; }
 
 std::string children(const Element& e, std::string_view separator) {
   std::string out;

@@ -5,47 +5,8 @@
 namespace gestura::sign {
 namespace {
 
-struct DirectionRow {
-  Direction direction;
-  std::string_view code;
-  DirectionComponents c;  // vertical, lateral (+ = signer's left), sagittal (+ = out)
-};
-
-constexpr std::array<DirectionRow, 26> kDirections{{
-    {Direction::up, "u", {1, 0, 0}},
-    {Direction::down, "d", {-1, 0, 0}},
-    {Direction::left, "l", {0, 1, 0}},
-    {Direction::right, "r", {0, -1, 0}},
-    {Direction::out, "o", {0, 0, 1}},
-    {Direction::in, "i", {0, 0, -1}},
-    {Direction::up_left, "ul", {1, 1, 0}},
-    {Direction::up_right, "ur", {1, -1, 0}},
-    {Direction::down_left, "dl", {-1, 1, 0}},
-    {Direction::down_right, "dr", {-1, -1, 0}},
-    {Direction::out_left, "ol", {0, 1, 1}},
-    {Direction::out_right, "or", {0, -1, 1}},
-    {Direction::in_left, "il", {0, 1, -1}},
-    {Direction::in_right, "ir", {0, -1, -1}},
-    {Direction::up_out, "uo", {1, 0, 1}},
-    {Direction::up_in, "ui", {1, 0, -1}},
-    {Direction::down_out, "do", {-1, 0, 1}},
-    {Direction::down_in, "di", {-1, 0, -1}},
-    {Direction::up_out_left, "uol", {1, 1, 1}},
-    {Direction::up_out_right, "uor", {1, -1, 1}},
-    {Direction::up_in_left, "uil", {1, 1, -1}},
-    {Direction::up_in_right, "uir", {1, -1, -1}},
-    {Direction::down_out_left, "dol", {-1, 1, 1}},
-    {Direction::down_out_right, "dor", {-1, -1, 1}},
-    {Direction::down_in_left, "dil", {-1, 1, -1}},
-    {Direction::down_in_right, "dir", {-1, -1, -1}},
-}};
-
-constexpr bool directions_in_enum_order() {
-  for (std::size_t i = 0; i < kDirections.size(); ++i)
-    if (static_cast<std::size_t>(kDirections[i].direction) != i) return false;
-  return true;
-}
-static_assert(directions_in_enum_order());
+// FingerSet's bits are the phonology's (finger_bit), so a set passes to it as it is.
+static_assert(finger_bit(Finger::Thumb) == 1u && finger_bit(Finger::Pinky) == 1u << 4);
 
 constexpr std::array<std::string_view, static_cast<std::size_t>(Site::fingers) + 1> kSiteNames{
     "head", "head top", "forehead", "eyebrows", "eyes", "nose", "nostrils", "ear", "earlobe", "cheek",
@@ -54,29 +15,6 @@ constexpr std::array<std::string_view, static_cast<std::size_t>(Site::fingers) +
     "wrist back", "wrist pulse", "thumb ball", "palm", "hand back", "thumb side", "pinky side", "fingers"};
 
 }  // namespace
-
-DirectionComponents components(Direction d) { return kDirections[static_cast<std::size_t>(d)].c; }
-
-std::optional<Direction> direction_from_components(DirectionComponents c) {
-  for (const DirectionRow& row : kDirections)
-    if (row.c.vertical == c.vertical && row.c.lateral == c.lateral && row.c.sagittal == c.sagittal)
-      return row.direction;
-  return std::nullopt;
-}
-
-std::string_view direction_code(Direction d) { return kDirections[static_cast<std::size_t>(d)].code; }
-
-std::optional<Direction> direction_from_code(std::string_view code) {
-  for (const DirectionRow& row : kDirections)
-    if (row.code == code) return row.direction;
-  return std::nullopt;
-}
-
-glm::vec3 direction_vector(Direction d) {
-  const DirectionComponents c = components(d);
-  // Avatar frame: +X is the avatar's left (= signer's left), +Y up, +Z forward (= out).
-  return glm::normalize(glm::vec3(c.lateral, c.vertical, c.sagittal));
-}
 
 std::optional<Direction> merge_directions(Direction a, Direction b) {
   const DirectionComponents ca = components(a), cb = components(b);

@@ -5,7 +5,8 @@
 // the index of the symbol it came from so later stages can report errors against the notation.
 //
 // Frames: directions are the signer's (u = up, l = signer's left, o = out, away from the body).
-// direction_vector() maps them to the avatar frame (+Y up, the avatar faces +Z, its left is +X).
+// direction_vector() (phonology_direction.hpp) maps them to the avatar frame (+Y up, the avatar
+// faces +Z, its left is +X).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -15,57 +16,32 @@
 
 #include "gestura/core/math.hpp"
 #include "gestura/sign/hamnosys_symbol.hpp"
+#include "gestura/sign/phonology_direction.hpp"
+#include "gestura/sign/phonology_handshape.hpp"
 
 namespace gestura::sign {
 
 // ---- directions -------------------------------------------------------------------------------
 
-// The 26 directions of HamNoSys: 6 axes, 12 two-axis diagonals, 8 three-axis diagonals.
-// The font has symbols for 18 of them; the 8 three-axis ones are written as two adjacent
-// symbols (e.g. hamextfingeruo + hamextfingerol = up-out-left).
-enum class Direction : std::uint8_t {
-  up, down, left, right, out, in,
-  up_left, up_right, down_left, down_right, out_left, out_right, in_left, in_right,
-  up_out, up_in, down_out, down_in,
-  up_out_left, up_out_right, up_in_left, up_in_right,
-  down_out_left, down_out_right, down_in_left, down_in_right,
-};
+// Directions, handshapes, thumb positions, bendings and fingers are the phonology's own
+// (phonology_direction.hpp, phonology_handshape.hpp): one vocabulary from the parser to the
+// performer. The 26 directions: 6 axes, 12 two-axis diagonals, 8 three-axis diagonals; the font
+// has symbols for 18 of them, and the 8 three-axis ones are written as two adjacent symbols
+// (e.g. hamextfingeruo + hamextfingerol = up-out-left).
+using gestura::BasicHandshape;
+using gestura::Direction;
+using gestura::Finger;
+using gestura::FingerBending;
+using gestura::ThumbModifier;
 
-// Signed unit components of a direction: vertical (+1 up), lateral (+1 signer's left),
-// sagittal (+1 out, away from the body).
-struct DirectionComponents {
-  std::int8_t vertical = 0;
-  std::int8_t lateral = 0;
-  std::int8_t sagittal = 0;
-};
-
-DirectionComponents components(Direction d);
-std::optional<Direction> direction_from_components(DirectionComponents c);
-// The short HamNoSys code: "u", "ol", "uol", ...
-std::string_view direction_code(Direction d);
-std::optional<Direction> direction_from_code(std::string_view code);
-// Unit vector in the avatar frame (+Y up, +X the avatar's left, +Z forward).
-glm::vec3 direction_vector(Direction d);
+using gestura::DirectionComponents;
 // Two adjacent direction symbols that share an axis and differ in the others merge into one
 // three-axis diagonal (uo + ol = uol); anything else does not merge.
 std::optional<Direction> merge_directions(Direction a, Direction b);
 
 // ---- handshape --------------------------------------------------------------------------------
 
-enum class BasicHandshape : std::uint8_t {
-  fist, flat, finger2, finger23, finger23spread, finger2345,
-  pinch12, pinchall, pinch12open, cee12, ceeall, cee12open,
-};
-
-enum class ThumbPosition : std::uint8_t { unspecified, out, across, open };
-
-// Finger bending, named by shape. hamfingerstraightmod draws a finger bent only at the base joint
-// ("bent" in gestural SiGML), hamfingerbendmod a finger curved at all joints ("round").
-enum class FingerBending : std::uint8_t { bent, round, hooked, double_bent, double_hooked, half_bent };
-
-enum class Finger : std::uint8_t { thumb, index, middle, ring, pinky };
-
-// A set of fingers as bits (1 << Finger).
+// A set of fingers as bits (1 << Finger): the layout of the phonology's FingerSet (finger_bit).
 struct FingerSet {
   std::uint8_t bits = 0;
   bool empty() const { return bits == 0; }
@@ -84,8 +60,8 @@ struct FingerModifier {
 };
 
 struct HandshapeForm {
-  BasicHandshape basic = BasicHandshape::fist;
-  ThumbPosition thumb = ThumbPosition::unspecified;
+  BasicHandshape basic = BasicHandshape::Fist;
+  ThumbModifier thumb = ThumbModifier::Default;
   std::optional<FingerBending> bending;          // bending of all selected fingers
   std::vector<FingerModifier> finger_modifiers;  // per-finger bending / selection, in order
 };
@@ -137,19 +113,17 @@ enum class Side : std::uint8_t { centre, dominant_side, beside };
 
 enum class Proximity : std::uint8_t { close, touch, interlocked, crossed, far, behind, brushing };
 
-// A point on the body named by one site (and, for fingers, which fingers and which part).
+// A point the notation names by one site (and, for fingers, which fingers and which part): on the
+// body, on the other hand, or on the moving hand itself (the part of it placed at a location).
 struct SitePoint {
   Site site = Site::neutral_space;
-  FingerSet fingers;
+  FingerSet fingers;  // when site == fingers (or a finger part on a hand site)
   std::optional<FingerPart> finger_part;
   Side side = Side::centre;
 };
 
-struct Location {
-  Site site = Site::neutral_space;
-  FingerSet fingers;                 // when site == fingers (or a finger part on a hand site)
-  std::optional<FingerPart> finger_part;
-  Side side = Side::centre;
+// A location: the point where the hand goes, and how it goes there.
+struct Location : SitePoint {
   std::optional<SitePoint> between;  // hambetween: halfway between this point and that one
   // The part of the hand placed at the location, written as a bracketed sequence after it:
   // "hamchin hamseqbegin hamtouch hamfingertip hamseqend" = the fingertips touch the chin.

@@ -27,46 +27,46 @@ std::string quoted(Symbol s) { return std::string(symbol_name(s)); }
 
 BasicHandshape basic_handshape(Symbol s) {
   switch (s) {
-    case S::fist: return BasicHandshape::fist;
-    case S::flathand: return BasicHandshape::flat;
-    case S::finger2: return BasicHandshape::finger2;
-    case S::finger23: return BasicHandshape::finger23;
-    case S::finger23spread: return BasicHandshape::finger23spread;
-    case S::finger2345: return BasicHandshape::finger2345;
-    case S::pinch12: return BasicHandshape::pinch12;
-    case S::pinchall: return BasicHandshape::pinchall;
-    case S::pinch12open: return BasicHandshape::pinch12open;
-    case S::cee12: return BasicHandshape::cee12;
-    case S::ceeall: return BasicHandshape::ceeall;
-    default: return BasicHandshape::cee12open;
+    case S::fist: return BasicHandshape::Fist;
+    case S::flathand: return BasicHandshape::Flat;
+    case S::finger2: return BasicHandshape::Finger2;
+    case S::finger23: return BasicHandshape::Finger23;
+    case S::finger23spread: return BasicHandshape::Finger23Spread;
+    case S::finger2345: return BasicHandshape::Finger2345;
+    case S::pinch12: return BasicHandshape::Pinch12;
+    case S::pinchall: return BasicHandshape::PinchAll;
+    case S::pinch12open: return BasicHandshape::Pinch12Open;
+    case S::cee12: return BasicHandshape::Cee12;
+    case S::ceeall: return BasicHandshape::CeeAll;
+    default: return BasicHandshape::Cee12Open;
   }
 }
 
-ThumbPosition thumb_position(Symbol s) {
+ThumbModifier thumb_position(Symbol s) {
   switch (s) {
-    case S::thumboutmod: return ThumbPosition::out;
-    case S::thumbacrossmod: return ThumbPosition::across;
-    default: return ThumbPosition::open;
+    case S::thumboutmod: return ThumbModifier::Out;
+    case S::thumbacrossmod: return ThumbModifier::Across;
+    default: return ThumbModifier::Opposed;
   }
 }
 
 FingerBending finger_bending(Symbol s) {
   switch (s) {
-    case S::fingerstraightmod: return FingerBending::bent;
-    case S::fingerbendmod: return FingerBending::round;
-    case S::fingerhookmod: return FingerBending::hooked;
-    case S::doublebent: return FingerBending::double_bent;
-    default: return FingerBending::double_hooked;
+    case S::fingerstraightmod: return FingerBending::Bent;
+    case S::fingerbendmod: return FingerBending::Round;
+    case S::fingerhookmod: return FingerBending::Hooked;
+    case S::doublebent: return FingerBending::DoubleBent;
+    default: return FingerBending::DoubleHooked;
   }
 }
 
 Finger finger(Symbol s) {
   switch (s) {
-    case S::thumb: return Finger::thumb;
-    case S::indexfinger: return Finger::index;
-    case S::middlefinger: return Finger::middle;
-    case S::ringfinger: return Finger::ring;
-    default: return Finger::pinky;
+    case S::thumb: return Finger::Thumb;
+    case S::indexfinger: return Finger::Index;
+    case S::middlefinger: return Finger::Middle;
+    case S::ringfinger: return Finger::Ring;
+    default: return Finger::Pinky;
   }
 }
 
@@ -84,11 +84,11 @@ FingerPart finger_part(Symbol s) {
 // The 18 direction symbols of each family share one order in the font: u ur r dr d dl l ul ol o
 // or il i ir ui di do uo.
 constexpr Direction kEighteen[18] = {
-    Direction::up,       Direction::up_right,  Direction::right,     Direction::down_right,
-    Direction::down,     Direction::down_left, Direction::left,      Direction::up_left,
-    Direction::out_left, Direction::out,       Direction::out_right, Direction::in_left,
-    Direction::in,       Direction::in_right,  Direction::up_in,     Direction::down_in,
-    Direction::down_out, Direction::up_out};
+    Direction::U,       Direction::UR,  Direction::R,     Direction::DR,
+    Direction::D,     Direction::DL, Direction::L,      Direction::UL,
+    Direction::OL, Direction::O,       Direction::OR, Direction::IL,
+    Direction::I,       Direction::IR,  Direction::UI,     Direction::DI,
+    Direction::DO, Direction::UO};
 
 constexpr int span_of(Symbol first, Symbol last) { return static_cast<int>(last) - static_cast<int>(first) + 1; }
 static_assert(span_of(S::extfingeru, S::extfingeruo) == 18 && span_of(S::moveu, S::moveuo) == 18 &&
@@ -99,8 +99,8 @@ Direction extended_finger_direction(Symbol s) { return kEighteen[static_cast<int
 Direction straight_direction(Symbol s) { return kEighteen[static_cast<int>(s) - static_cast<int>(S::moveu)]; }
 
 Direction palm_direction(Symbol s) {
-  constexpr Direction eight[8] = {Direction::up,   Direction::up_right,  Direction::right, Direction::down_right,
-                                  Direction::down, Direction::down_left, Direction::left,  Direction::up_left};
+  constexpr Direction eight[8] = {Direction::U,   Direction::UR,  Direction::R, Direction::DR,
+                                  Direction::D, Direction::DL, Direction::L,  Direction::UL};
   return eight[static_cast<int>(s) - static_cast<int>(S::palmu)];
 }
 
@@ -108,27 +108,27 @@ Direction palm_direction(Symbol s) {
 // il ui do uo di.
 Direction circle_axis(Symbol s) {
   constexpr Direction axes[18] = {
-      Direction::out,      Direction::in,       Direction::down,      Direction::up,
-      Direction::left,     Direction::right,    Direction::up_left,   Direction::down_right,
-      Direction::up_right, Direction::down_left, Direction::out_left, Direction::in_right,
-      Direction::out_right, Direction::in_left, Direction::up_in,     Direction::down_out,
-      Direction::up_out,   Direction::down_in};
+      Direction::O,      Direction::I,       Direction::D,      Direction::U,
+      Direction::L,     Direction::R,    Direction::UL,   Direction::DR,
+      Direction::UR, Direction::DL, Direction::OL, Direction::IR,
+      Direction::OR, Direction::IL, Direction::UI,     Direction::DO,
+      Direction::UO,   Direction::DI};
   return axes[static_cast<int>(s) - static_cast<int>(S::circleo)];
 }
 
 // Clock positions u ul l dl d dr r ur (then "full").
 Direction clock_position(Symbol s) {
-  constexpr Direction pos[8] = {Direction::up,   Direction::up_left,    Direction::left,  Direction::down_left,
-                                Direction::down, Direction::down_right, Direction::right, Direction::up_right};
+  constexpr Direction pos[8] = {Direction::U,   Direction::UL,    Direction::L,  Direction::DL,
+                                Direction::D, Direction::DR, Direction::R, Direction::UR};
   return pos[static_cast<int>(s) - static_cast<int>(S::clocku)];
 }
 
 Direction arc_direction(Symbol s) {
   switch (s) {
-    case S::arcl: return Direction::left;
-    case S::arcu: return Direction::up;
-    case S::arcr: return Direction::right;
-    default: return Direction::down;
+    case S::arcl: return Direction::L;
+    case S::arcu: return Direction::U;
+    case S::arcr: return Direction::R;
+    default: return Direction::D;
   }
 }
 
@@ -494,7 +494,7 @@ class Parser {
     HandshapeForm form;
     // Bending written before the basic form (seen in lexicons) applies to it.
     std::optional<FingerBending> early_bending;
-    std::optional<ThumbPosition> early_thumb;
+    std::optional<ThumbModifier> early_thumb;
     while (!at_end() && (peek_class() == C::finger_bending || peek_class() == C::thumb_modifier)) {
       if (!next_is(C::handshape, 1) && !next_is(C::finger_bending, 1) && !next_is(C::thumb_modifier, 1))
         fail(index(), "expected a handshape after " + quoted(peek()) + ", found " +
@@ -940,7 +940,7 @@ class Parser {
 
   static void apply_hand_part(Location& at, const Element& seq) {
     const Location& part = *seq.children.back().location();
-    at.hand_part = SitePoint{part.site, part.fingers, part.finger_part, part.side};
+    at.hand_part = static_cast<const SitePoint&>(part);
     if (seq.children.size() == 2) at.proximity = seq.children[0].contact()->proximity;
   }
 

@@ -14,15 +14,10 @@
 
 namespace gestura {
 
-// A point on the hand's surface and the direction the surface faces there, in the wrist's frame.
-struct HandPartSite {
-  vec3 point{0.0f};
-  vec3 normal{0, 0, 1};
-};
-
-// `pose` holds the hand's finger rotations (apply_hand_posture); `shape` is the same posture, for
+// The part's point on the hand's surface and the direction the surface faces there, in the
+// wrist's frame. `pose` holds the hand's finger rotations (apply_hand_posture); `shape` is the same posture, for
 // which fingers are extended. Empty for a site that is not on the hand (a body or arm site).
-std::optional<HandPartSite> hand_part_site(const SigningRig& rig, Hand hand, const Pose& pose, const HandPosture& shape,
+std::optional<SurfacePoint> hand_part_site(const SigningRig& rig, Hand hand, const Pose& pose, const HandPosture& shape,
                                            const sign::SitePoint& part);
 
 }  // namespace gestura

@@ -6,7 +6,6 @@
 #include "gestura/ik/dls.hpp"
 #include "gestura/ik/residual.hpp"
 #include "gestura/ik/swivel_arm.hpp"
-#include "gestura/sign/sign_performer.hpp"
 
 namespace gestura {
 
@@ -31,11 +30,11 @@ struct ArmSnapshot {
   std::array<quat, kMaxJoints> rotations;
   ArmSnapshot(const IkChain& chain, const Pose& pose) : arm(&chain) {
     for (std::size_t i = 0; i < std::min(kMaxJoints, chain.joints.size()); ++i)
-      rotations[i] = pose.rotations[static_cast<std::size_t>(chain.joints[i])];
+      rotations[i] = pose.rotations[joint_slot(chain.joints[i])];
   }
   void restore(Pose& pose) const {
     for (std::size_t i = 0; i < std::min(kMaxJoints, arm->joints.size()); ++i)
-      pose.rotations[static_cast<std::size_t>(arm->joints[i])] = rotations[i];
+      pose.rotations[joint_slot(arm->joints[i])] = rotations[i];
   }
 };
 
@@ -46,7 +45,7 @@ IkResult solve_within_limits(const Skeleton& s, const IkChain& arm, const mat4& 
                              const IkSettings& settings, IkWorkspace& workspace, Pose& pose) {
   IkResult r = solve_dls(s, arm, base, target, settings, workspace, pose);
   bool clamped = false;
-  for (int j : arm.joints) clamped |= clamp_joint_to_limits(s, j, pose.rotations[static_cast<std::size_t>(j)]);
+  for (int j : arm.joints) clamped |= clamp_joint_to_limits(s, j, pose.rotations[joint_slot(j)]);
   if (clamped) {  // the residual of the pose that will be performed
     load_angles(s, arm, pose, workspace);
     quat effector_rotation;
@@ -60,7 +59,7 @@ IkResult solve_within_limits(const Skeleton& s, const IkChain& arm, const mat4& 
 
 // How deep the hand's deepest surface point is inside the body plus `margin` (0 when clear).
 float hand_depth(const SigningRig& rig, const HandRig& h, float margin, const Pose& pose, std::vector<mat4>& model,
-                 std::vector<vec3>& points) {
+                 HandPoints& points) {
   local_to_model(rig.skeleton(), pose, model);
   return std::max(0.0f, margin + hand_penetration(rig, h.hand, model, points));
 }
@@ -72,7 +71,7 @@ vec3 planned_contact(const SigningRig& rig, Hand hand, const HandState& state, s
   const HandRig& h = rig.hand(hand);
   const quat wrist_rotation = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), state.orientation},
                                                  h.rest_frame.rotation, h.rest_wrist_rotation);
-  const mat4 to_wrist = glm::inverse(model[static_cast<std::size_t>(h.wrist)]);
+  const mat4 to_wrist = glm::inverse(model[joint_slot(h.wrist)]);
   float nearest = 1e9f;
   vec3 best = state.position;
   index = 0;
@@ -87,7 +86,7 @@ vec3 planned_contact(const SigningRig& rig, Hand hand, const HandState& state, s
 
 HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
                            bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
-                           std::vector<vec3>& points) {
+                           HandPoints& points) {
   const Skeleton& s = rig.skeleton();
   const HandRig& h = rig.hand(hand);
   const quat wrist_rotation = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), state.orientation},
@@ -96,9 +95,9 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
   // (continuing last frame's). It is exact when the joint ranges allow the hand's place and
   // turn; when they do not, wrist and forearm stop at their limits (the nearest turn the arm
   // can make) and the palm is put back where it belongs for that turn.
-  pose.rotations[static_cast<std::size_t>(h.clavicle)] = rig.neutral.rotations[static_cast<std::size_t>(h.clavicle)];
+  pose.rotations[joint_slot(h.clavicle)] = rig.neutral.rotations[joint_slot(h.clavicle)];
   const mat4 shoulder_parent = parent_model_matrix(s, pose, h.shoulder);
-  const vec3 shoulder_at = vec3(shoulder_parent * vec4(s.rest_translations[static_cast<std::size_t>(h.shoulder)], 1.0f));
+  const vec3 shoulder_at = vec3(shoulder_parent * vec4(s.rest_translations[joint_slot(h.shoulder)], 1.0f));
   const quat shoulder_parent_rotation = glm::normalize(glm::quat_cast(mat3(shoulder_parent)));
   SwivelGoal goal{state.position - wrist_rotation * h.palm_centre_local, wrist_rotation};
   SwivelPreference prefer;
@@ -108,7 +107,7 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
   if (arm.orientation_excess > deg(1.0f)) {
     apply_swivel_solution(s, h.swivel, arm, pose);
     const quat reached = glm::normalize(glm::quat_cast(mat3(parent_model_matrix(s, pose, h.wrist)))) *
-                         pose.rotations[static_cast<std::size_t>(h.wrist)];
+                         pose.rotations[joint_slot(h.wrist)];
     goal.wrist_position = state.position - reached * h.palm_centre_local;
     arm = solve_swivel_arm_at(s, h.swivel, shoulder_at, shoulder_parent_rotation, goal, arm.swivel, prefer);
   }
@@ -179,7 +178,7 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
     }
     if (deepest >= -1e-4f) break;
     vec3 palm_outward;
-    const mat4& w = model[static_cast<std::size_t>(h.wrist)];
+    const mat4& w = model[joint_slot(h.wrist)];
     if (body_signed_distance(rig, model, vec3(w * vec4(h.palm_centre_local, 1.0f)), &palm_outward) > 0.0f)
       outward = palm_outward;
     target.position += outward * (-deepest);
@@ -216,6 +215,16 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
     r = best_r;
   }
   return HandSolveResult{r.position_error, r.orientation_error};
+}
+
+HandSolveResult pose_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
+                          bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
+                          HandPoints& points) {
+  apply_hand_posture(rig, hand, state.shape, pose);
+  if (state.active) return solve_hand(rig, hand, state, body_margin, search_circle, solver, pose, model, points);
+  for (int j : rig.hand(hand).arm.joints) pose.rotations[joint_slot(j)] = rig.rest.rotations[joint_slot(j)];
+  solver.swivel.reset();
+  return {};
 }
 
 }  // namespace gestura

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gestura/ik/chain.hpp"
+#include "gestura/sign/hand_geometry.hpp"
 #include "gestura/sign/hand_timeline.hpp"
 #include "gestura/sign/signing_rig.hpp"
 
@@ -33,7 +34,15 @@ struct HandSolveResult {
 // the pose to joint limits (the caller does, once both hands are solved).
 HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
                            bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
-                           std::vector<vec3>& points);
+                           HandPoints& points);
+
+// One hand of one frame: the fingers posed for state.shape and, for a signing hand, the arm solved
+// (solve_hand); a resting hand's arm hangs exactly in the rest pose (a stretched arm at its limits
+// is a singular target for the iterative solvers) and forgets its swivel. What perform_plan does
+// for each hand every frame, and what the sentence layer does to solve a single posture.
+HandSolveResult pose_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
+                          bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
+                          HandPoints& points);
 
 // The point where a hand at the body meets it: of the hand's surface points (hand_surface_points
 // of the posed `model`, passed as `points`), the one nearest the body once the hand is placed and

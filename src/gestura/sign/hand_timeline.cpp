@@ -70,11 +70,11 @@ HandState sample_hand(const HandTimeline& timeline, float t) {
                       : seg.oscillation == Oscillation::Swing ? kSwingAmplitude
                                                               : kTwistAmplitude;
     if (seg.oscillation == Oscillation::FingerPlay) {
-      for (int f = 0; f < 4; ++f) {
+      for (std::size_t f = 0; f < out.shape.fingers.size(); ++f) {
         if (!(seg.oscillating_fingers & finger_bit(static_cast<Finger>(f + 1)))) continue;
         // Neighbouring fingers out of phase, as in a wiggle.
         const float w = std::sin(2 * kPi * seg.oscillation_cycles * u + 1.3f * static_cast<float>(f)) * envelope;
-        FingerFlexion& ff = out.shape.fingers[static_cast<std::size_t>(f)];
+        FingerFlexion& ff = out.shape.fingers[f];
         ff.mcp = std::clamp(ff.mcp + kPlayAmplitude * 0.5f * (1 + w), 0.0f, deg(90));
         ff.pip = std::clamp(ff.pip + kPlayAmplitude * 0.5f * (1 + w), 0.0f, deg(110));
       }

@@ -2,9 +2,11 @@
 // What one hand does over time, in the signer's space: a sequence of segments, each taking the hand
 // from one state to the next with a minimum-jerk profile, optionally along a movement path
 // (displacement added to the straight blend) and with oscillations of the wrist or fingers on top.
+#include <algorithm>
 #include <optional>
 #include <vector>
 
+#include "gestura/sign/hand.hpp"
 #include "gestura/sign/movement_path.hpp"
 #include "gestura/sign/phonology_direction.hpp"
 #include "gestura/sign/phonology_handshape.hpp"
@@ -53,6 +55,16 @@ struct HandTimeline {
   std::vector<HandSegment> segments;  // contiguous, increasing in time
   float end_time() const { return segments.empty() ? 0.0f : segments.back().end; }
   const HandState& final_state() const { return segments.back().to; }
+};
+
+// What both hands do: the dominant (right) and the non-dominant (left) hand's timelines.
+struct SignPlan {
+  HandTimeline right, left;
+  float sign_start = 0.0f;  // when the hands reach the initial posture
+  float sign_end = 0.0f;    // when the final hold ends (before any return to rest)
+  float duration() const { return std::max(right.end_time(), left.end_time()); }
+  HandTimeline& hand(Hand h) { return h == Hand::Right ? right : left; }
+  const HandTimeline& hand(Hand h) const { return h == Hand::Right ? right : left; }
 };
 
 // The hand's state at time t (clamped to the timeline). Contract: the timeline is not empty.

@@ -65,6 +65,15 @@ HandFrame frame_from_orthonormal(vec3 finger, vec3 palm, Hand hand) {
 
 }  // namespace
 
+DirectionComponents components(Direction direction) {
+  const glm::ivec3 a = axes_of(kDirectionNames[static_cast<std::size_t>(direction)]);
+  return {static_cast<std::int8_t>(a.y), static_cast<std::int8_t>(a.x), static_cast<std::int8_t>(a.z)};
+}
+
+std::optional<Direction> direction_from_components(DirectionComponents c) {
+  return direction_from_axes(glm::ivec3(c.lateral, c.vertical, c.sagittal));
+}
+
 vec3 direction_vector(Direction direction) {
   const glm::ivec3 a = axes_of(kDirectionNames[static_cast<std::size_t>(direction)]);
   return glm::normalize(vec3(a));

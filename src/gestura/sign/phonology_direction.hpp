@@ -9,10 +9,12 @@
 #include <string_view>
 
 #include "gestura/core/math.hpp"
+#include "gestura/sign/hand.hpp"
 
 namespace gestura {
 
-// The 26 directions (same order as the HamNoSys model's Direction): 6 axes, 12 two-axis diagonals, 8 three-axis diagonals. The letter order in
+// The 26 directions of HamNoSys (the parsed notation uses them as they are): 6 axes, 12 two-axis
+// diagonals, 8 three-axis diagonals. The letter order in
 // the names is HamNoSys's: vertical (u/d) first, then depth (o/i), then side (l/r).
 enum class Direction : std::uint8_t {
   U, D, L, R, O, I,
@@ -23,6 +25,15 @@ enum class Direction : std::uint8_t {
 };
 inline constexpr std::size_t kDirectionCount = 26;
 
+// Signed unit components of a direction: vertical (+1 up), lateral (+1 the signer's left),
+// sagittal (+1 out, away from the body).
+struct DirectionComponents {
+  std::int8_t vertical = 0;
+  std::int8_t lateral = 0;
+  std::int8_t sagittal = 0;
+};
+DirectionComponents components(Direction direction);
+std::optional<Direction> direction_from_components(DirectionComponents c);
 // Unit vector (diagonals are normalised sums of their axes).
 vec3 direction_vector(Direction direction);
 std::string_view to_string(Direction direction);  // "u", "uol", ...
@@ -54,8 +65,6 @@ PalmOrientation mirror_left_right(PalmOrientation palm);
 // The palm orientation a frontal-plane direction names (u, ur, r, dr, d, dl, l, ul); empty for
 // directions with a depth component, which HamNoSys palm symbols cannot express.
 std::optional<PalmOrientation> palm_orientation_of(Direction direction);
-
-enum class Hand : std::uint8_t { Right, Left };
 
 // A hand's orientation in the signer frame.
 // Hand-local axes (the contract with the skeleton; documented in docs/sign-phonology.md):

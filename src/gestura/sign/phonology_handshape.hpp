@@ -83,7 +83,6 @@ HandPosture mix(const HandPosture& a, const HandPosture& b, float s);
 // docs/sign-phonology.md): the fingers not taking part stay extended (pinch12 is the "F"/"OK"
 // form); the openings grow pinch12 (tips touch) < pinch12open (tips ~1.5 cm apart) < cee12 (C)
 // < cee12open (wide C).
-// Same order as the HamNoSys model's BasicHandshape.
 enum class BasicHandshape : std::uint8_t {
   Fist,
   Flat,
@@ -100,7 +99,6 @@ enum class BasicHandshape : std::uint8_t {
 };
 inline constexpr std::size_t kBasicHandshapeCount = 12;
 
-// Same order as the HamNoSys model's ThumbPosition (unspecified, out, across, open).
 enum class ThumbModifier : std::uint8_t {
   Default,  // the form's own thumb: alongside the index for fist/flat, across the fingers otherwise
   Out,      // hamthumboutmod: abducted in the palm plane, straight ("L", thumbs-up)
@@ -108,7 +106,6 @@ enum class ThumbModifier : std::uint8_t {
   Opposed,  // hamthumbopenmod: opposed to the finger pads without touching
 };
 
-// Same order as the HamNoSys model's FingerBending, so a static_cast maps one onto the other.
 // HamNoSys symbol names follow the glyphs: hamfingerstraightmod draws a finger bent at the base
 // joint only, hamfingerbendmod a finger curved at all joints. "Straight" is no bending at all.
 enum class FingerBending : std::uint8_t {

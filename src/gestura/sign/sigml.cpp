@@ -128,12 +128,12 @@ SigmlSign read_hns_sign(const Context& ctx, const pugi::xml_node& node) {
 
 std::optional<BasicHandshape> gestural_handshape(std::string_view v) {
   constexpr std::pair<std::string_view, BasicHandshape> table[] = {
-      {"fist", BasicHandshape::fist},           {"flat", BasicHandshape::flat},
-      {"finger2", BasicHandshape::finger2},     {"finger23", BasicHandshape::finger23},
-      {"finger23spread", BasicHandshape::finger23spread}, {"finger2345", BasicHandshape::finger2345},
-      {"pinch12", BasicHandshape::pinch12},     {"pinchall", BasicHandshape::pinchall},
-      {"pinch12open", BasicHandshape::pinch12open}, {"cee12", BasicHandshape::cee12},
-      {"ceeall", BasicHandshape::ceeall},       {"cee12open", BasicHandshape::cee12open}};
+      {"fist", BasicHandshape::Fist},           {"flat", BasicHandshape::Flat},
+      {"finger2", BasicHandshape::Finger2},     {"finger23", BasicHandshape::Finger23},
+      {"finger23spread", BasicHandshape::Finger23Spread}, {"finger2345", BasicHandshape::Finger2345},
+      {"pinch12", BasicHandshape::Pinch12},     {"pinchall", BasicHandshape::PinchAll},
+      {"pinch12open", BasicHandshape::Pinch12Open}, {"cee12", BasicHandshape::Cee12},
+      {"ceeall", BasicHandshape::CeeAll},       {"cee12open", BasicHandshape::Cee12Open}};
   for (const auto& [name, shape] : table)
     if (name == v) return shape;
   return std::nullopt;
@@ -141,9 +141,9 @@ std::optional<BasicHandshape> gestural_handshape(std::string_view v) {
 
 std::optional<FingerBending> gestural_bending(std::string_view v) {
   constexpr std::pair<std::string_view, FingerBending> table[] = {
-      {"bent", FingerBending::bent},       {"round", FingerBending::round},
-      {"hooked", FingerBending::hooked},   {"halfbent", FingerBending::half_bent},
-      {"dblbent", FingerBending::double_bent}, {"dblhooked", FingerBending::double_hooked}};
+      {"bent", FingerBending::Bent},       {"round", FingerBending::Round},
+      {"hooked", FingerBending::Hooked},   {"halfbent", FingerBending::HalfBent},
+      {"dblbent", FingerBending::DoubleBent}, {"dblhooked", FingerBending::DoubleHooked}};
   for (const auto& [name, bending] : table)
     if (name == v) return bending;
   return std::nullopt;
@@ -230,7 +230,7 @@ class GesturalReader {
   }
 
   Direction direction(const pugi::xml_node& n, const char* attribute) const {
-    const auto d = direction_from_code(n.attribute(attribute).value());
+    const auto d = parse_direction(n.attribute(attribute).value());
     if (!d) fail(n, std::string("bad ") + attribute + " '" + n.attribute(attribute).value() + "': expected a direction code such as u, ol, uol");
     return *d;
   }
@@ -247,8 +247,8 @@ class GesturalReader {
     if (const auto a = n.attribute("thumbpos")) {
       if (!hs) fail(n, "thumbpos without a handshape");
       const std::string_view v = a.value();
-      hs->form.thumb = v == "out" ? ThumbPosition::out : v == "across" ? ThumbPosition::across
-                       : v == "open" ? ThumbPosition::open : ThumbPosition::unspecified;
+      hs->form.thumb = v == "out" ? ThumbModifier::Out : v == "across" ? ThumbModifier::Across
+                       : v == "open" ? ThumbModifier::Opposed : ThumbModifier::Default;
     }
     if (const auto a = n.attribute("mainbend")) {
       if (!hs) fail(n, "mainbend without a handshape");

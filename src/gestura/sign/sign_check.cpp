@@ -9,11 +9,6 @@
 namespace gestura::sign {
 namespace {
 
-SynthesisHook& hook_slot() {
-  static SynthesisHook hook;
-  return hook;
-}
-
 // Counts a parsed sign and runs synthesis when connected.
 void after_parse(CheckReport& report, const HamSign& sign, std::span<const NonManual> nonmanual,
                  const std::string& place, const CheckOptions& options) {
@@ -21,8 +16,8 @@ void after_parse(CheckReport& report, const HamSign& sign, std::span<const NonMa
   for (const ParseNote& note : sign.notes)
     report.notes.push_back(place + ": note: symbol " + std::to_string(note.symbol_index) + ": " + note.text);
   if (options.describe_parsed) report.descriptions.push_back(place + ": " + describe(sign));
-  if (!report.synthesis_connected) return;
-  if (const auto why = synthesis_hook()(sign, nonmanual)) {
+  if (!options.synthesize) return;
+  if (const auto why = options.synthesize(sign, nonmanual)) {
     ++report.failed;
     report.failures.push_back(place + ": synthesis failed: " + *why);
   } else {
@@ -44,12 +39,9 @@ std::string_view extension(std::string_view path) {
 
 }  // namespace
 
-void set_synthesis_hook(SynthesisHook hook) { hook_slot() = std::move(hook); }
-const SynthesisHook& synthesis_hook() { return hook_slot(); }
-
 CheckReport check_jsonl(std::string_view text, std::string_view file_name, const CheckOptions& options) {
   CheckReport report;
-  report.synthesis_connected = static_cast<bool>(synthesis_hook());
+  report.synthesis_connected = static_cast<bool>(options.synthesize);
   std::size_t start = 0;
   int line_number = 0;
   while (start < text.size()) {
@@ -92,7 +84,7 @@ CheckReport check_jsonl(std::string_view text, std::string_view file_name, const
 
 CheckReport check_sigml(std::string_view text, std::string_view file_name, const CheckOptions& options) {
   CheckReport report;
-  report.synthesis_connected = static_cast<bool>(synthesis_hook());
+  report.synthesis_connected = static_cast<bool>(options.synthesize);
   for (const SigmlEntry& entry : read_sigml_entries(text, file_name, options.parse)) {
     if (options.max_failures > 0 && report.failed >= options.max_failures) {
       report.stopped = true;

@@ -1,6 +1,6 @@
 #pragma once
 // Batch check of sign files (.jsonl lexicons with a `hamnosys` field, .sigml documents): parse
-// every sign and, once synthesis is connected, synthesize it. Backs `gestura check`.
+// every sign and, when the caller passes a synthesis step, synthesize it. Backs `gestura check`.
 #include <functional>
 #include <optional>
 #include <span>
@@ -15,16 +15,14 @@
 namespace gestura::sign {
 
 // The synthesis step: the manual sign and its non-manual tiers (empty outside SiGML). Returns
-// nullopt when the sign was synthesized, else the reason it was not.
-// Nothing is connected yet: while synthesis_hook() is empty, check reports 0 synthesized signs.
-// The synthesis module connects itself with set_synthesis_hook().
-using SynthesisHook = std::function<std::optional<std::string>(const HamSign&, std::span<const NonManual>)>;
-void set_synthesis_hook(SynthesisHook hook);
-const SynthesisHook& synthesis_hook();
+// nullopt when the sign was synthesized, else the reason it was not. sign_synthesis.hpp makes one
+// for an avatar (synthesis_check); a check without one parses only.
+using SynthesisCheck = std::function<std::optional<std::string>(const HamSign&, std::span<const NonManual>)>;
 
 struct CheckOptions {
   ParseOptions parse;
   bool describe_parsed = false;  // fill CheckReport::descriptions (gestura check --show)
+  SynthesisCheck synthesize;     // empty: parse only (CheckReport::synthesized stays 0)
   int max_failures = 0;          // stop after this many failed signs (0: check every sign)
 };
 
@@ -38,7 +36,7 @@ struct CheckReport {
   // What the lenient parser accepted although the standard does not (a group left open, a modifier
   // out of place): "file:line: gloss: note: symbol N: what it did".
   std::vector<std::string> notes;
-  bool synthesis_connected = false;
+  bool synthesis_connected = false;  // a synthesis step was given
   bool stopped = false;  // max_failures was reached before the end of the file
 };
 

@@ -400,7 +400,7 @@ constexpr float kHandUpFromRest = 0.1f;
 
 vec3 palm_centre(const SigningRig& rig, Hand hand, std::span<const mat4> model) {
   const HandRig& h = rig.hand(hand);
-  return vec3(model[static_cast<std::size_t>(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
+  return vec3(model[joint_slot(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
 }
 
 }  // namespace

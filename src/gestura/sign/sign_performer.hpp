@@ -35,11 +35,4 @@ struct PerformanceStats {
 Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOptions& options = {},
                   PerformanceStats* stats = nullptr);
 
-// Model-space positions of the hand's surface points (palm faces, fingertips, knuckles) for a pose.
-void hand_surface_points(const SigningRig& rig, Hand hand, std::span<const mat4> model, std::vector<vec3>& out);
-
-// How deep the hand's deepest surface point lies inside the collision body for a pose (metres;
-// negative: that far clear of it). `points` is scratch for hand_surface_points.
-float hand_penetration(const SigningRig& rig, Hand hand, std::span<const mat4> model, std::vector<vec3>& points);
-
 }  // namespace gestura

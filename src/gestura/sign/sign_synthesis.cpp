@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "gestura/anim/sampler.hpp"
-#include "gestura/sign/sign_check.hpp"
+#include "gestura/sign/hand_geometry.hpp"
 
 namespace gestura {
 
@@ -39,7 +39,7 @@ SignSynthesis synthesize_sign(const sign::HamSign& sign, std::span<const sign::N
   const Skeleton& s = rig.skeleton();
   Pose pose;
   std::vector<mat4> model(s.size());
-  std::vector<vec3> points;
+  HandPoints points;
   for (int f = 0; f < out.stats.frames; ++f) {
     sample_clip(out.clip, static_cast<float>(f) / perform_options.fps, WrapMode::Clamp, rig.rest, pose);
     local_to_model(s, pose, model);
@@ -77,19 +77,15 @@ std::optional<std::string> synthesis_problem(const SignSynthesis& result, const 
   return std::nullopt;
 }
 
-void connect_synthesis_to_check() {
-  sign::set_synthesis_hook([](const sign::HamSign& sign,
-                              std::span<const sign::NonManual> nonmanual) -> std::optional<std::string> {
-    // One avatar and rig for the whole check run.
-    static const Avatar avatar = build_avatar();
-    static const SigningRig rig = make_signing_rig(avatar);
+sign::SynthesisCheck synthesis_check(const SigningRig& rig) {
+  return [&rig](const sign::HamSign& sign, std::span<const sign::NonManual> nonmanual) -> std::optional<std::string> {
     try {
       const SignSynthesis result = synthesize_sign(sign, nonmanual, rig);
       return synthesis_problem(result, rig);
     } catch (const std::exception& e) {
       return std::string(e.what());
     }
-  });
+  };
 }
 
 }  // namespace gestura

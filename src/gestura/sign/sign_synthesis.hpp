@@ -3,6 +3,7 @@
 #include <span>
 #include <vector>
 
+#include "gestura/sign/sign_check.hpp"
 #include "gestura/sign/sign_nonmanual.hpp"
 #include "gestura/sign/sign_performer.hpp"
 
@@ -45,7 +46,9 @@ struct SynthesisTolerance {
 std::optional<std::string> synthesis_problem(const SignSynthesis& result, const SigningRig& rig,
                                              const SynthesisTolerance& tolerance = {});
 
-// Connects `gestura check` (sign_check.hpp) to synthesis on the default avatar.
-void connect_synthesis_to_check();
+// The synthesis step of `gestura check` (sign_check.hpp) on `rig`: synthesizes each sign with its
+// non-manual tiers and judges it with synthesis_problem; an error thrown on the way is the reason.
+// Contract: `rig` outlives the returned function.
+sign::SynthesisCheck synthesis_check(const SigningRig& rig);
 
 }  // namespace gestura

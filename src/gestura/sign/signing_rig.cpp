@@ -19,8 +19,6 @@ int need(const Skeleton& s, const std::string& name) {
   return j;
 }
 
-vec3 position_of(const std::vector<mat4>& model, int joint) { return vec3(model[static_cast<std::size_t>(joint)][3]); }
-
 float distance_to_site(const SigningRig& rig, const char* site, const vec3& from, float fallback) {
   const BodySite* s = find_site(rig.sites, site);
   return s ? glm::distance(site_position(*s, rig.bind_model), from) : fallback;
@@ -39,13 +37,13 @@ HandRig make_hand(const Skeleton& s, const std::vector<mat4>& bind, Hand hand) {
     for (int k = 0; k < 3; ++k) h.fingers[f][k] = need(s, p + names[f] + std::to_string(k + 1));
     h.tips[f] = need(s, p + names[f] + "_tip");
   }
-  const vec3 wrist = position_of(bind, h.wrist), index1 = position_of(bind, h.fingers[1][0]);
-  const vec3 middle1 = position_of(bind, h.fingers[2][0]), pinky1 = position_of(bind, h.fingers[4][0]);
+  const vec3 wrist = joint_position(bind, h.wrist), index1 = joint_position(bind, h.fingers[1][0]);
+  const vec3 middle1 = joint_position(bind, h.fingers[2][0]), pinky1 = joint_position(bind, h.fingers[4][0]);
   h.rest_frame = hand_frame_from_joints(wrist, index1, middle1, pinky1, hand);
-  h.rest_wrist_rotation = glm::normalize(glm::quat_cast(mat3(bind[static_cast<std::size_t>(h.wrist)])));
+  h.rest_wrist_rotation = glm::normalize(glm::quat_cast(mat3(bind[joint_slot(h.wrist)])));
   // The hand's reference point: the middle of the palm, between the wrist and the knuckles.
   const vec3 centre = 0.4f * wrist + 0.6f * (index1 + middle1 + pinky1) / 3.0f;
-  h.palm_centre_local = vec3(glm::inverse(bind[static_cast<std::size_t>(h.wrist)]) * vec4(centre, 1.0f));
+  h.palm_centre_local = vec3(glm::inverse(bind[joint_slot(h.wrist)]) * vec4(centre, 1.0f));
   // The solvers place the palm centre: a hand turned less than asked still sits where it should.
   h.arm = make_chain(s, h.clavicle, h.wrist, h.palm_centre_local);
   h.swivel = make_swivel_arm(s, h.shoulder, h.elbow, h.wrist);
@@ -62,29 +60,28 @@ SigningRig make_signing_rig(const Avatar& avatar) {
   rig.bind_model.resize(s.size());
   local_to_model(s, rig.rest, rig.bind_model);
   rig.sites = find_body_sites(s, avatar.mesh);
-  rig.hands[0] = make_hand(s, rig.bind_model, Hand::Right);
-  rig.hands[1] = make_hand(s, rig.bind_model, Hand::Left);
+  for (Hand hand : kBothHands) rig.hands[hand] = make_hand(s, rig.bind_model, hand);
 
   // Relaxed signing posture: both arms in the ready posture (hands low, in front of the body).
   rig.neutral = rig.rest;
   for (HandRig& h : rig.hands) {
     const Pose ready = arm_ready_pose(s, h.hand == Hand::Right ? "r" : "l");
-    for (int j : h.arm.joints) rig.neutral.rotations[static_cast<std::size_t>(j)] = ready.rotations[static_cast<std::size_t>(j)];
+    for (int j : h.arm.joints) rig.neutral.rotations[joint_slot(j)] = ready.rotations[joint_slot(j)];
   }
   for (HandRig& h : rig.hands) {
     const std::string p = h.hand == Hand::Right ? "r_" : "l_";
-    const vec3 centre = vec3(rig.bind_model[static_cast<std::size_t>(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
+    const vec3 centre = vec3(rig.bind_model[joint_slot(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
     h.palm_half_thickness = std::clamp(distance_to_site(rig, (p + "palm").c_str(), centre, 0.015f), 0.008f, 0.03f);
   }
 
   // Collision body from the skeleton, sized by the surface sites.
   const int vl3 = need(s, "vl3"), vt6 = need(s, "vt6"), vt1 = need(s, "vt1"), vc7 = need(s, "vc7");
   const int skull = need(s, "skullbase");
-  const vec3 belly = position_of(rig.bind_model, vl3), upper = position_of(rig.bind_model, vt1);
+  const vec3 belly = joint_position(rig.bind_model, vl3), upper = joint_position(rig.bind_model, vt1);
   // The torso's radius makes its surface pass through the chest site: measured from the capsule's
   // axis, not from the spine joint behind it (the axis leans forward with the upper back), so a
   // palm laid on the chest touches the capsule where it touches the skin.
-  float torso_r = std::clamp(distance_to_site(rig, "chest", position_of(rig.bind_model, vt6), 0.13f), 0.08f, 0.25f);
+  float torso_r = std::clamp(distance_to_site(rig, "chest", joint_position(rig.bind_model, vt6), 0.13f), 0.08f, 0.25f);
   if (const BodySite* chest = find_site(rig.sites, "chest")) {
     const vec3 c = site_position(*chest, rig.bind_model), top = upper - vec3(0, 0.7f * torso_r, 0);
     const vec3 axis = top - belly;
@@ -92,11 +89,11 @@ SigningRig make_signing_rig(const Avatar& avatar) {
     torso_r = std::clamp(glm::distance(c, belly + k * axis), 0.08f, 0.25f);
   }
   rig.body.push_back({"torso", vt6, belly, upper - vec3(0, 0.7f * torso_r, 0), torso_r});
-  const vec3 neck_a = position_of(rig.bind_model, vc7), neck_b = position_of(rig.bind_model, skull);
+  const vec3 neck_a = joint_position(rig.bind_model, vc7), neck_b = joint_position(rig.bind_model, skull);
   const float neck_r = std::clamp(distance_to_site(rig, "neck", 0.5f * (neck_a + neck_b), 0.05f), 0.03f, 0.1f);
   rig.body.push_back({"neck", need(s, "vc4"), neck_a, neck_b, neck_r});
   const int crown = s.find("skull_tip");
-  const vec3 top = crown >= 0 ? position_of(rig.bind_model, crown) : neck_b + vec3(0, 0.16f, 0);
+  const vec3 top = crown >= 0 ? joint_position(rig.bind_model, crown) : neck_b + vec3(0, 0.16f, 0);
   const vec3 head_c = 0.5f * (neck_b + top) + vec3(0, 0, 0.015f);
   const float head_r = std::clamp(distance_to_site(rig, "forehead", head_c, 0.09f), 0.06f, 0.14f) * 0.92f;
   rig.body.push_back({"head", skull, head_c - vec3(0, 0.02f, 0), head_c + vec3(0, 0.02f, 0), head_r});
@@ -113,7 +110,7 @@ SigningRig make_signing_rig(const Avatar& avatar) {
     rig.body.push_back({"face", skull, low, high, r});
   }
   for (CollisionCapsule& c : rig.body) {  // model space at bind pose → the carrying joint's frame
-    const mat4 to_joint = glm::inverse(rig.bind_model[static_cast<std::size_t>(c.joint)]);
+    const mat4 to_joint = glm::inverse(rig.bind_model[joint_slot(c.joint)]);
     c.a = vec3(to_joint * vec4(c.a, 1.0f));
     c.b = vec3(to_joint * vec4(c.b, 1.0f));
   }
@@ -123,7 +120,7 @@ SigningRig make_signing_rig(const Avatar& avatar) {
 float body_signed_distance(const SigningRig& rig, std::span<const mat4> model, const vec3& p, vec3* outward) {
   float best = 1e9f;
   for (const CollisionCapsule& c : rig.body) {
-    const mat4& joint = model[static_cast<std::size_t>(c.joint)];
+    const mat4& joint = model[joint_slot(c.joint)];
     const vec3 a = vec3(joint * vec4(c.a, 1.0f)), b = vec3(joint * vec4(c.b, 1.0f));
     const vec3 ab = b - a;
     const float len2 = glm::dot(ab, ab);
@@ -146,12 +143,12 @@ void apply_hand_posture(const SigningRig& rig, Hand hand, const HandPosture& pos
   const quat to_wrist = glm::inverse(h.rest_wrist_rotation) * h.rest_frame.rotation;
   const quat from_wrist = glm::inverse(to_wrist);
   const Finger order[4] = {Finger::Index, Finger::Middle, Finger::Ring, Finger::Pinky};
-  for (int f = 0; f < 4; ++f) {
+  for (std::size_t f = 0; f < 4; ++f) {
     const FingerJointRotations r = finger_joint_rotations(posture, order[f], hand);
-    const auto& j = h.fingers[static_cast<std::size_t>(f + 1)];
-    pose.rotations[static_cast<std::size_t>(j[0])] = s.rest_rotations[static_cast<std::size_t>(j[0])] * (to_wrist * r.mcp * from_wrist);
-    pose.rotations[static_cast<std::size_t>(j[1])] = s.rest_rotations[static_cast<std::size_t>(j[1])] * (to_wrist * r.pip * from_wrist);
-    pose.rotations[static_cast<std::size_t>(j[2])] = s.rest_rotations[static_cast<std::size_t>(j[2])] * (to_wrist * r.dip * from_wrist);
+    const auto& j = h.fingers[f + 1];
+    pose.rotations[joint_slot(j[0])] = s.rest_rotations[joint_slot(j[0])] * (to_wrist * r.mcp * from_wrist);
+    pose.rotations[joint_slot(j[1])] = s.rest_rotations[joint_slot(j[1])] * (to_wrist * r.pip * from_wrist);
+    pose.rotations[joint_slot(j[2])] = s.rest_rotations[joint_slot(j[2])] * (to_wrist * r.dip * from_wrist);
   }
   // Thumb: on the avatar's CMC (left hand; the right mirrors y and z) +x flexes the thumb across
   // the palm toward the little finger, −y turns it about its own axis (opposition, the thumb hangs
@@ -160,31 +157,15 @@ void apply_hand_posture(const SigningRig& rig, Hand hand, const HandPosture& pos
   const float mirror = hand == Hand::Right ? -1.0f : 1.0f;
   const ThumbPose& t = posture.thumb;
   const auto& tj = h.fingers[0];
-  pose.rotations[static_cast<std::size_t>(tj[0])] =
+  pose.rotations[joint_slot(tj[0])] =
       joint_rotation(s, tj[0], vec3(t.cmc_flexion, mirror * -t.cmc_opposition, mirror * -t.cmc_abduction));
-  pose.rotations[static_cast<std::size_t>(tj[1])] = joint_rotation(s, tj[1], vec3(t.mcp, 0, 0));
-  pose.rotations[static_cast<std::size_t>(tj[2])] = joint_rotation(s, tj[2], vec3(t.ip, 0, 0));
+  pose.rotations[joint_slot(tj[1])] = joint_rotation(s, tj[1], vec3(t.mcp, 0, 0));
+  pose.rotations[joint_slot(tj[2])] = joint_rotation(s, tj[2], vec3(t.ip, 0, 0));
   // A hand posture is what this hand can make: some notated shapes ask a thumb or finger joint for
   // more than its range. Clamped here, so every user of the posed hand (contact geometry, keeping
   // the hand out of the body) sees the fingers as they will be performed.
   for (const auto& finger : h.fingers)
-    for (int j : finger) clamp_joint_to_limits(s, j, pose.rotations[static_cast<std::size_t>(j)]);
-}
-
-HandGeometry hand_geometry(const SigningRig& rig, Hand hand, const Pose& pose) {
-  const HandRig& h = rig.hand(hand);
-  const Skeleton& s = rig.skeleton();
-  // FK of the hand alone, relative to the wrist (the chain above it does not matter).
-  thread_local std::vector<mat4> model;
-  model.resize(s.size());
-  local_to_model(s, pose, model);
-  const mat4 inv = glm::inverse(model[static_cast<std::size_t>(h.wrist)]);
-  auto local = [&](int j) { return vec3(inv * model[static_cast<std::size_t>(j)][3]); };
-  HandGeometry g;
-  g.palm_centre = h.palm_centre_local;
-  for (int f = 0; f < 5; ++f) g.tips[static_cast<std::size_t>(f)] = local(h.tips[static_cast<std::size_t>(f)]);
-  for (int f = 1; f < 5; ++f) g.knuckles[static_cast<std::size_t>(f - 1)] = local(h.fingers[static_cast<std::size_t>(f)][0]);
-  return g;
+    for (int j : finger) clamp_joint_to_limits(s, j, pose.rotations[joint_slot(j)]);
 }
 
 }  // namespace gestura

@@ -12,6 +12,7 @@
 #include "gestura/body/body_sites.hpp"
 #include "gestura/ik/chain.hpp"
 #include "gestura/ik/swivel_arm.hpp"
+#include "gestura/sign/hand.hpp"
 #include "gestura/sign/phonology_direction.hpp"
 #include "gestura/sign/phonology_handshape.hpp"
 
@@ -44,10 +45,10 @@ struct SigningRig {
   std::vector<mat4> bind_model;       // model matrices at bind pose
   Pose rest;                          // bind pose
   Pose neutral;                       // arms in the relaxed signing posture (hands low, in front)
-  std::array<HandRig, 2> hands;       // [0] = right (dominant), [1] = left
+  ByHand<HandRig> hands;
   std::vector<CollisionCapsule> body; // torso, neck, head, lower face
 
-  const HandRig& hand(Hand h) const { return hands[h == Hand::Right ? 0 : 1]; }
+  const HandRig& hand(Hand h) const { return hands[h]; }
   const Skeleton& skeleton() const { return avatar->skeleton; }
 };
 
@@ -62,13 +63,5 @@ float body_signed_distance(const SigningRig& rig, std::span<const mat4> model, c
 // into the joints' limits.
 void apply_hand_posture(const SigningRig& rig, Hand hand, const HandPosture& posture, Pose& pose);
 
-// Hand geometry for a posture: positions relative to the wrist, in the wrist's frame, of the palm
-// centre, the five fingertips and the knuckles (for contact and collision).
-struct HandGeometry {
-  vec3 palm_centre;
-  std::array<vec3, 5> tips;
-  std::array<vec3, 4> knuckles;
-};
-HandGeometry hand_geometry(const SigningRig& rig, Hand hand, const Pose& pose);
 
 }  // namespace gestura

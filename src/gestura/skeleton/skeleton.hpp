@@ -63,6 +63,10 @@ struct Skeleton {
   int total_dofs() const;
 };
 
+// A joint's slot in the per-joint arrays (poses, model matrices, clip tracks). Joints are ints so
+// that -1 can say "none"; only an existing joint has a slot.
+constexpr std::size_t joint_slot(int joint) { return static_cast<std::size_t>(joint); }
+
 // A pose: local transforms of every joint, structure of arrays.
 struct Pose {
   std::vector<vec3> translations;
@@ -82,6 +86,8 @@ void local_to_model(std::span<const std::int16_t> parents, std::span<const vec3>
                     std::span<mat4> out, const mat4& root = mat4(1.0f));
 void local_to_model(const Skeleton& skeleton, const Pose& pose, std::span<mat4> out);
 
+// One joint's position in model space (column 3 of its model matrix).
+inline vec3 joint_position(std::span<const mat4> model, int joint) { return vec3(model[joint_slot(joint)][3]); }
 // Joint positions in model space (column 3 of each model matrix).
 void model_positions(std::span<const mat4> model, std::span<vec3> out);
 

@@ -38,6 +38,14 @@ void PoseEditor::record(const std::string& merge_key) {
   if (undo_.size() > 500) undo_.erase(undo_.begin());
   redo_.clear();
   last_key_ = merge_key;
+  ++revision_;
+}
+
+void PoseEditor::assign(const Pose& pose, std::span<const float> morphs) {
+  if (pose.size() != pose_.size() || morphs.size() != morphs_.size()) return;
+  pose_ = pose;
+  std::copy(morphs.begin(), morphs.end(), morphs_.begin());
+  undo_.clear(), redo_.clear(), last_key_.clear();
 }
 
 bool PoseEditor::set_angles_degrees(int joint, const vec3& degrees, const std::string& merge_key) {
@@ -113,6 +121,21 @@ void PoseEditor::mirror() {
   }
 }
 
+void PoseEditor::set_pose(const Pose& pose, const std::string& merge_key) {
+  if (pose.size() != pose_.size()) return;
+  record(merge_key);
+  pose_ = pose;
+  clamp_to_limits(*skeleton_, pose_);
+}
+
+void PoseEditor::set_pose_and_morphs(const Pose& pose, std::span<const float> morphs, const std::string& merge_key) {
+  if (pose.size() != pose_.size() || morphs.size() != morphs_.size()) return;
+  record(merge_key);
+  pose_ = pose;
+  clamp_to_limits(*skeleton_, pose_);
+  std::copy(morphs.begin(), morphs.end(), morphs_.begin());
+}
+
 void PoseEditor::reset() {
   record({});
   pose_ = rest_pose(*skeleton_);
@@ -126,6 +149,7 @@ bool PoseEditor::undo() {
   morphs_ = undo_.back().morphs;
   undo_.pop_back();
   last_key_.clear();
+  ++revision_;
   return true;
 }
 
@@ -136,6 +160,7 @@ bool PoseEditor::redo() {
   morphs_ = redo_.back().morphs;
   redo_.pop_back();
   last_key_.clear();
+  ++revision_;
   return true;
 }
 

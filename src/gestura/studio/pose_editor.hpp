@@ -3,6 +3,7 @@
 // skeleton plus face morph weights, edited joint by joint inside the joint limits (bend about the
 // joint's flexion axis, pivot about the limb's own axis), hands set from handshape presets, the
 // whole pose mirrored left/right; every edit undoable.
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -39,6 +40,15 @@ class PoseEditor {
   // Left and right exchanged and reflected in the body's mid-plane (x = 0).
   void mirror();
   void reset();
+  // Shows another pose without an undo step (the timeline's pose at the playhead): the history is
+  // cleared, as the edits it held were of the pose shown before.
+  void assign(const Pose& pose, std::span<const float> morphs);
+  // Counts edits, undo and redo (not assign), so a caller can tell whether the user changed the pose.
+  std::uint64_t revision() const { return revision_; }
+  // Replaces the pose (an IK drag, a key read from the timeline), clamped into the limits.
+  void set_pose(const Pose& pose, const std::string& merge_key = {});
+  // Replaces pose and face weights together (sizes must match the editor's).
+  void set_pose_and_morphs(const Pose& pose, std::span<const float> morphs, const std::string& merge_key = {});
 
   bool undo();
   bool redo();
@@ -60,6 +70,7 @@ class PoseEditor {
   std::vector<float> morphs_;
   std::vector<Snapshot> undo_, redo_;
   std::string last_key_;
+  std::uint64_t revision_ = 0;
 };
 
 // True for the finger and thumb joints of one hand ("r_index2", "l_thumb1", ...).

@@ -27,7 +27,19 @@ const std::map<std::string, Arity>& actions() {
       {"sentence", {1, 1, true}}, {"quiz", {1, 1}},         {"answer", {1, 1}},        {"next-question", {0, 0}},
       {"views", {1, 1}},         {"speed", {1, 1}},         {"export-sign", {1, 1}},
       {"pose-joint", {1, 1}},    {"pose-angles", {3, 3}},   {"pose-hand", {2, 2}},     {"pose-mirror", {0, 0}},
-      {"pose-morph", {2, 2}}};
+      {"pose-morph", {2, 2}},
+      // pose editor: pick a limb by clicking the view, drag a hand or foot (IK)
+      {"pose-pick", {2, 2}},     {"pose-drag", {4, 4}},     {"pose-drag-by", {4, 4}},
+      // timeline editor
+      {"timeline-say", {1, 1, true}}, {"timeline-sign", {0, 0}}, {"timeline-clear", {0, 0}}, {"key-pose", {0, 1}},
+      {"key", {3, 3}},           {"move-key", {3, 3}},      {"move-keys-at", {2, 2}},  {"key-interp", {3, 6}},
+      {"bar-duration", {2, 2}},  {"export-timeline", {1, 1}}, {"save-clip-sign", {1, 2}}, {"loop", {1, 1}},
+      {"timeline-zoom", {1, 1}}, {"strip-zoom", {1, 1}},
+      // figure editor
+      {"figure-joint", {1, 1}},  {"figure-rename", {1, 1}}, {"figure-add", {4, 4}},    {"figure-remove", {0, 0}},
+      {"figure-copy", {0, 0}},   {"figure-mirror", {0, 0}}, {"figure-offset", {3, 3}}, {"figure-limits", {3, 3}},
+      {"figure-order", {1, 1}},  {"figure-dh", {0, 0}},     {"figure-save", {1, 1}},   {"figure-load", {1, 1}},
+      {"figure-view", {1, 1}}};
   return table;
 }
 

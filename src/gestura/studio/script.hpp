@@ -19,6 +19,19 @@
 //   answer GLOSS   next-question   views one|side|three-quarter|top   speed X
 //   pose editor: mode pose   pose-joint NAME   pose-angles X Y Z (degrees)   pose-hand r|l HANDSHAPE
 //   pose-mirror   pose-morph NAME WEIGHT   (undo / redo act on the pose in pose mode)
+//   pose-pick X Y (a click at that fraction of the preview: the bone under it)
+//   pose-drag JOINT X Y Z (drag the limb of JOINT until its hand or foot is at X Y Z, metres)
+//   pose-drag-by JOINT DX DY DZ (the same, relative to where the wrist or ankle is)
+//   timeline editor: mode timeline   timeline-say TEXT...   timeline-sign   timeline-clear
+//   key-pose [SECONDS]   key CHANNEL SECONDS VALUE   move-key CHANNEL INDEX SECONDS
+//   move-keys-at FROM TO   key-interp CHANNEL INDEX step|linear|catmull-rom|kb [T C B]
+//   bar-duration INDEX SECONDS   loop on|off   timeline-zoom X   strip-zoom X
+//   export-timeline FILE (.bvh .glb .gltf .json .gcl .png .gif .mp4 .webm)   save-clip-sign GLOSS [LANG]
+//   (time, play, pause, speed, undo and redo act on the timeline in timeline mode)
+//   figure editor: mode figure   figure-joint NAME   figure-rename NAME   figure-add NAME X Y Z
+//   figure-remove   figure-copy   figure-mirror   figure-offset X Y Z   figure-limits AXIS MIN MAX
+//   figure-order XYZ..ZYX   figure-dh   figure-save FILE.bvh   figure-load FILE.bvh
+//   figure-view body|sticks|both   (undo and redo act on the figure in figure mode)
 #include <string>
 #include <vector>
 

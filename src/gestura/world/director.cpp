@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <map>
 
-#include "gestura/body/avatar_source.hpp"
+#include "gestura/io/avatar_source.hpp"
 #include "gestura/lexicon/default_lexicon.hpp"
 #include "gestura/world/character_motion.hpp"
 #include "gestura/world/simulation.hpp"

@@ -46,7 +46,7 @@ void power_frame(GraspPlan& g, const vec3& axis, const vec3& point, float r, con
   }
   g.palm_normal = n;
   g.finger = f;
-  g.palm_centre = point - n * (r + rig.hands[0].palm_half_thickness + 0.004f) - f * std::min(0.02f, 0.3f * r);
+  g.palm_centre = point - n * (r + rig.hand(Hand::Right).palm_half_thickness + 0.004f) - f * std::min(0.02f, 0.3f * r);
   g.size = 2.0f * r;
   g.pivot_point = point;
   g.pivot_axis = axis;
@@ -71,7 +71,7 @@ GraspPlan choose_grasp(const WorldPrimitive& part, const vec3& from, Hand hand, 
   const mat4& m = part.to_world;
   const vec3 scale = axis_scale(m);
   const vec3 centre = vec3(m[3]);
-  const float palm = rig.hands[0].palm_half_thickness;
+  const float palm = rig.hand(Hand::Right).palm_half_thickness;
   auto flat_on = [&](const vec3& point, const vec3& outward) {
     g.type = GraspType::Flat;
     g.palm_normal = -outward;

@@ -1,4 +1,4 @@
-#include "gestura/body/avatar_source.hpp"
+#include "gestura/io/avatar_source.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,8 +7,8 @@
 #include <limits>
 #include <string_view>
 
-#include "gestura/body/avatar_import.hpp"
 #include "gestura/body/avatar_look.hpp"
+#include "gestura/io/avatar_import.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/body/skinning.hpp"
 #include "gestura/core/error.hpp"

@@ -1,4 +1,4 @@
-#include "gestura/body/avatar_source.hpp"
+#include "gestura/io/avatar_source.hpp"
 
 #include <gtest/gtest.h>
 

@@ -13,9 +13,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gestura/body/avatar_import.hpp"
+#include "gestura/io/avatar_import.hpp"
 #include "gestura/body/avatar_skeleton.hpp"
-#include "gestura/body/avatar_source.hpp"
+#include "gestura/io/avatar_source.hpp"
 #include "gestura/body/skinning.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/io/gltf_animation.hpp"

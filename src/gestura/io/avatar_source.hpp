@@ -7,7 +7,7 @@
 //   "makehuman:DIR"   the MakeHuman base mesh and default rig in DIR (base.obj, rigs/default.mhskel,
 //                     rigs/default_weights.mhw), standing on y = 0 and facing +Z like the default
 //   "FILE.vrm", "FILE.glb", "FILE.gltf"
-//                     a user's rigged avatar: VRM 1.0 / 0.x or a skinned glTF (body/avatar_import.hpp)
+//                     a user's rigged avatar: VRM 1.0 / 0.x or a skinned glTF (io/avatar_import.hpp)
 //
 // All give the H-Anim joints the signing rig needs, so every downstream command works on any.
 #include <string>

@@ -1,4 +1,4 @@
-#include "gestura/body/avatar_import.hpp"
+#include "gestura/io/avatar_import.hpp"
 
 #include <algorithm>
 #include <cctype>
