@@ -284,6 +284,114 @@ void text_seeds(const fs::path& source) {
        "\n");
 }
 
+// ---- the world, the server and the studio -------------------------------------------------------
+
+const std::set<std::string> kJsonTokens{"{", "}", "[", "]", ":", ",", "\"", "null", "true", "false", "1e308", "-0",
+                                        "1e7", "10000001", "\\u0000", "\\ud800"};
+
+void world_seeds(const fs::path& source) {
+  // Scenes: the example living room and small scenes written here (each shape, a door, groups,
+  // prototypes, characters, lights and cameras of every kind).
+  std::string living_room;
+  for (const auto& file : fs::directory_iterator(source / "data" / "scenes"))
+    if (file.path().extension() == ".json") {
+      seed("scene_json", read_text(file.path()));
+      if (living_room.empty()) living_room = read_text(file.path());
+    }
+  seed("scene_json", R"({"version": 1, "name": "tiny", "objects": [{"name": "floor", "shape": "plane", "size": [4, 4]}]})");
+  seed("scene_json", R"({"version": 1, "name": "shapes", "background": [0.2, 0.3, 0.4],
+  "materials": {"red": {"color": "#ff0000", "specular": 0.5}, "blue": "#0000ff"},
+  "prototypes": {"stool": {"material": "red", "parts": [
+    {"shape": "cylinder", "radius": 0.2, "height": 0.05, "position": [0, 0.45, 0], "segments": 16},
+    {"shape": "sphere", "radius": 0.05, "position": [0, 0.1, 0], "segments": 8}]}},
+  "objects": [
+    {"name": "floor", "shape": "box", "size": [6, 0.1, 6], "position": [0, -0.05, 0], "material": "blue"},
+    {"name": "stool", "instance": "stool", "position": [1, 0, 1], "rotation": 45},
+    {"name": "pillar", "shape": "cylinder", "radius": 0.1, "height": 2, "position": [-1, 1, 0], "rotation": [90, 0, 0], "obstacle": false},
+    {"name": "door", "position": [3, 0, 1], "rotation": [0, -90, 0], "door": {"handle": [0.77, 1.02, 0.06], "open_angle": -95, "angle": 10},
+     "parts": [{"shape": "box", "size": [0.86, 2.08, 0.04], "position": [0.45, 1.045, 0]}]},
+    {"name": "statue", "shape": "mesh", "file": "statue.glb", "unit": 0.01}],
+  "places": {"window": {"position": [-2, 0], "facing": 90}, "shelf": {"position": [0, 1.2, 2]}},
+  "characters": [{"name": "anna", "sex": "female", "height": 1.66, "build": 0.9, "place": "window", "colors": {"cloth": "#2e3d5c"}},
+                 {"name": "ben", "avatar": "default", "position": [1, -1], "facing": 180, "radius": 0.35, "speed": 1.1}],
+  "lights": [{"type": "directional", "direction": [-0.4, -1, -0.3], "color": "#fff4e6", "intensity": 1, "shadows": true},
+             {"type": "point", "position": [0, 2.5, 0], "intensity": 0.5}, {"type": "ambient", "color": [0.8, 0.8, 0.9]}],
+  "cameras": [{"name": "wide", "position": [0, 2, 5], "target": [0, 1, 0], "fov": 50},
+              {"name": "plan", "projection": "orthographic", "position": [0, 10, 0], "target": [0, 0, 0], "view_height": 8},
+              {"name": "follow", "position": [0, 1.6, 3], "look_at": "anna"}],
+  "script": "anna walks to the stool; ben opens the door"})");
+  std::set<std::string> scene = kJsonTokens;
+  for (const char* t : {"\"version\"", "\"name\"", "\"seed\"", "\"background\"", "\"materials\"", "\"color\"", "\"specular\"",
+                        "\"prototypes\"", "\"parts\"", "\"objects\"", "\"shape\"", "\"box\"", "\"plane\"", "\"cylinder\"",
+                        "\"sphere\"", "\"mesh\"", "\"size\"", "\"radius\"", "\"height\"", "\"segments\"", "\"file\"",
+                        "\"unit\"", "\"position\"", "\"rotation\"", "\"material\"", "\"instance\"", "\"door\"", "\"handle\"",
+                        "\"open_angle\"", "\"angle\"", "\"obstacle\"", "\"places\"", "\"facing\"", "\"characters\"",
+                        "\"avatar\"", "\"build\"", "\"sex\"", "\"female\"", "\"male\"", "\"place\"", "\"colors\"",
+                        "\"speed\"", "\"lights\"", "\"type\"", "\"directional\"", "\"point\"", "\"ambient\"",
+                        "\"direction\"", "\"intensity\"", "\"shadows\"", "\"cameras\"", "\"target\"", "\"look_at\"",
+                        "\"fov\"", "\"projection\"", "\"orthographic\"", "\"view_height\"", "\"script\"", "\"#a9b4bf\""})
+    scene.insert(t);
+  dictionary("scene_json", scene);
+
+  // Scripts: the example scene's, the forms the script reader documents, and the JSON form.
+  if (!living_room.empty()) {
+    const json doc = json::parse(living_room, nullptr, false);
+    if (doc.is_object() && doc.contains("script") && doc["script"].is_array())
+      for (const json& line : doc["script"])
+        if (line.is_string()) seed("scene_script", line.get<std::string>());
+  }
+  seed("scene_script", "anna walks to the chair; anna says \"Hello, sit down please.\"; ben turns to anna\n"
+                       "ben walks to the door and opens it\nmeanwhile anna follows ben at 1.5\n"
+                       "anna walks to the window while signing \"It is raining.\"\nwait 2; at 12 s: ben looks at anna\n");
+  seed("scene_script", "ben turns left 45 degrees, then turns around; anna faces the door\nanna reaches for the cup then "
+                       "takes it\nben touches the chair and closes the door\nanna goes to the window at 0.8 m/s; "
+                       "ben stops looking; anna stops following; ben stops\n");
+  seed("scene_script", R"([{"actor": "anna", "do": "walk", "to": "chair", "speed": 1.2}, {"wait": 2},
+ {"actor": "ben", "do": "turn", "to": "anna", "with_previous": true}, {"actor": "ben", "do": "say", "text": "hello"},
+ "anna opens the door"])");
+  std::set<std::string> script = {"\"", ";", ",", "\n", ":", " and ", " then ", " while ", "meanwhile ", "at ", " s:",
+                                  "anna", "ben", "chair", "door", "cup", "window", "it", "the ", "m/s", "degrees"};
+  for (const char* verb : {"walks to", "goes to", "runs to", "moves to", "turns to", "turns towards", "turns left",
+                           "turns right", "turns around", "faces", "says", "signs", "looks at", "stops looking",
+                           "follows", "stops following", "stops", "reaches for", "grasps", "takes", "touches", "opens",
+                           "closes", "wait"})
+    script.insert(verb);
+  for (const char* t : {"\"actor\"", "\"do\"", "\"to\"", "\"text\"", "\"speed\"", "\"angle\"", "\"distance\"", "\"wait\"",
+                        "\"with_previous\"", "\"at\"", "\"script\"", "[", "]", "{", "}"})
+    script.insert(t);
+  dictionary("scene_script", script);
+}
+
+void front_door_seeds() {
+  // Request bodies of gestura serve (docs/server.md) and the other forms the field tables read.
+  seed("request_json", R"({"text": "Hello, how are you?", "lang": "ase", "speed": 1.2, "mouthing": false, "fps": 30})");
+  seed("request_json", R"({"hamnosys": "\ue001\ue00d\ue020\ue03c\ue058", "speed": 0.8})");
+  seed("request_json", R"({"names": "hamflathand,hamextfingeru,hampalml,hamforehead,hamtouch", "gloss": "HELLO"})");
+  seed("request_json", R"({"text": "my name is anna", "lang": "ase", "open": true})");
+  seed("request_json", R"({"text": "where do you live", "size": "640x360", "camera": "front", "nonmanuals": true})");
+  seed("request_json", R"({"text": "", "speed": 1e308, "fps": -1, "avatar": "ana", "height": 1.6, "output": "x.glb"})");
+  std::set<std::string> request = kJsonTokens;
+  for (const char* t : {"\"text\"", "\"lang\"", "\"speed\"", "\"mouthing\"", "\"nonmanuals\"", "\"fps\"", "\"size\"",
+                        "\"camera\"", "\"hamnosys\"", "\"names\"", "\"gloss\"", "\"open\"", "\"avatar\"", "\"height\"",
+                        "\"build\"", "\"sex\"", "\"output\"", "\"ase\"", "\"bfi\"", "\"front\"", "\"1280x720\""})
+    request.insert(t);
+  dictionary("request_json", request);
+
+  // The studio's recovery file, as the studio writes it (studio/recovery.cpp).
+  seed("studio_draft", R"({"draft": {"gloss": "HOUSE", "lang": "ase", "variant": 1,
+  "names": "hamflathand,hamextfingeru,hampalml,hamshoulders,hamparbegin,hammovedo,hamreplace,hamextfingerd,hamparend",
+  "keywords": "house,home", "meaning": "a dwelling", "source": "me", "licence": "CC0-1.0", "from_builtin": true,
+  "origin": {"gloss": "HOUSE", "lang": "ase", "variant": 2}}})");
+  seed("studio_draft", R"({"draft": {"gloss": "NEW", "lang": "bfi", "names": "hamfist, hamthumbacrossmod hamextfingeru"}})");
+  seed("studio_draft", R"({"draft": {"gloss": "X", "lang": "ase", "names": "hamflathand,hamparbegin"}})");
+  std::set<std::string> draft = kJsonTokens;
+  for (const char* t : {"\"draft\"", "\"gloss\"", "\"lang\"", "\"variant\"", "\"names\"", "\"keywords\"", "\"meaning\"",
+                        "\"source\"", "\"licence\"", "\"from_builtin\"", "\"origin\"", "hamflathand", "hamfist",
+                        "hamextfingeru", "hampalml", "hamparbegin", "hamparend", "hamseqbegin", "hamrepeatfromstart"})
+    draft.insert(t);
+  dictionary("studio_draft", draft);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -300,6 +408,8 @@ int main(int argc, char** argv) {
     const Motions motions;
     motion_seeds(shared, motions);
     text_seeds(source);
+    world_seeds(source);
+    front_door_seeds();
   } catch (const std::exception& e) {
     std::cerr << "gestura-fuzz-seeds: " << e.what() << "\n";
     return 1;

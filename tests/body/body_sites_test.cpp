@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "gestura/body/avatar.hpp"
@@ -119,4 +121,28 @@ TEST(BodySites, OnTheAvatarTheChinIsTheJawsFrontWithUnderChinBeneathIt) {
   // A site's normal is the surface's around it, not one triangle's: the closed lips' seam once
   // gave the lips a normal 57° off the face's forward direction.
   EXPECT_GT(normal("lips").z, 0.8f);
+}
+
+TEST(BodySites, OnTheAvatarMidlineNormalsFaceStraightAndPairsMirror) {
+  // The avatar is mirror-symmetric, so a site on the midline faces straight ahead (no sideways
+  // lean) and a left site's normal mirrors its right twin's. The nose's normal once leaned 16° to
+  // the left: it was the tip's triangle normals, which follow how marching cubes cut a small,
+  // sharp feature, not the surface.
+  const Avatar avatar = build_avatar();
+  const Skeleton& s = avatar.skeleton;
+  const auto sites = find_body_sites(s, avatar.mesh);
+  std::vector<mat4> model(s.size());
+  local_to_model(s, rest_pose(s), model);
+  const auto normal = [&](const std::string& n) {
+    const BodySite* site = find_site(sites, n.c_str());
+    EXPECT_NE(site, nullptr) << n;
+    return site ? site_normal(*site, model) : vec3(0.0f);
+  };
+  for (const char* n : {"forehead", "eyebrows", "nose", "upper_lip", "lips", "lower_lip", "chin", "chest", "upper_chest"})
+    EXPECT_LT(std::abs(normal(n).x), std::sin(glm::radians(5.0f))) << n << " leans sideways";
+  for (const char* n : {"eye", "cheek", "ear", "temple", "shoulder_top", "upper_arm", "elbow", "forearm", "palm",
+                        "back_of_hand", "index_tip"}) {
+    const vec3 l = normal(std::string("l_") + n), r = normal(std::string("r_") + n);
+    EXPECT_GT(glm::dot(l, vec3(-r.x, r.y, r.z)), std::cos(glm::radians(8.0f))) << n << ": left and right differ";
+  }
 }

@@ -118,7 +118,10 @@ ConvertResult run(const ConvertRequest& request, const RunContext&) {
   }
   MotionFile in = read_motion_file(request.input, MotionReadOptions{request.scale, request.z_up, request.skeleton}, "input");
   const std::string ext = lower_extension(request.output);
-  const auto& [format, write] = writers().at(ext);
+  // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in the lambda below.
+  const auto& writer = writers().at(ext);
+  const std::string& format = writer.first;
+  const Writer& write = writer.second;
   ConvertResult result;
   result.format_in = in.format;
   result.format_out = format;

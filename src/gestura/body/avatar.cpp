@@ -233,8 +233,14 @@ Avatar build_avatar(const AvatarParams& params, const AvatarOptions& options) {
   // The hairline, except where hair stands off the scalp (it stays hair there).
   for (MaterialBorder& border : borders)
     if (border.below == MaterialId::Hair && head)
+      // One continuous field (min for "or", max for "and" of the negative sides), so the cut
+      // follows a smooth level line: the yes/no test it replaces put the colour's edge wherever
+      // the triangles happened to lie, a ragged hairline in side views.
       border.field = [head, k, style = params.hair](const vec3& p) {
-        return head->distance(p) > 0.002f * k && loose_hair_reaches(style, p, k) ? -0.01f : hair_field(p, k, style);
+        const float line = hair_field(p, k, style);
+        const float standing_off = 0.002f * k - head->distance(p);
+        const float reaches = style == HairStyle::Bob ? -1.0f : line - kLooseHairBelowLine * k;
+        return std::min(line, std::max(standing_off, reaches));
       };
   borders.push_back({MaterialId::Nail, MaterialId::Skin, [&nails](const vec3& p) { return nails.field(p); }});
   const float hem = params.hem * params.height;

@@ -182,8 +182,10 @@ void add_trunk(VolumeBuilder& b, const AvatarParams& p, float k) {
               sh + vec3(-dir * 0.02f, 0.008f, -0.006f) * k, 0.024f * k, 0.030f * k, cloth, 0.04f * k);
     b.capsule("vt1", vec3(dir * 0.050f, 1.448f - 0.033f * g, -0.050f) * k, sh + vec3(-dir * 0.035f, -0.004f, -0.015f) * k,
               0.033f * k * g, 0.030f * k * g, cloth, 0.035f * k);
-    b.ellipsoid(s + "shoulder", sh + vec3(dir * 0.010f, -0.033f, 0.0f) * k, vec3(0.048f, 0.068f, 0.052f) * k * g, cloth,
-                0.03f * k);
+    // The deltoid: longer down the arm than across, and only 8 mm proud of the upper arm's
+    // capsule (it was 12 mm, a ball that read as a puffed sleeve, most of all on a raised arm).
+    b.ellipsoid(s + "shoulder", sh + vec3(dir * 0.006f, -0.036f, 0.0f) * k, vec3(0.048f, 0.072f, 0.050f) * k * g, cloth,
+                0.035f * k);
     // The hollow of the armpit: the chest wall under the shoulder falls back a centimetre, so the
     // hanging arm (added later, not carved) stays clear of it below the armpit.
     b.ellipsoid("vt6", vec3(dir * (chest_breadth + 0.012f * k), 1.230f * k, -0.010f * k), vec3(0.022f, 0.075f, 0.050f) * k, cloth,
@@ -212,7 +214,9 @@ void add_head(VolumeBuilder& b, const AvatarParams& p, float k, float jaw_open_d
   Primitive hair;
   hair.shape = PrimitiveShape::Sculpt;
   hair.sculpt = std::make_shared<HairSculpt>(head, p.hair);
-  b.push(hair, "skullbase", MaterialId::Hair, 0.002f * k);
+  // Blended over 6 mm into the scalp: where the shell rises out of the skin the two surfaces
+  // meet at an edge, which 4 mm cells sampled as a sawtooth (the ragged hairline of side views).
+  b.push(hair, "skullbase", MaterialId::Hair, 0.006f * k);
   auto v = [k](float x, float y, float z) { return vec3(x, y, z) * k; };
   if (p.hair == HairStyle::Bun)
     b.ellipsoid("skullbase", v(0.0f, 1.652f, -0.094f), v(0.031f, 0.029f, 0.026f), MaterialId::Hair, 0.012f * k);

@@ -30,6 +30,14 @@ std::optional<RayHit> cast_ray(const Mesh& mesh, const vec3& origin, const vec3&
     const float dist = glm::dot(e2, q) * inv;
     if (dist <= 1e-6f || (best && dist >= best->distance)) continue;
     best = RayHit{dist, origin + dir * dist, glm::normalize(glm::cross(e1, e2))};
+    if (mesh.normals.size() == mesh.positions.size()) {
+      // A triangle's own normal on a small, sharp feature (the nose's tip, 4 mm triangles) follows
+      // how marching cubes cut it, which is not mirror-symmetric: it leaned the nose site's normal
+      // 16° to one side. The interpolated vertex normals are the surface's.
+      const vec3 smooth = (1.0f - u - v) * mesh.normals[mesh.indices[3 * t]] + u * mesh.normals[mesh.indices[3 * t + 1]] +
+                          v * mesh.normals[mesh.indices[3 * t + 2]];
+      if (glm::dot(smooth, smooth) > 1e-12f) best->normal = glm::normalize(smooth);
+    }
   }
   return best;
 }

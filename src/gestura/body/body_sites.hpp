@@ -50,7 +50,10 @@ std::string body_sites_json(const Skeleton& skeleton, std::span<const BodySite> 
 struct RayHit {
   float distance;
   vec3 point;
-  vec3 normal;  // normal of the hit triangle from its winding: outward for counter-clockwise meshes
+  // The surface's normal there: the mesh's vertex normals interpolated across the hit triangle when
+  // it has them (for a polygonised avatar, the field's gradient: the surface's own direction, not
+  // its tessellation's), else the triangle's from its winding (outward for counter-clockwise meshes).
+  vec3 normal;
 };
 std::optional<RayHit> cast_ray(const Mesh& mesh, const vec3& origin, const vec3& direction);
 

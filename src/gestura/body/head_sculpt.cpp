@@ -157,12 +157,15 @@ float HeadSculpt::radius_towards(const vec3& u) const {
   r += (mid - egg_mid) * mask;
 
   // Nose: dorsum from the nasal root to the tip, the rounded tip, the alae.
-  const float nose_half = kNoseHalfWidth(p);
+  // Across the dorsum (1 - x²)³ (1 + 2.7 x²): C2 where it meets the face like (1 - x²)³, but its
+  // top is ten times less curved (a ridge about 5 mm round instead of 1 mm, which 4 mm triangles
+  // drew as a sharp edge), so it is a little narrower for the same fullness.
+  const float nose_half = 0.85f * kNoseHalfWidth(p);
   const float nose_size = proportions::by_sex(sex_, 0.90f, 1.0f, 1.10f);
   const float across_nose = t / nose_half;
   if (across_nose < 1.0f) {
-    const float profile = (1.0f - across_nose * across_nose);
-    r += nose_size * kNoseHeight(p) * profile * profile * profile;
+    const float x2 = across_nose * across_nose, profile = 1.0f - x2;
+    r += nose_size * kNoseHeight(p) * profile * profile * profile * (1.0f + 2.7f * x2);
   }
   r += nose_size * (0.0028f * bump_at(ts, p, 0.0f, -15.0f, 6.0f, 4.2f) + 0.0042f * bump_at(ts, p, 9.0f, -20.5f, 5.0f, 4.0f));
 
@@ -176,8 +179,10 @@ float HeadSculpt::radius_towards(const vec3& u) const {
   // Brow ridge (stronger in men), eye sockets, cheekbones, temples and the jaw's angles.
   const float brow = 0.0028f + 0.0020f * male - 0.0013f * female;
   r += brow * bump_at(ts, p, 14.0f, 15.5f, 20.0f, 6.5f);
-  r -= 0.0045f * bump_at(ts, p, eye_angles_.x, eye_angles_.y, 11.0f, 8.5f);
-  r += (0.0026f + 0.001f * fuller) * bump_at(ts, p, 38.0f, -8.0f, 20.0f, 13.0f);
+  // The eyes set deeper under the brow and the cheekbones fuller: with less, the profile read flat
+  // (eye, cheek and mouth nearly in one plane behind the nose).
+  r -= 0.0058f * bump_at(ts, p, eye_angles_.x, eye_angles_.y, 11.0f, 8.5f);
+  r += (0.0036f + 0.001f * fuller) * bump_at(ts, p, 38.0f, -8.0f, 20.0f, 13.0f);
   r -= 0.0015f * bump_at(ts, p, 64.0f, 17.0f, 16.0f, 14.0f);
   r += (0.0030f + 0.002f * fuller) * bump_at(ts, p, 36.0f, -28.0f, 22.0f, 14.0f);  // the cheeks over the teeth
   r += (0.0028f + 0.0015f * male - 0.0010f * female) * bump_at(ts, p, 70.0f, -48.0f, 18.0f, 13.0f);
@@ -228,7 +233,10 @@ float HeadSculpt::jaw_weight(const vec3& p) const {
   const float collapse = clamp01(-psi / open);                     // the wedge between the lips
   const float smooth = ramp(deg(2.0f), -deg(20.0f), psi);          // the cheeks, stretched
   const float half = marks_.mouth_half_width;
-  const float mouth = (1.0f - ramp(0.90f * half, 1.20f * half, std::abs(p.x))) *
+  // Across the mouth's corners the jaw's share falls from the lips' (collapse) to the cheeks'
+  // (smooth) over 1.1 half-widths: over 0.3 the shear of closing the mouth from the bind angle
+  // drew a crease from each corner down to the jaw.
+  const float mouth = (1.0f - ramp(0.90f * half, 2.00f * half, std::abs(p.x))) *
                       ramp(marks_.jaw_pivot.z - 0.001f * k_, marks_.jaw_pivot.z + 0.007f * k_, p.z);
   const float front = ramp(marks_.jaw_pivot.z - 0.040f * k_, marks_.jaw_pivot.z - 0.005f * k_, p.z);
   return front * (smooth + (collapse - smooth) * mouth);
@@ -325,7 +333,9 @@ float HairSculpt::distance(const vec3& bind_point) const {
   float thick = 0.0f, covered = 0.0f;
   switch (style_) {
     case HairStyle::Short:
-      covered = ramp(0.002f * k_, -0.014f * k_, line);
+      // The shell rises over 3 cm above the hairline: over 1.6 cm its edge stood as a ledge that
+      // the head box's 4 mm cells drew ragged in side views.
+      covered = ramp(0.002f * k_, -0.030f * k_, line);
       thick = 0.0055f + 0.0045f * ramp(5.0f, 60.0f, el);
       break;
     case HairStyle::Buzz:
@@ -337,7 +347,7 @@ float HairSculpt::distance(const vec3& bind_point) const {
       thick = 0.014f + 0.010f * ramp(0.0f, 60.0f, el);
       break;
     case HairStyle::Bun:
-      covered = ramp(0.002f * k_, -0.008f * k_, line);
+      covered = ramp(0.002f * k_, -0.018f * k_, line);
       thick = 0.0035f + 0.0015f * ramp(10.0f, 60.0f, el);
       break;
     case HairStyle::Bob:
@@ -346,6 +356,11 @@ float HairSculpt::distance(const vec3& bind_point) const {
       // following the head in towards the neck.
       thick = 0.0085f + 0.0040f * ramp(10.0f, 60.0f, el) +
               0.024f * ramp(1.600f * k_, 1.515f * k_, skin.y) * ramp(55.0f, 95.0f, around);
+      // Locks: shallow vertical waves round the back and sides, deepening towards the ends, so the
+      // light breaks up the way it does on hair (one smooth shell read as a helmet from behind).
+      // In |azimuth|, so both sides match.
+      thick += 0.0022f * ramp(45.0f, 5.0f, el) * ramp(40.0f, 80.0f, around) *
+               (0.5f + 0.5f * std::cos(deg(around) * 13.0f));
       break;
   }
   const float t = covered * thick - (1.0f - covered) * 0.003f;

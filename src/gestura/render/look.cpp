@@ -1,5 +1,6 @@
 #include "gestura/render/look.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 #include "gestura/core/error.hpp"
@@ -59,6 +60,14 @@ Look look_for(const Look& look, const Mesh& mesh) {
   for (std::size_t m = 0; m < out.colors.size(); ++m)
     if (!look.color_given[m]) out.colors[m] = mesh.material_colors[m];
   return out;
+}
+
+float shown_specular(MaterialId material, const SurfaceResponse& surface, const vec3& srgb) {
+  if (material != MaterialId::Skin && material != MaterialId::Lips && material != MaterialId::Hair) return surface.specular;
+  const vec3 linear = glm::pow(glm::clamp(srgb, vec3(0.0f), vec3(1.0f)), vec3(2.2f));
+  const float luminance = glm::dot(linear, vec3(0.2126f, 0.7152f, 0.0722f));
+  const float t = std::clamp((luminance - 0.02f) / (0.35f - 0.02f), 0.0f, 1.0f);
+  return surface.specular * (0.4f + 0.6f * t * t * (3.0f - 2.0f * t));
 }
 
 vec3 parse_hex_color(const std::string& text) {

@@ -37,6 +37,11 @@ struct Look {
 const char* material_name(MaterialId material);
 // Throws gestura::Error listing the names when `name` is none of them.
 MaterialId parse_material(const std::string& name);
+// The highlight strength a material shows in colour `srgb`: its SurfaceResponse::specular, weaker on
+// dark skin, lips and hair (to 0.4 of it on the darkest). The same gloss over a dark albedo stands
+// out as a wet, plastic sheen against the little diffuse light it returns.
+float shown_specular(MaterialId material, const SurfaceResponse& surface, const vec3& srgb);
+
 // "MATERIAL=#rrggbb" (e.g. "cloth=#202830") applied to `look`; throws gestura::Error otherwise.
 void apply_color_setting(Look& look, const std::string& setting);
 // `look` with the mesh's own colours (Mesh::material_colors) where the user gave none.

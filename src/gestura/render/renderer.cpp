@@ -536,7 +536,7 @@ void Renderer::render(std::span<const View> views, std::span<const mat4> skinnin
   vec4 surfaces[kMaterialCount];
   for (int m = 0; m < kMaterialCount; ++m) {
     const SurfaceResponse& s = look_.surfaces[static_cast<std::size_t>(m)];
-    surfaces[m] = vec4(s.wrap, s.scatter, s.specular, s.shininess);
+    surfaces[m] = vec4(s.wrap, s.scatter, shown_specular(static_cast<MaterialId>(m), s, look_.colors[static_cast<std::size_t>(m)]), s.shininess);
   }
   glUniform4fv(g.u_surface, kMaterialCount, &surfaces[0].x);
   // The capsules where the pose puts them (skinning = posed model × inverse bind).

@@ -277,7 +277,7 @@ int SceneRenderer::add_character(const Mesh& mesh, const Look& look) {
     const std::size_t m = std::min<std::size_t>(mesh.materials[i], kMaterialCount - 1);
     albedo[i] = linear(look.colors[m]);
     const SurfaceResponse& s = look.surfaces[m];
-    surface[i] = vec4(s.wrap, s.scatter, s.specular, s.shininess);
+    surface[i] = vec4(s.wrap, s.scatter, shown_specular(static_cast<MaterialId>(m), s, look.colors[m]), s.shininess);
   }
   glGenVertexArrays(1, &c->vao);
   glGenBuffers(5, c->buffers);

@@ -22,6 +22,7 @@
 #include "gestura/serve/look_choice.hpp"
 #include "gestura/serve/room.hpp"
 #include "gestura/serve/public_request.hpp"
+#include "gestura/serve/request_json.hpp"
 #include "gestura/serve/static_files.hpp"
 
 #ifndef GESTURA_VERSION
@@ -34,18 +35,6 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// What a client may set of each request (everything else is the server's: files, avatar assets).
-struct SayFields {
-  static constexpr std::array<std::string_view, 6> names{"text", "lang", "speed", "mouthing", "nonmanuals", "fps"};
-};
-struct SignFields {
-  static constexpr std::array<std::string_view, 5> names{"hamnosys", "names", "gloss", "speed", "fps"};
-};
-struct GlossFields {
-  static constexpr std::array<std::string_view, 3> names{"text", "lang", "open"};
-};
-
-constexpr int kMaxJsonDepth = 32;
 constexpr int kMaxLexiconLimit = 1000;
 
 // The body as a JSON object; 415 for another media type, 400 for malformed JSON (binary bodies
@@ -54,16 +43,7 @@ json body_json(const ApiRequest& request) {
   if (request.content_type != "application/json")
     throw app::AppError(app::ErrorCategory::usage, app::Place{"content-type", {}},
                         "send the request as application/json (got '" + request.content_type + "')");
-  try {
-    return json::parse(request.body, [](int depth, json::parse_event_t, json&) {
-      if (depth > kMaxJsonDepth) throw app::AppError(app::ErrorCategory::usage, "the JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-      return true;
-    });
-  } catch (const json::parse_error& e) {
-    std::string message = e.what();
-    if (const std::size_t p = message.find("] "); p != std::string::npos) message = message.substr(p + 2);
-    throw app::AppError(app::ErrorCategory::usage, app::Place{"body", {}}, "not valid JSON: " + message);
-  }
+  return parse_request_json(request.body);
 }
 
 template <class R>
@@ -83,7 +63,8 @@ R read_public_query(const ApiRequest& request, std::initializer_list<std::string
     if constexpr (std::is_same_v<std::decay_t<decltype(value)>, std::vector<std::string>>) value.clear();
     app::set_from_text(value, it->second, field);
   });
-  for (const auto& [key, value] : request.query) {
+  for (const auto& entry : request.query) {
+    const std::string& key = entry.first;  // not a structured binding: clang 14 cannot capture one
     if (std::find(ignored.begin(), ignored.end(), key) != ignored.end()) continue;
     bool found = false;
     R::fields(r, [&](auto&, const app::FieldInfo& field) { found = found || field.name == key; });

@@ -5,16 +5,9 @@
 
 #include "gestura/serve/look_choice.hpp"
 #include "gestura/serve/public_request.hpp"
+#include "gestura/serve/request_json.hpp"
 
 namespace gestura::serve {
-namespace {
-
-// What a client may set (everything else is the server's: files, avatar assets).
-struct VideoFields {
-  static constexpr std::array<std::string_view, 8> names{"text", "lang", "speed", "mouthing", "nonmanuals", "fps", "size", "camera"};
-};
-
-}  // namespace
 
 VideoJob parse_video_job(const nlohmann::json& body_in, int max_text) {
   nlohmann::json body = body_in;

@@ -36,13 +36,17 @@ std::optional<SignDraft> read_recovery(const std::string& path) {
   if (!in) throw Error(SourceLocation{path}, "cannot read the recovery file");
   std::ostringstream text;
   text << in.rdbuf();
-  const nlohmann::json json = nlohmann::json::parse(text.str(), nullptr, false);
+  return parse_recovery(text.str(), path);
+}
+
+SignDraft parse_recovery(std::string_view text, const std::string& name) {
+  const nlohmann::json json = nlohmann::json::parse(text, nullptr, false);
   if (json.is_discarded() || !json.is_object() || !json.contains("draft"))
-    throw Error(SourceLocation{path}, "the recovery file is not a studio draft (left in place)");
+    throw Error(SourceLocation{name}, "the recovery file is not a studio draft (left in place)");
   try {
     return draft_from_json(json.at("draft"));
   } catch (const Error& e) {
-    throw Error(SourceLocation{path}, e.message());
+    throw Error(SourceLocation{name}, e.message());
   }
 }
 

@@ -5,6 +5,7 @@
 // normally (crash, kill, power cut): the studio offers the draft back.
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "gestura/studio/sign_draft.hpp"
 
@@ -20,6 +21,10 @@ void write_recovery(const std::string& path, const SignDraft& draft);
 // nullopt when there is no recovery file. Throws gestura::Error (naming the file) for one that cannot
 // be read or is not a draft; the file is left alone so nothing is lost.
 std::optional<SignDraft> read_recovery(const std::string& path);
+
+// The recovery file's text as a draft; `name` is used in messages. Throws gestura::Error for text
+// that is not a studio draft.
+SignDraft parse_recovery(std::string_view text, const std::string& name);
 
 // Removes the recovery file (no error when there is none).
 void discard_recovery(const std::string& path);
