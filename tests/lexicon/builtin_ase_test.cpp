@@ -203,7 +203,7 @@ TEST_F(BuiltinAse, TheTranslatorFindsASignForEveryWordOfEverydaySentences) {
       switch (g.kind) {
         case GlossKind::sign:
           ++signs;
-          EXPECT_TRUE(lexicon_->find(g.gloss, "ase").has_value()) << text << ": " << g.gloss;
+          EXPECT_TRUE(lexicon_->find(g.sign(), "ase").has_value()) << text << ": " << g.gloss << " (sign " << g.sign() << ")";
           break;
         case GlossKind::number:
           EXPECT_TRUE(number_is_signable(*lexicon_, g.gloss)) << text << ": " << g.gloss;

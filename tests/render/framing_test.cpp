@@ -18,10 +18,12 @@ namespace {
 
 const Avatar& avatar() { return test::signing_avatar().avatar; }
 
-Clip said(const std::string& text) {
+Clip said(const std::string& text, float speed = 1.0f) {
   DefaultLexicon lexicon;
   const Signer signer(avatar(), lexicon.layers());
-  return signer.say(text, SayOptions{}).clip;
+  SayOptions options;
+  options.speed = speed;
+  return signer.say(text, options).clip;
 }
 
 vec3 ndc(const Camera& c, const vec3& p) {
@@ -91,7 +93,9 @@ TEST_P(Framing, FrontKeepsElbowsAndRaisedHandsInViewAtEveryMoment) {
 INSTANTIATE_TEST_SUITE_P(Signs, Framing, ::testing::Values("house", "sad", "library", "my mother lives in a big house"));
 
 TEST(FollowFraming, TightensOnHandsAtTheFaceAndGlides) {
-  const Clip clip = said("mother");  // the thumb at the chin
+  // The thumb at the chin. With the citation-timing model the hold there is 0.51 s (was 0.59 s), too
+  // short for the gliding camera to settle fully: it comes at least 5 % closer.
+  const Clip clip = said("mother");
   const FramingBox box = framing_box(avatar().mesh, avatar().skeleton, &clip);
   const int frames = static_cast<int>(clip.duration * 30.0f) + 1;
   const std::vector<FramingBox> follow = follow_framing(box, avatar().skeleton, clip, 30.0f, frames);
@@ -106,7 +110,7 @@ TEST(FollowFraming, TightensOnHandsAtTheFaceAndGlides) {
     previous = c.eye;
     EXPECT_GE(b.hips_y, box.hips_y - 1e-5f);
   }
-  EXPECT_LT(tightest, 0.9f * glm::distance(front.eye, front.target)) << "the follow camera moves in on the face";
+  EXPECT_LT(tightest, 0.95f * glm::distance(front.eye, front.target)) << "the follow camera moves in on the face";
   EXPECT_LT(largest_step, 0.03f) << "metres per frame: no jumps";
 }
 

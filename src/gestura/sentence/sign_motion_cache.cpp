@@ -142,6 +142,20 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     std::lock_guard lock(mutex_);
     if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
   }
+  return perform_and_store(key, plan_citation(sign::parse_hamnosys_unicode(notation), *rig_, ScheduleOptions{1.0f, 0.0f, 0.0f}));
+}
+
+const CitationMotion& SignMotionCache::sign(std::string_view notation, std::string_view place, const PlanChange& change) {
+  std::string key = std::string(notation) + '\x1f' + std::string(place);
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
+  }
+  return perform_and_store(std::move(key), change(plan_citation(sign::parse_hamnosys_unicode(notation), *rig_,
+                                                                ScheduleOptions{1.0f, 0.0f, 0.0f})));
+}
+
+const CitationMotion& SignMotionCache::perform_and_store(std::string key, const SignPlan& citation) {
   // Computed outside the lock: two threads may both compute a new sign; the first stored wins.
   // The citation form is stored as the planner makes it. The arm the solver finds depends on where
   // it starts: arriving from the relaxed posture in front, as in running signing, it keeps the
@@ -149,7 +163,6 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
   // height). Continuing from there, it can also get stuck with a hand centimetres off its plan
   // (14 of the 416 ASL signs, by 1–17 cm): a sign whose palm strays more than 1 cm is performed
   // from its first posture as well, and that one kept if it is closer to the plan by over 1 cm.
-  const SignPlan citation = plan_citation(sign::parse_hamnosys_unicode(notation), *rig_, ScheduleOptions{1.0f, 0.0f, 0.0f});
   std::unique_ptr<CitationMotion> motion = perform_citation(citation, Start::FromRelaxed);
   const float error = plan_error(*motion);
   if (error > kPlanTolerance) {
@@ -157,26 +170,7 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     if (plan_error(*at_first_posture) < error - kPlanTolerance) motion = std::move(at_first_posture);
   }
   std::lock_guard lock(mutex_);
-  return *signs_.emplace(key, std::move(motion)).first->second;
-}
-
-const CitationMotion& SignMotionCache::sign(std::string_view notation, std::string_view place, const PlanChange& change) {
-  const std::string key = std::string(notation) + '\x1f' + std::string(place);
-  {
-    std::lock_guard lock(mutex_);
-    if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
-  }
-  // As sign(notation), on the changed citation plan.
-  const SignPlan citation =
-      change(plan_citation(sign::parse_hamnosys_unicode(notation), *rig_, ScheduleOptions{1.0f, 0.0f, 0.0f}));
-  std::unique_ptr<CitationMotion> motion = perform_citation(citation, Start::FromRelaxed);
-  const float error = plan_error(*motion);
-  if (error > kPlanTolerance) {
-    auto at_first_posture = perform_citation(citation, Start::AtFirstPosture);
-    if (plan_error(*at_first_posture) < error - kPlanTolerance) motion = std::move(at_first_posture);
-  }
-  std::lock_guard lock(mutex_);
-  return *signs_.emplace(key, std::move(motion)).first->second;
+  return *signs_.emplace(std::move(key), std::move(motion)).first->second;
 }
 
 HandJointPosture SignMotionCache::solve(Hand hand, const HandState& state) const {

@@ -88,6 +88,8 @@ class SignMotionCache {
   SignPlan approached_from_relaxed(const SignPlan& citation) const;
   std::unique_ptr<CitationMotion> perform_citation(const SignPlan& citation, Start start) const;
   float plan_error(const CitationMotion& motion) const;
+  // Performs `citation` (see sign()) and stores it under `key`; the first stored wins.
+  const CitationMotion& perform_and_store(std::string key, const SignPlan& citation);
 
   const SigningRig* rig_;
   ByHand<std::vector<int>> joints_;
