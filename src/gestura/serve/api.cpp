@@ -24,6 +24,7 @@
 #include "gestura/serve/public_request.hpp"
 #include "gestura/serve/request_json.hpp"
 #include "gestura/serve/static_files.hpp"
+#include "gestura/serve/random_hex.hpp"
 
 #ifndef GESTURA_VERSION
 #define GESTURA_VERSION "0.1.0"
@@ -102,14 +103,6 @@ std::string quoted_hash(const std::string& bytes) {
   return text;
 }
 
-std::string random_name() {
-  static std::mutex m;
-  static std::mt19937_64 random{std::random_device{}()};
-  std::lock_guard lock(m);
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(random()));
-  return text;
-}
 
 // A performance as the client asked: JSON (timeline) or binary glTF (the animation, the timeline
 // in its extras).
@@ -378,7 +371,7 @@ ApiResponse Api::sign(ApiRequest& request, const app::RunContext& context) {
   } temporary;
   if (!sigml_text.empty()) {
     fs::create_directories(data_ / "tmp");
-    temporary.path = data_ / "tmp" / (random_name() + ".sigml");
+    temporary.path = data_ / "tmp" / (random_hex() + ".sigml");
     std::ofstream(temporary.path, std::ios::binary) << sigml_text;
     sign.source.sigml = temporary.path.string();
   }

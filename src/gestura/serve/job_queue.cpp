@@ -4,20 +4,9 @@
 #include <random>
 
 #include "gestura/serve/api_error.hpp"
+#include "gestura/serve/random_hex.hpp"
 
 namespace gestura::serve {
-namespace {
-
-std::string new_id() {
-  static std::mutex m;
-  static std::mt19937_64 random{std::random_device{}()};
-  std::lock_guard lock(m);
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(random()));
-  return text;
-}
-
-}  // namespace
 
 std::string to_string(JobStatus status) {
   switch (status) {
@@ -50,7 +39,7 @@ std::optional<std::string> JobQueue::submit(JobWork work, const std::string& ext
   std::lock_guard lock(mutex_);
   if (waiting_.size() >= capacity_) return std::nullopt;
   auto job = std::make_shared<Job>();
-  job->state.id = new_id();
+  job->state.id = random_hex();
   job->state.file = (std::filesystem::path(folder_) / (job->state.id + extension)).string();
   job->state.content_type = content_type;
   job->work = std::move(work);

@@ -4,18 +4,11 @@
 #include <random>
 
 #include "gestura/serve/broker_keys.hpp"
+#include "gestura/serve/random_hex.hpp"
 
 namespace gestura::serve {
 namespace {
 
-std::string new_id() {
-  static std::mutex m;
-  static std::mt19937_64 random{std::random_device{}()};
-  std::lock_guard lock(m);
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(random()));
-  return text;
-}
 
 long long now_ms() {
   return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
@@ -84,7 +77,7 @@ std::optional<std::string> RedisRenderJobs::submit(const nlohmann::json& body, c
   // Acknowledged entries are deleted, so the stream holds the jobs waiting and running.
   const long long length = redis->command({"XLEN", broker::kStream}).integer;
   if (static_cast<std::size_t>(std::max(0ll, length)) >= capacity_ + pending(*redis)) return std::nullopt;
-  const std::string id = new_id();
+  const std::string id = random_hex();
   const std::string key = broker::job_key(id);
   redis->command({"HSET", key, "status", "queued", "format", job.format, "content_type", job.content_type(), "version", "1",
                   "attempts", "0", "created", std::to_string(now_ms())});

@@ -8,6 +8,7 @@
 #include "gestura/app/error.hpp"
 #include "gestura/body/avatar_look.hpp"
 #include "gestura/serve/api_error.hpp"
+#include "gestura/serve/random_hex.hpp"
 
 namespace gestura::serve {
 
@@ -22,14 +23,6 @@ constexpr float kSeatStep = deg(25.0f);
 constexpr double kPoseHold = 1.0;   // seconds a body-driven avatar counts as signing after its last pose
 constexpr int kDropsBeforeClose = 500;
 
-std::string random_token() {
-  static std::mutex m;
-  static std::mt19937_64 random{std::random_device{}()};
-  std::lock_guard lock(m);
-  char text[33];
-  std::snprintf(text, sizeof text, "%016llx%016llx", static_cast<unsigned long long>(random()), static_cast<unsigned long long>(random()));
-  return text;
-}
 
 json rotations_json(const JointRotations& rotations) {
   json out = json::object();
@@ -355,7 +348,7 @@ void Rooms::join(Connection& c, const json& message) {
     for (const auto& [id, q] : room->participants) taken[static_cast<std::size_t>(q->seat)] = true;
     auto np = std::make_unique<Participant>();
     np->id = "p" + std::to_string(room->next_participant++);
-    np->token = random_token();
+    np->token = random_hex(2);
     np->name = std::move(name);
     np->look = std::move(look);
     np->seat = static_cast<int>(std::find(taken.begin(), taken.end(), false) - taken.begin());
