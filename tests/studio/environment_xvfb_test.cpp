@@ -17,6 +17,7 @@
 #include "lexicon/temp_dir.hpp"
 #include "support/build_paths.hpp"
 #include "support/cli.hpp"
+#include "support/studio_under_xvfb.hpp"
 #include "support/png_file.hpp"
 
 namespace gestura {
@@ -25,18 +26,14 @@ namespace {
 namespace fs = std::filesystem;
 using gestura::test::run_command;
 using gestura::testing::TempDir;
+using gestura::test::have_xvfb;
+using gestura::test::read_json_file;
+using gestura::test::shot_dir;
 
 gestura::test::CliRun run_studio(const TempDir& dir, const std::string& script) {
-  const std::string path = dir.write("env.script", script);
-  return run_command("timeout 300 xvfb-run -a -s '-screen 0 1400x900x24' " + gestura::test::cli_path() + " studio " + dir.file("user.sqlite") +
-                     " --size 1280x800 --script " + path);
+  return gestura::test::run_studio(dir, dir.file("user.sqlite"), "env.script", script);
 }
 
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return nlohmann::json();
-  return nlohmann::json::parse(in, nullptr, false);
-}
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -45,16 +42,7 @@ std::string read_text(const std::string& path) {
   return s.str();
 }
 
-std::string shot_dir(const TempDir& dir) {
-  const char* env = std::getenv("GESTURA_STUDIO_SCREENSHOTS");
-  if (env && *env) {
-    fs::create_directories(env);
-    return env;
-  }
-  return dir.file("");
-}
 
-bool have_xvfb() { return run_command("command -v xvfb-run").status == 0; }
 
 // An 8 m × 6 m floor and a 1 m box in the middle of it.
 constexpr const char* kRoom = R"({
@@ -130,8 +118,8 @@ TEST(EnvironmentEditorUnderXvfb, ABoxDraggedInThePlanViewMovesByTheDragUndoPutsI
   const std::string& j = run.j;
   const std::string& shots = run.shots;
   ASSERT_EQ(0, r.status) << r.output;
-  const auto opened = read_json(j + "opened.json")["environment"], dragged = read_json(j + "dragged.json")["environment"],
-             undone = read_json(j + "undone.json")["environment"];
+  const auto opened = read_json_file(j + "opened.json")["environment"], dragged = read_json_file(j + "dragged.json")["environment"],
+             undone = read_json_file(j + "undone.json")["environment"];
   ASSERT_TRUE(opened.is_object() && dragged.is_object() && undone.is_object()) << r.output;
 
   // The plan view frames the scene's box (the floor: 8 m east-west, 6 m north-south) with 5 % to spare
@@ -176,7 +164,7 @@ TEST(EnvironmentEditorUnderXvfb, AMalformedSceneIsRefusedWithItsPlaceAndNothingI
   if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
   const EnvRun& run = env_run();
   ASSERT_EQ(0, run.result.status) << run.result.output;
-  const auto refused = read_json(run.j + "refused.json")["environment"];
+  const auto refused = read_json_file(run.j + "refused.json")["environment"];
   ASSERT_TRUE(refused.is_object()) << run.result.output;
   const std::string status = refused["status"];
   EXPECT_NE(std::string::npos, status.find("bad.json:3:")) << status;  // the line of the unknown shape

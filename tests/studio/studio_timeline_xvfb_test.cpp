@@ -21,6 +21,7 @@
 #include "lexicon/temp_dir.hpp"
 #include "support/build_paths.hpp"
 #include "support/cli.hpp"
+#include "support/studio_under_xvfb.hpp"
 #include "support/png_file.hpp"
 
 namespace gestura {
@@ -29,29 +30,14 @@ namespace {
 namespace fs = std::filesystem;
 using gestura::test::run_command;
 using gestura::testing::TempDir;
+using gestura::test::have_xvfb;
+using gestura::test::read_json_file;
+using gestura::test::shot_dir;
+using gestura::test::run_studio;
 
-gestura::test::CliRun run_studio(const TempDir& dir, const std::string& db, const std::string& script_name, const std::string& script) {
-  const std::string path = dir.write(script_name, script);
-  return run_command("timeout 300 xvfb-run -a -s '-screen 0 1400x900x24' " + gestura::test::cli_path() + " studio " + db +
-                     " --size 1280x800 --script " + path);
-}
 
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return nlohmann::json();
-  return nlohmann::json::parse(in, nullptr, false);
-}
 
-std::string shot_dir(const TempDir& dir) {
-  const char* env = std::getenv("GESTURA_STUDIO_SCREENSHOTS");
-  if (env && *env) {
-    fs::create_directories(env);
-    return env;
-  }
-  return dir.file("");
-}
 
-bool have_xvfb() { return run_command("command -v xvfb-run").status == 0; }
 
 // The time at which `joint` is turned furthest from its first frame in a BVH file.
 float peak_time(const BvhFile& bvh, const std::string& joint) {
@@ -105,8 +91,8 @@ TEST(StudioTimelineUnderXvfb, RetimingAKeyMovesItInTheExportedBvhAndABarRetimesT
                             "dump " + j + "bad.json\n"
                             "quit\n");
   ASSERT_EQ(0, r.status) << r.output;
-  const auto say1 = read_json(j + "say1.json"), say2 = read_json(j + "say2.json"), say3 = read_json(j + "say3.json"),
-             moved = read_json(j + "moved.json"), bad = read_json(j + "bad.json");
+  const auto say1 = read_json_file(j + "say1.json"), say2 = read_json_file(j + "say2.json"), say3 = read_json_file(j + "say3.json"),
+             moved = read_json_file(j + "moved.json"), bad = read_json_file(j + "bad.json");
   ASSERT_TRUE(say1.is_object() && say2.is_object() && say3.is_object() && moved.is_object() && bad.is_object());
 
   // The utterance as bars: the way in, then HELLO; made 1.5 s long, the motion lasts that much longer.
@@ -172,7 +158,7 @@ TEST(StudioTimelineUnderXvfb, TheFiguresSavedSkeletonRendersAndRetargetsAndABrok
                             "screenshot " + shots + "/studio-figure.png\n"
                             "quit\n");
   ASSERT_EQ(0, r.status) << r.output;
-  const auto copied = read_json(j + "copied.json"), after = read_json(j + "broken.json");
+  const auto copied = read_json_file(j + "copied.json"), after = read_json_file(j + "broken.json");
   ASSERT_TRUE(copied.is_object() && after.is_object());
   EXPECT_EQ("l_index1_copy", copied["figure"]["joint"]["name"]);
   const int joints = after["figure"]["joints"];
@@ -191,7 +177,7 @@ TEST(StudioTimelineUnderXvfb, TheFiguresSavedSkeletonRendersAndRetargetsAndABrok
   const int wrist = saved.skeleton.find("r_wrist");
   ASSERT_GE(wrist, 0);
   EXPECT_NEAR(-0.27f, saved.skeleton.rest_translations[static_cast<std::size_t>(wrist)].y, 1e-5f);
-  const auto side = read_json(j + "figure.figure.json");
+  const auto side = read_json_file(j + "figure.figure.json");
   EXPECT_NEAR(30.0f, side["joints"]["r_wrist"]["max_degrees"][0].get<float>(), 1e-3f);
   EXPECT_TRUE(side["joints"]["r_wrist"].contains("dh"));
 }
@@ -217,8 +203,8 @@ TEST(StudioTimelineUnderXvfb, DraggingTheHandWithIkReachesTheTargetKeysThePoseAn
                             "dump " + j + "keyed.json\n"
                             "quit\n");
   ASSERT_EQ(0, r.status) << r.output;
-  const auto dragged = read_json(j + "dragged.json"), foot = read_json(j + "foot.json"), undone = read_json(j + "undone.json"),
-             keyed = read_json(j + "keyed.json");
+  const auto dragged = read_json_file(j + "dragged.json"), foot = read_json_file(j + "foot.json"), undone = read_json_file(j + "undone.json"),
+             keyed = read_json_file(j + "keyed.json");
   ASSERT_TRUE(dragged.is_object() && foot.is_object() && undone.is_object() && keyed.is_object());
   const auto vec = [](const nlohmann::json& v) { return vec3(v[0].get<float>(), v[1].get<float>(), v[2].get<float>()); };
   const vec3 end = vec(dragged["ik"]["end"]), target = vec(dragged["ik"]["target"]);

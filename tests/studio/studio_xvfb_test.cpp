@@ -16,6 +16,7 @@
 #include "lexicon/temp_dir.hpp"
 #include "support/build_paths.hpp"
 #include "support/cli.hpp"
+#include "support/studio_under_xvfb.hpp"
 #include "support/png_file.hpp"
 
 namespace gestura {
@@ -24,30 +25,14 @@ namespace {
 namespace fs = std::filesystem;
 using gestura::test::run_command;
 using gestura::testing::TempDir;
+using gestura::test::have_xvfb;
+using gestura::test::read_json_file;
+using gestura::test::shot_dir;
+using gestura::test::run_studio;
 
 
-// Runs the studio on `db` with `script` (lines), under xvfb-run.
-gestura::test::CliRun run_studio(const TempDir& dir, const std::string& db, const std::string& script_name,
-                                 const std::string& script, const std::string& size = "1280x800") {
-  const std::string path = dir.write(script_name, script);
-  return run_command("timeout 300 xvfb-run -a -s '-screen 0 1400x900x24' " + gestura::test::cli_path() + " studio " + db +
-                     " --size " + size + " --script " + path);
-}
 
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return nlohmann::json();
-  return nlohmann::json::parse(in, nullptr, false);
-}
 
-std::string shot_dir(const TempDir& dir) {
-  const char* env = std::getenv("GESTURA_STUDIO_SCREENSHOTS");
-  if (env && *env) {
-    fs::create_directories(env);
-    return env;
-  }
-  return dir.file("");
-}
 
 std::optional<std::string> stored_names(const std::string& db, const std::string& gloss) {
   Lexicon lex = Lexicon::open(db);
@@ -58,7 +43,6 @@ std::optional<std::string> stored_names(const std::string& db, const std::string
   return names;
 }
 
-bool have_xvfb() { return run_command("command -v xvfb-run").status == 0; }
 
 TEST(StudioUnderXvfb, AHandshapeChangeBendsThePreviewAndSavesTheRowAndUndoRestoresBoth) {
   if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
@@ -87,8 +71,8 @@ TEST(StudioUnderXvfb, AHandshapeChangeBendsThePreviewAndSavesTheRowAndUndoRestor
                             "dump " + j + "undo_symbol.json\n"
                             "quit\n");
   ASSERT_EQ(0, r.status) << r.output;
-  const auto flat = read_json(j + "flat.json"), fist = read_json(j + "fist.json"), saved = read_json(j + "saved.json"),
-             undo_save = read_json(j + "undo_save.json"), undo_symbol = read_json(j + "undo_symbol.json");
+  const auto flat = read_json_file(j + "flat.json"), fist = read_json_file(j + "fist.json"), saved = read_json_file(j + "saved.json"),
+             undo_save = read_json_file(j + "undo_save.json"), undo_symbol = read_json_file(j + "undo_symbol.json");
   ASSERT_TRUE(flat.is_object() && fist.is_object() && saved.is_object() && undo_save.is_object() && undo_symbol.is_object());
 
   // The preview: a fist bends the right hand's fingers far more than a flat hand.
@@ -130,7 +114,7 @@ TEST(StudioUnderXvfb, NotationThatDoesNotParseIsShownAtItsSymbolAndNeverSaved) {
                             "dump " + j + "bad.json\n"
                             "quit\n");
   ASSERT_EQ(0, r.status) << r.output;
-  const auto bad = read_json(j + "bad.json");
+  const auto bad = read_json_file(j + "bad.json");
   ASSERT_TRUE(bad.is_object());
   ASSERT_TRUE(bad["notation_error"].is_object()) << bad.dump();
   EXPECT_EQ(2, bad["notation_error"]["symbol"]);
@@ -178,7 +162,7 @@ TEST(StudioUnderXvfb, AKilledStudioOffersItsDraftBack) {
                                 "dump " + j + "recovered.json\n"
                                 "quit\n");
   ASSERT_EQ(0, again.status) << again.output;
-  const auto offered = read_json(j + "offered.json"), recovered = read_json(j + "recovered.json");
+  const auto offered = read_json_file(j + "offered.json"), recovered = read_json_file(j + "recovered.json");
   ASSERT_TRUE(offered.is_object() && recovered.is_object());
   EXPECT_TRUE(offered["recovery_offered"].get<bool>());
   EXPECT_EQ("", offered["draft"]["gloss"]);  // nothing restored before the user says so
@@ -209,7 +193,7 @@ TEST(StudioUnderXvfb, BrowsesTheBuiltInLexiconByHandshapeAndShowsEveryPanel) {
                             "dump " + j + "tour.json\n"
                             "quit\n");
   ASSERT_EQ(0, r.status) << r.output;
-  const auto filtered = read_json(j + "filtered.json"), tour = read_json(j + "tour.json");
+  const auto filtered = read_json_file(j + "filtered.json"), tour = read_json_file(j + "tour.json");
   ASSERT_TRUE(filtered.is_object() && tour.is_object());
   EXPECT_GT(filtered["browse_count"].get<int>(), 5);
   EXPECT_EQ("THANK-YOU", tour["draft"]["gloss"]) << tour["status"];
@@ -240,7 +224,7 @@ TEST(StudioUnderXvfb, ExportsTheSignAsPerformedAndRefusesAnUnknownFormat) {
                             "dump " + j + "refused.json\n"
                             "quit\n");
   ASSERT_EQ(0, r.status) << r.output;
-  const auto exported = read_json(j + "exported.json"), refused = read_json(j + "refused.json");
+  const auto exported = read_json_file(j + "exported.json"), refused = read_json_file(j + "refused.json");
   ASSERT_TRUE(exported.is_object() && refused.is_object());
   EXPECT_NE(std::string::npos, exported["status"].get<std::string>().find("exported")) << exported["status"];
   std::ifstream bvh(j + "sign.bvh");
@@ -274,8 +258,8 @@ TEST(StudioUnderXvfb, ThePoseEditorKeepsJointsInTheirLimitsFormsHandsAndMirrors)
                             "dump " + j + "undone.json\n"
                             "quit\n");
   ASSERT_EQ(0, r.status) << r.output;
-  const auto limit = read_json(j + "limit.json"), fist = read_json(j + "fist.json"), mirrored = read_json(j + "mirrored.json"),
-             undone = read_json(j + "undone.json");
+  const auto limit = read_json_file(j + "limit.json"), fist = read_json_file(j + "fist.json"), mirrored = read_json_file(j + "mirrored.json"),
+             undone = read_json_file(j + "undone.json");
   ASSERT_TRUE(limit.is_object() && fist.is_object() && mirrored.is_object() && undone.is_object());
   // The elbow asked to bend 300 degrees stops at its limit (a real elbow bends less than 160).
   const float elbow = limit["pose"]["angles"][0];
@@ -312,7 +296,7 @@ TEST(StudioUnderXvfb, LearningModePlaysWordsAndSentencesAndScoresTheSelfTest) {
                             "dump " + j + "quiz.json\n"
                             "quit\n");
   ASSERT_EQ(0, r.status) << r.output;
-  const auto word = read_json(j + "word.json"), sentence = read_json(j + "sentence.json"), quiz = read_json(j + "quiz.json");
+  const auto word = read_json_file(j + "word.json"), sentence = read_json_file(j + "sentence.json"), quiz = read_json_file(j + "quiz.json");
   ASSERT_TRUE(word.is_object() && sentence.is_object() && quiz.is_object());
   EXPECT_TRUE(word["learning"]["active"].get<bool>());
   EXPECT_EQ("greeting", word["learning"]["topic"]);
@@ -338,7 +322,7 @@ TEST(StudioUnderXvfb, LearningModePlaysWordsAndSentencesAndScoresTheSelfTest) {
   const auto r2 = run_studio(dir, db, "answer.txt",
                              "topic greeting\nquiz 5\nanswer " + wrong + "\ndump " + j + "a1.json\n");
   ASSERT_EQ(0, r2.status) << r2.output;
-  const auto a1 = read_json(j + "a1.json");
+  const auto a1 = read_json_file(j + "a1.json");
   ASSERT_TRUE(a1.is_object());
   EXPECT_EQ(answer, a1["learning"]["quiz"]["word"]);  // the same seed asks the same word
   EXPECT_FALSE(a1["learning"]["quiz"]["answered"].get<bool>());

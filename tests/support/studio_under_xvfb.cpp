@@ -1,0 +1,35 @@
+#include "support/studio_under_xvfb.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "support/build_paths.hpp"
+
+namespace gestura::test {
+
+bool have_xvfb() { return run_command("command -v xvfb-run").status == 0; }
+
+CliRun run_studio(const gestura::testing::TempDir& dir, const std::string& db, const std::string& script_name,
+                  const std::string& script, const std::string& size) {
+  const std::string path = dir.write(script_name, script);
+  return run_command("timeout 300 xvfb-run -a -s '-screen 0 1400x900x24' " + cli_path() + " studio " + db + " --size " +
+                     size + " --script " + path);
+}
+
+nlohmann::json read_json_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return nlohmann::json();
+  return nlohmann::json::parse(in, nullptr, false);
+}
+
+std::string shot_dir(const gestura::testing::TempDir& dir) {
+  const char* env = std::getenv("GESTURA_STUDIO_SCREENSHOTS");
+  if (env && *env) {
+    std::filesystem::create_directories(env);
+    return env;
+  }
+  return dir.file("");
+}
+
+}  // namespace gestura::test
