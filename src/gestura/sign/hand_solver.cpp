@@ -26,9 +26,11 @@ constexpr float kTurnRead = deg(24.0f);  // just inside the 25° within which a 
 
 // A hand that continues last frame's elbow and lands this far from its plan (metres, a radian of
 // turn weighed as the solver weighs it) is also solved without history; that solution is kept
-// when it lands this much nearer, and only tried when its elbow is elsewhere on the circle.
+// when it lands this much nearer and within kLanded of the plan, and only tried when its elbow is
+// elsewhere on the circle.
 constexpr float kLandingTolerance = 0.01f;
 constexpr float kLandingGain = 0.005f;
+constexpr float kLanded = 0.02f;
 constexpr float kSameElbow = deg(10.0f);
 
 float wrap_angle(float a) { return std::remainder(a, 2.0f * kPi); }
@@ -274,6 +276,7 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
   if (prefer.previous) {
     const float miss = landing_miss(rig, h, state, pose, model, points);
     if (miss > kLandingTolerance) {
+      const float depth = hand_depth(rig, h, body_margin, pose, model, points);
       SwivelPreference fresh_prefer;
       fresh_prefer.previous.reset();
       fresh_prefer.search_circle = true;
@@ -281,7 +284,11 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
       const SwivelSolution fresh = seed_arm(rig, h, state, fresh_prefer, pose);
       if (std::abs(wrap_angle(fresh.swivel - arm.swivel)) > kSameElbow) {
         const IkResult fresh_r = refine_arm(rig, h, state, body_margin, fresh, solver, pose, model, points);
-        if (landing_miss(rig, h, state, pose, model, points) < miss - kLandingGain) {
+        // Kept when it lands on the plan, nearer than the continued one, and no deeper in the body
+        // (an arm switched to a solution that also misses can end up in the body later on).
+        const float fresh_miss = landing_miss(rig, h, state, pose, model, points);
+        if (fresh_miss < std::min(miss - kLandingGain, kLanded) &&
+            hand_depth(rig, h, body_margin, pose, model, points) <= std::max(depth, kEscapeTolerance)) {
           arm = fresh;
           r = fresh_r;
         } else {
