@@ -125,10 +125,10 @@ SwivelSolution seed_arm(const SigningRig& rig, const HandRig& h, const HandState
 }
 
 // From the seed `arm` to the final arm: damped least squares, the contact point put on its place,
-// the hand pushed out of the body.
+// the hand pushed out of the body. `depth` is set to how deep the final hand is (hand_depth).
 IkResult refine_arm(const SigningRig& rig, const HandRig& h, const HandState& state, float body_margin,
                     const SwivelSolution& arm, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
-                    HandPoints& points) {
+                    HandPoints& points, float& depth) {
   const Skeleton& s = rig.skeleton();
   const quat wrist_rotation = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), state.orientation},
                                                  h.rest_frame.rotation, h.rest_wrist_rotation);
@@ -212,7 +212,7 @@ IkResult refine_arm(const SigningRig& rig, const HandRig& h, const HandState& st
   // notated turn, fingers curled into the head). Move the hand straight out from the body at its
   // planned place, keeping the notated turn, a step at a time until it is clear; if nothing
   // clears it, the least deep of the tries. Rare (a few frames of a few signs in thousands).
-  float depth = hand_depth(rig, h, body_margin, pose, model, points);
+  depth = hand_depth(rig, h, body_margin, pose, model, points);
   if (depth > kEscapeTolerance) {
     local_to_model(s, pose, model);
     vec3 out(0, 0, 1);
@@ -233,6 +233,7 @@ IkResult refine_arm(const SigningRig& rig, const HandRig& h, const HandState& st
       }
     best.restore(pose);
     r = best_r;
+    depth = best_depth;
   }
   return r;
 }
@@ -265,7 +266,8 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
   prefer.previous = solver.swivel;
   prefer.search_circle = search_circle;
   SwivelSolution arm = seed_arm(rig, h, state, prefer, pose);
-  IkResult r = refine_arm(rig, h, state, body_margin, arm, solver, pose, model, points);
+  float continued_depth = 0.0f;
+  IkResult r = refine_arm(rig, h, state, body_margin, arm, solver, pose, model, points, continued_depth);
 
   // Continuing last frame's elbow keeps the arm on one solution, but where that solution cannot
   // make the place and turn (the elbow low while the hand must point down above the other hand)
@@ -275,25 +277,32 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
   // lands clearly nearer: where a hand lands does not depend on what it did before.
   if (prefer.previous) {
     const float miss = landing_miss(rig, h, state, pose, model, points);
-    if (miss > kLandingTolerance) {
-      const float depth = hand_depth(rig, h, body_margin, pose, model, points);
+    // (A hand touching the body is within the margin of it: only a hand really inside counts.)
+    const bool inside = continued_depth > body_margin + kEscapeTolerance;
+    if (miss > kLandingTolerance || inside) {
       SwivelPreference fresh_prefer;
       fresh_prefer.previous.reset();
       fresh_prefer.search_circle = true;
       const ArmSnapshot continued(h.arm, pose);
       const SwivelSolution fresh = seed_arm(rig, h, state, fresh_prefer, pose);
+      bool keep_fresh = false;
+      IkResult fresh_r;
       if (std::abs(wrap_angle(fresh.swivel - arm.swivel)) > kSameElbow) {
-        const IkResult fresh_r = refine_arm(rig, h, state, body_margin, fresh, solver, pose, model, points);
-        // Kept when it lands on the plan, nearer than the continued one, and no deeper in the body
-        // (an arm switched to a solution that also misses can end up in the body later on).
+        float fresh_depth = 0.0f;
+        fresh_r = refine_arm(rig, h, state, body_margin, fresh, solver, pose, model, points, fresh_depth);
+        // Kept when it lands on the plan (nearer than the continued one, no deeper in the body),
+        // or when the continued arm is in the body and this one is clearly less deep without
+        // landing further off (an arm switched near the body can be carried into it by the frames
+        // that continue it: PJM 'Suwałki' ended 4.9 cm inside until deep arms were re-solved too).
         const float fresh_miss = landing_miss(rig, h, state, pose, model, points);
-        if (fresh_miss < std::min(miss - kLandingGain, kLanded) &&
-            hand_depth(rig, h, body_margin, pose, model, points) <= std::max(depth, kEscapeTolerance)) {
-          arm = fresh;
-          r = fresh_r;
-        } else {
-          continued.restore(pose);
-        }
+        keep_fresh = (fresh_miss < std::min(miss - kLandingGain, kLanded) &&
+                      fresh_depth <= std::max(continued_depth, kEscapeTolerance)) ||
+                     (inside && fresh_depth < continued_depth - kEscapeTolerance &&
+                      fresh_miss <= miss + kLandingGain);
+      }
+      if (keep_fresh) {
+        arm = fresh;
+        r = fresh_r;
       } else {
         continued.restore(pose);
       }
