@@ -168,6 +168,7 @@ class Studio {
  private:
   // Whether this frame must be drawn: input came, something plays or is computed, a script runs.
   bool needs_frame();
+  std::optional<Clock::time_point> wait_file_since_;  // the script's wait-file began
   unsigned seen_events_ = 0;
   int settle_frames_ = kSettleFrames;
   std::uint64_t idle_waits_ = 0;  // waits for input instead of a frame (the frame log counts them)
@@ -664,8 +665,20 @@ void Studio::execute(const ScriptStep& step) {
       throw Error(SourceLocation{request_.script, step.line}, "'" + arg(i) + "' is not a number");
     }
   };
-  static const char* const keeps_message[] = {"screenshot", "dump", "wait", "time", "play", "pause", "speed", "camera", "views", "panel"};
+  static const char* const keeps_message[] = {"screenshot", "dump", "wait", "wait-file", "time", "play", "pause", "speed", "camera", "views", "panel"};
   if (std::none_of(std::begin(keeps_message), std::end(keeps_message), [&](const char* k) { return a == k; })) message_.clear();
+  if (a == "wait-file") {
+    // The script waits (frames go on) until the file exists: another program — a test moving the
+    // real mouse — says it is done by creating it. At most two minutes.
+    if (!wait_file_since_) wait_file_since_ = Clock::now();
+    if (!std::filesystem::exists(arg(0)) && Clock::now() - *wait_file_since_ < std::chrono::seconds(120)) {
+      --script_next_;
+      return;
+    }
+    if (!std::filesystem::exists(arg(0))) say("waited two minutes for " + arg(0) + " in vain");
+    wait_file_since_.reset();
+    return;
+  }
   if (execute_timeline_or_figure(step)) return;
   if (a.rfind("env-", 0) == 0) set_environment(true);
   if (environment_ && env_->execute(step)) return;
@@ -2015,7 +2028,7 @@ bool Studio::execute_timeline_or_figure(const ScriptStep& step) {
   }
   const bool timeline_action = a.rfind("timeline-", 0) == 0 || a == "key-pose" || a == "key" || a == "move-key" || a == "move-keys-at" ||
                                a == "key-interp" || a == "bar-duration" || a == "export-timeline" || a == "save-clip-sign" ||
-                               a == "strip-zoom" || a == "loop";
+                               a == "strip-zoom" || a == "loop" || a == "where-key";
   if (timeline_action && !timeline_mode_) set_timeline_mode(true);
   if (timeline_mode_) {
     if (a == "timeline-say") tl_view_.say_text = arg(0), timeline_source_from_say(arg(0));
@@ -2028,6 +2041,19 @@ bool Studio::execute_timeline_or_figure(const ScriptStep& step) {
     } else if (a == "move-key") {
       const int c = timeline_->find_channel(arg(0));
       if (c < 0 || !timeline_->move_key(c, static_cast<int>(number(1)), number(2))) say("no key " + arg(1) + " on " + arg(0));
+    } else if (a == "where-key") {
+      // Writes "X Y": the window pixel where the key was drawn in the last frame (for tests that
+      // drive the real mouse), or nothing (the status says why) when it is not on screen.
+      const int c = timeline_->find_channel(arg(0)), k = static_cast<int>(number(1));
+      const auto drawn = std::find_if(tl_view_.drawn_keys.begin(), tl_view_.drawn_keys.end(),
+                                      [&](const TimelineView::DrawnKey& d) { return d.channel == c && d.key == k; });
+      if (c < 0 || drawn == tl_view_.drawn_keys.end()) {
+        say("key " + arg(1) + " of " + arg(0) + " is not on screen");
+      } else {
+        std::ofstream out(arg(2));
+        out << std::lround(drawn->x) << ' ' << std::lround(drawn->y) << '\n';
+        if (!out) say("cannot write " + arg(2));
+      }
     } else if (a == "move-keys-at") {
       say("moved " + std::to_string(timeline_->move_keys_at(number(0), number(1))) + " keys");
     } else if (a == "key-interp") {
@@ -2270,7 +2296,10 @@ bool Studio::needs_frame() {
   if (const unsigned events = g_input_events.load(); events != seen_events_) seen_events_ = events, settle_frames_ = kSettleFrames;
   if (settle_frames_ > 0 || !script_.empty() || request_.frames > 0 || wait_frames_ > 0 || !pending_screenshot_.empty()) return true;
   if (preview_busy() || export_.valid() || environment_ || !rendered_) return true;
-  if (timeline_mode_ ? tl_view_.playing : controls_->playing && !posing_ && !figure_mode_) return true;
+  // Playing something that lasts (a new sign without notation has nothing to play).
+  if (timeline_mode_ ? tl_view_.playing && timeline_->duration() > 0.0f
+                     : controls_->playing && !posing_ && !figure_mode_ && animator_->duration() > 0.0f)
+    return true;
   return show_recovery_;
 }
 
