@@ -158,6 +158,9 @@ class Studio {
   }
 
   ~Studio() {
+    if (ui_fbo_) glDeleteFramebuffers(1, &ui_fbo_);
+    if (preview_read_fbo_) glDeleteFramebuffers(1, &preview_read_fbo_);
+    if (ui_texture_) glDeleteTextures(1, &ui_texture_);
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
@@ -172,6 +175,19 @@ class Studio {
   unsigned seen_events_ = 0;
   int settle_frames_ = kSettleFrames;
   std::uint64_t idle_waits_ = 0;  // waits for input instead of a frame (the frame log counts them)
+  // The drawn UI kept in a texture: while only the preview plays (no input, no script step, no new
+  // synthesis) a frame copies it and the new preview picture into the window instead of building and
+  // drawing the whole UI again (Dear ImGui's draw of the window costs llvmpipe more than the preview).
+  // The UI itself (playhead, time) is drawn again at least every kUiRefresh.
+  static constexpr std::chrono::milliseconds kUiRefresh{250};
+  bool reuse_ui(Clock::time_point now, bool stepped, int width, int height) const;
+  void compose_cached_ui(int width, int height, bool with_preview);
+  unsigned ui_fbo_ = 0, ui_texture_ = 0, preview_read_fbo_ = 0;
+  glm::ivec2 ui_size_{0, 0};
+  bool preview_in_ui_ = false;  // the last full UI showed the preview picture at preview_rect_
+  ImVec2 preview_rect_min_{}, preview_rect_max_{};
+  Clock::time_point last_full_ui_{};
+  std::uint64_t reused_ui_frames_ = 0;
 
   // ---- actions (UI and script) ----
   void refresh_browse() { rows_ = model_.browse(filter_); }
@@ -1197,6 +1213,7 @@ void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(shown.resolved_texture())), avail,
                  ImVec2(0, static_cast<float>(preview_height_) / static_cast<float>(std::max(1, shown.height()))),
                  ImVec2(static_cast<float>(preview_width_) / static_cast<float>(std::max(1, shown.width())), 0));
+    preview_in_ui_ = true, preview_rect_min_ = ImGui::GetItemRectMin(), preview_rect_max_ = ImGui::GetItemRectMax();
     draw_preview_overlay(ImGui::GetItemRectMin(), avail);
     if ((posing_ || timeline_mode_) && !ik_tool_ && ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
       // Pick the bone under the click (the mouse ray against the bones' capsules), else the joint
@@ -2303,6 +2320,34 @@ bool Studio::needs_frame() {
   return show_recovery_;
 }
 
+bool Studio::reuse_ui(Clock::time_point now, bool stepped, int width, int height) const {
+  return ui_fbo_ != 0 && ui_size_ == glm::ivec2(width, height) && preview_in_ui_ && !stepped && settle_frames_ == 0 &&
+         now - last_full_ui_ < kUiRefresh && pending_screenshot_.empty() && request_.frames == 0 && !environment_ && !posing_ &&
+         !figure_or_timeline() && !show_recovery_ && !preview_busy() && !export_.valid() &&
+         !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+}
+
+void Studio::compose_cached_ui(int width, int height, bool with_preview) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, ui_fbo_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  if (with_preview && shown_renderer_) {
+    // The new preview picture where the UI shows it (GL rows bottom-up; ImGui's y grows downward).
+    const Renderer& shown = *shown_renderer_;
+    const unsigned texture = shown.resolved_texture();
+    if (!preview_read_fbo_) glGenFramebuffers(1, &preview_read_fbo_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, preview_read_fbo_);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    const int x0 = static_cast<int>(std::lround(preview_rect_min_.x * scale.x)), x1 = static_cast<int>(std::lround(preview_rect_max_.x * scale.x));
+    const int y0 = height - static_cast<int>(std::lround(preview_rect_max_.y * scale.y)),
+              y1 = height - static_cast<int>(std::lround(preview_rect_min_.y * scale.y));
+    glBlitFramebuffer(0, 0, preview_width_, preview_height_, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT,
+                      preview_width_ == x1 - x0 ? GL_NEAREST : GL_LINEAR);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 int Studio::run() {
   std::vector<double> frame_ms;
   std::FILE* log = nullptr;
@@ -2326,10 +2371,12 @@ int Studio::run() {
       }
     }
     const Clock::time_point start = Clock::now();
+    bool stepped = false;  // a script step ran in this frame
     // One script step per frame boundary (after its waits).
     if (wait_frames_ > 0) {
       --wait_frames_;
     } else if (script_next_ < script_.size() && !preview_busy()) {
+      stepped = true;
       const ScriptStep& step = script_[script_next_++];
       try {
         execute(step);
@@ -2358,19 +2405,44 @@ int Studio::run() {
     if (timing) glFinish();
     const Clock::time_point t_preview = Clock::now();
 
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
     const std::uint64_t revision_before_ui = model_.revision();
-    draw_ui();
-    ImGui::Render();
-    const Clock::time_point t_ui = Clock::now();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, width, height);
-    glDisable(GL_SCISSOR_TEST);
-    glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    const bool reuse = synthesis_ms_.size() == syntheses && reuse_ui(start, stepped, width, height);
+    Clock::time_point t_ui;
+    if (reuse) {
+      // Only the preview moved: the UI drawn last time, with the new picture in it.
+      t_ui = Clock::now();
+      compose_cached_ui(width, height, true);
+      ++reused_ui_frames_;
+    } else {
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      preview_in_ui_ = false;
+      draw_ui();
+      ImGui::Render();
+      t_ui = Clock::now();
+      if (ui_size_ != glm::ivec2(width, height)) {
+        if (!ui_texture_) glGenTextures(1, &ui_texture_);
+        glBindTexture(GL_TEXTURE_2D, ui_texture_);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        if (!ui_fbo_) glGenFramebuffers(1, &ui_fbo_);
+        glBindFramebuffer(GL_FRAMEBUFFER, ui_fbo_);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, ui_texture_, 0);
+        ui_size_ = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE ? glm::ivec2(width, height) : glm::ivec2(0, 0);
+      }
+      // Drawn into the kept texture (when there is one), then copied into the window.
+      glBindFramebuffer(GL_FRAMEBUFFER, ui_size_ == glm::ivec2(width, height) ? ui_fbo_ : 0);
+      glViewport(0, 0, width, height);
+      glDisable(GL_SCISSOR_TEST);
+      glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      if (ui_size_ == glm::ivec2(width, height)) compose_cached_ui(width, height, false);
+      last_full_ui_ = start;
+    }
     if (timing) glFinish();
     const Clock::time_point t_draw = Clock::now();
     if (!pending_screenshot_.empty()) screenshot(pending_screenshot_), pending_screenshot_.clear();
@@ -2411,6 +2483,9 @@ int Studio::run() {
                  "gestura studio: %zu frames at %dx%d (preview %dx%d): frame time median %.1f ms, p95 %.1f ms, max %.1f ms\n",
                  frame_ms.size(), request_.size.width, request_.size.height, preview_width_, preview_height_,
                  percentile(steady, 0.5), percentile(steady, 0.95), percentile(steady, 1.0));
+    if (reused_ui_frames_ > 0)
+      std::fprintf(stderr, "gestura studio: %llu frames showed a new preview in the UI kept from the frame before (not drawn again)\n",
+                   static_cast<unsigned long long>(reused_ui_frames_));
     if (idle_waits_ > 0)
       std::fprintf(stderr, "gestura studio: %llu waits for input with nothing to draw (no frame drawn)\n",
                    static_cast<unsigned long long>(idle_waits_));
