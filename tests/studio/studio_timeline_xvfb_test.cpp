@@ -1,6 +1,8 @@
 // The studio's timeline, figure and IK editors under a virtual X server, driven by --script: a key
 // dragged to another time moves the peak of the exported BVH there (and undo moves it back); a
-// sign's bar made longer makes the exported motion longer by as much; the figure editor's saved
+// sign's bar made longer makes the exported motion longer by as much; the timeline saved as a clip
+// sign is played by the learning mode (topic "your signs"), signed in a sentence and played by the
+// dictionary; the figure editor's saved
 // skeleton renders with `gestura render` and receives a motion with `gestura retarget`, while a
 // skeleton file that does not parse is refused with nothing lost; dragging the right hand with IK
 // puts the wrist within 1 cm of the target and undo puts it back. Screenshots go to
