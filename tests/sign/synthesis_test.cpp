@@ -189,6 +189,19 @@ TEST(Synthesis, HelpRaisesTheBaseHand) {
   EXPECT_LT(glm::distance(palm_centre(end, Hand::Right), palm_centre(end, Hand::Left)), 0.08f);  // still together
 }
 
+// WHERE: the upright index finger wags side to side, each swing at full size (the fingertip
+// travels over 5 cm across; 4 cm when the wag's envelope spanned the whole movement).
+TEST(Synthesis, WhereWagsTheIndexFingerVisibly) {
+  const SignSynthesis r = lexicon_sign("WHERE");
+  float left = -1e9f, right = 1e9f;
+  for (float t = r.plan.sign_start; t <= r.plan.sign_end; t += 1.0f / 60.0f) {
+    const float x = joint(held_pose(r, t), "r_index_tip").x;
+    left = std::max(left, x);
+    right = std::min(right, x);
+  }
+  EXPECT_GT(left - right, 0.05f);
+}
+
 // HOUSE: the roof before the head (hands meeting at the top, sloping down and apart), then the
 // walls: the hands, upright and facing each other, go straight down.
 TEST(Synthesis, HouseHasARoofBeforeTheHeadAndWalls) {
