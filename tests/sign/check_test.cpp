@@ -83,6 +83,22 @@ TEST(SignCheck, MalformedSigmlAndBadArgumentsFailCleanly) {
   EXPECT_NE(r.output.find("expected .jsonl or .sigml"), std::string::npos);
 }
 
+TEST(SignCheck, AClipSignIsListedNotFailed) {
+  // A clip sign exported from a user lexicon (the studio's timeline made it): no notation to check.
+  const std::string text =
+      "{\"gloss\":\"one\",\"names\":\"hamflathand,hamextfingeru,hampalml\"}\n"
+      "{\"gloss\":\"WAVE\",\"clip_base64\":\"R0NMAAEAAAA=\"}\n"
+      "{\"gloss\":\"bad\"}\n";
+  const CheckReport r = check_jsonl(text, "t.jsonl");
+  EXPECT_EQ(r.signs, 3);
+  EXPECT_EQ(r.parsed, 1);
+  EXPECT_EQ(r.clips, 1);
+  EXPECT_EQ(r.failed, 1);  // the line without any notation
+  bool listed = false;
+  for (const std::string& n : r.notes) listed = listed || n.find("t.jsonl:2: WAVE: clip sign") != std::string::npos;
+  EXPECT_TRUE(listed);
+}
+
 TEST(SignCheck, SynthesisStepCountsWhenGiven) {
   const std::string text =
       "{\"gloss\":\"one\",\"names\":\"hamflathand,hamextfingeru,hampalml\"}\n"
