@@ -231,7 +231,7 @@ TEST(Synthesis, HandConstellationsBringTheHandsTogether) {
 // passes (a flat hand's contact found among the hand's ends, hands settling in space staying
 // there); 408 and 230 once a finger named after a one-finger form is the finger it extends (the Y
 // hands of hamfinger2 hampinky extend the little finger, not the index, and turn otherwise).
-constexpr int kMaxOffPlace = 412;   // measured 412 with body-site normals from the smooth surface (408 before)
+constexpr int kMaxOffPlace = 410;   // measured 410 with mirrored pairs shifting in the midline plane and the fist's thumb along the index (412 with body-site normals from the smooth surface, 408 before)
 constexpr int kMaxOffTurn = 231;    // measured 231 with body-site normals from the smooth surface (230 before)
 
 // Every sign of the German and Polish lexicons: no NaN, no joint outside its limits, no hand more
