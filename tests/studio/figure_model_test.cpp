@@ -125,7 +125,8 @@ TEST(FigureEditor, TheSkeletonFileReadsBackWithLimitsAndDhAndABrokenOneLosesNoth
   EXPECT_EQ(path, f.file());
 }
 
-// Found by fuzz_figure (fuzz/fuzz_figure.cpp): the sidecar reader let nlohmann's own exception
+// Found while writing fuzz_figure (fuzz/fuzz_figure.cpp), each input crashing it: the sidecar
+// reader let nlohmann's own exception
 // out for a value of the wrong type (the studio catches gestura::Error only, so it would have
 // ended), and read a limit past float's range as infinity, which a save writes as null: a file
 // the editor could not read back.
@@ -191,7 +192,7 @@ TEST(FigureFile, NumbersPastTheFileLimitAreRefusedSoWhatLoadsAlwaysSavesAndReads
   EXPECT_FLOAT_EQ(-1e7f, back.dh[e]->a);
 }
 
-// Also found by fuzz_figure: a BVH whose joint name is not UTF-8 (Latin-1 from an old exporter)
+// Found the same way: a BVH whose joint name is not UTF-8 (Latin-1 from an old exporter)
 // loaded, and saving it threw nlohmann's exception (JSON text is UTF-8), ending the studio with
 // the user's work. It still loads (so it can be repaired); saving names the joint.
 TEST(FigureFile, AJointNameThatIsNotUtf8LoadsAndItsSaveIsRefusedByNameUntilRenamed) {
