@@ -15,6 +15,7 @@ constexpr int kEscapePasses = 5;           // pushes out of the body per frame
 constexpr float kEscapeTolerance = 0.002f;  // metres deeper than the margin that calls for the straight way out
 constexpr float kEscapeStep = 0.01f;        // metres per step of it
 constexpr int kEscapeSteps = 15;
+constexpr float kLostHand = 0.03f;         // metres off its place that make a frame search the elbow circle
 constexpr float kContactTolerance = 0.002f;  // metres a hand's contact point may miss before it is corrected
 
 constexpr float kSpaceTurnWeight = 0.25f;  // metres a radian of turn weighs against place, out in space…
@@ -221,7 +222,33 @@ HandSolveResult pose_hand(const SigningRig& rig, Hand hand, const HandState& sta
                           bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
                           HandPoints& points) {
   apply_hand_posture(rig, hand, state.shape, pose);
-  if (state.active) return solve_hand(rig, hand, state, body_margin, search_circle, solver, pose, model, points);
+  if (state.active) {
+    const HandRig& h = rig.hand(hand);
+    const ArmSnapshot last_frame(h.arm, pose);
+    const std::optional<float> last_swivel = solver.swivel;
+    HandSolveResult r = solve_hand(rig, hand, state, body_margin, search_circle, solver, pose, model, points);
+    if (r.position_error <= kLostHand) return r;
+    // Near the ends of the joint ranges (a hand beside the ear, the elbow fully bent, a turn the
+    // wrist cannot make) continuing last frame's elbow swivel can lead the solver astray: a hand
+    // leaving the ear ended 40 cm off, then behind the head. Such a frame looks round the whole
+    // elbow circle afresh and, if that is no nearer, the arm keeps last frame's posture for it
+    // (unless that puts the hand in the body). Rare: the normal frame pays nothing for this.
+    solver.swivel.reset();
+    r = solve_hand(rig, hand, state, body_margin, true, solver, pose, model, points);
+    if (r.position_error <= kLostHand) return r;
+    local_to_model(rig.skeleton(), pose, model);
+    const float now = glm::distance(vec3(model[joint_slot(h.wrist)] * vec4(h.palm_centre_local, 1.0f)), state.position);
+    const ArmSnapshot solved(h.arm, pose);
+    last_frame.restore(pose);
+    local_to_model(rig.skeleton(), pose, model);
+    const float before = glm::distance(vec3(model[joint_slot(h.wrist)] * vec4(h.palm_centre_local, 1.0f)), state.position);
+    if (before < now && hand_depth(rig, h, body_margin, pose, model, points) <= kEscapeTolerance) {
+      solver.swivel = last_swivel;
+      return HandSolveResult{before, r.orientation_error};
+    }
+    solved.restore(pose);
+    return r;
+  }
   for (int j : rig.hand(hand).arm.joints) pose.rotations[joint_slot(j)] = rig.rest.rotations[joint_slot(j)];
   solver.swivel.reset();
   return {};
