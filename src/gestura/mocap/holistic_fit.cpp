@@ -132,7 +132,14 @@ void HolisticFit::fit_arm(const Arm& arm, const mat3& to_body, const vec3& shoul
   const vec3 start = vec3(model[joint_slot(arm.shoulder)][3]);
   const vec3 elbow_point = start + glm::normalize(upper) * arm.upper;
   const vec3 wrist_point = elbow_point + glm::normalize(fore) * arm.fore;
-  solve_limb(skeleton_, pose, arm.shoulder, arm.elbow, arm.wrist, arm.hinge, wrist_point, elbow_point);
+  // The pole is the elbow point nudged the way elbows point when the arm is loose (back, down, a
+  // little out): a bent arm's elbow decides; a nearly straight arm, whose elbow lies on the
+  // shoulder–wrist line in any direction, does not spin about that line with the landmarks' noise.
+  const float outward = arm.shoulder == left_.shoulder ? 1.0f : -1.0f;
+  const vec3 loose = glm::normalize(vec3(0.3f * outward, -0.5f, -1.0f));
+  const float bend = std::acos(std::clamp(glm::dot(glm::normalize(upper), glm::normalize(fore)), -1.0f, 1.0f));
+  const float nudge = 0.05f + 0.6f * std::max(0.0f, 1.0f - bend / deg(45.0f));
+  solve_limb(skeleton_, pose, arm.shoulder, arm.elbow, arm.wrist, arm.hinge, wrist_point, elbow_point + loose * (nudge * arm.upper));
 }
 
 void HolisticFit::fit_hand(const Arm& arm, const mat3& palm, Pose& pose) const {
