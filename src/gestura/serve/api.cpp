@@ -254,7 +254,31 @@ RoomServices Api::room_services() {
     return gaze->look_at(SeatView{host.position, host.yaw}, point);
   };
   services.prepare_host = [this] { host_gaze(); };
+  services.capture = [this](const HolisticFrame& frame, const std::string& look) {
+    const std::shared_ptr<const HolisticFit> fit = holistic_fit(look);
+    const Pose pose = fit->fit(frame);
+    JointRotations out;
+    for (const int j : fit->driven_joints()) {
+      const quat& q = pose.rotations[joint_slot(j)];
+      out.push_back({fit->skeleton().names[joint_slot(j)], {q.x, q.y, q.z, q.w}});
+    }
+    return out;
+  };
   return services;
+}
+
+std::shared_ptr<const HolisticFit> Api::holistic_fit(const std::string& look) {
+  {
+    std::lock_guard lock(fit_mutex_);
+    if (const auto it = fits_.find(look); it != fits_.end()) return it->second;
+  }
+  // Built outside the lock (the look's avatar may take seconds the first time).
+  const WorkspacePool::Lease workspace = workspaces_->acquire();
+  app::AvatarChoice choice;
+  choice.avatar = look;
+  auto fit = std::make_shared<const HolisticFit>(workspace->avatar(choice).skeleton);
+  std::lock_guard lock(fit_mutex_);
+  return fits_.emplace(look, std::move(fit)).first->second;
 }
 
 std::shared_ptr<const HostGaze> Api::host_gaze() {
