@@ -34,6 +34,7 @@ namespace fs = std::filesystem;
 using gestura::test::run_command;
 using gestura::testing::TempDir;
 using gestura::test::have_xvfb;
+using gestura::test::peak_time;
 using gestura::test::read_json_file;
 using gestura::test::shot_dir;
 using gestura::test::run_studio;
@@ -42,18 +43,6 @@ using gestura::test::run_studio;
 
 
 
-// The time at which `joint` is turned furthest from its first frame in a BVH file.
-float peak_time(const BvhFile& bvh, const std::string& joint) {
-  const int j = bvh.skeleton.find(joint);
-  if (j < 0) return -1.0f;
-  const QuatTrack& track = bvh.clip.rotations[static_cast<std::size_t>(j)];
-  float best = -1.0f, at = -1.0f;
-  for (std::size_t k = 0; k < track.size(); ++k) {
-    const float angle = 2.0f * std::acos(std::min(1.0f, std::abs(glm::dot(track.values[k], track.values[0]))));
-    if (angle > best + 1e-6f) best = angle, at = track.times[k];
-  }
-  return at;
-}
 
 TEST(StudioTimelineUnderXvfb, RetimingAKeyMovesItInTheExportedBvhAndABarRetimesTheUtterance) {
   if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
