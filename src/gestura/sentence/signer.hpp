@@ -12,6 +12,7 @@
 // (sentence/sign_motion_cache, sentence/utterance_performer) → non-manual markers and mouthing added
 // as face channels and head rotations (face/).
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -70,6 +71,15 @@ class Signer {
   // The first utterance that uses a sign performs its citation form by IK and stores it (per
   // signer, so per avatar); later ones reuse it. Safe to call from several threads.
   SentencePerformance say(std::string_view text, const SayOptions& options = {}) const;
+
+  // Signs given by their notation (HamNoSys 4 Unicode), performed one after another on one two-hand
+  // timeline as running signing: a SiGML document of several signs. `gloss` names each in the result.
+  // Throws gestura::Error for none, more than kMaxSayGlosses, a notation that does not parse, a speed
+  // outside 0.25–2, or an utterance over kMaxSaySeconds.
+  struct NotatedSign {
+    std::string gloss, notation;
+  };
+  SentencePerformance sign_sequence(std::span<const NotatedSign> signs, const SayOptions& options = {}) const;
 
   // Signs whose joint motion is stored so far.
   std::size_t cached_signs() const { return cache_->signs_stored(); }
