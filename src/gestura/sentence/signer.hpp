@@ -12,8 +12,10 @@
 // (sentence/sign_motion_cache, sentence/utterance_performer) → non-manual markers and mouthing added
 // as face channels and head rotations (face/).
 #include <memory>
+#include <mutex>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <string_view>
 #include <vector>
 
@@ -25,6 +27,8 @@
 #include "gestura/sign/signing_rig.hpp"
 
 namespace gestura {
+
+struct ClipSignMotion;
 
 struct SayOptions {
   float speed = 1.0f;        // global tempo 0.25–2
@@ -65,11 +69,14 @@ class Signer {
   Signer(const Avatar& avatar, LayeredLexicon& lexicon);
   Signer(const Signer&) = delete;  // the motion cache refers to this signer's rig
   Signer& operator=(const Signer&) = delete;
+  ~Signer();
 
   // Throws gestura::Error for empty text, text over kMaxSayBytes or kMaxSayGlosses glosses, an
   // utterance that would last over kMaxSaySeconds, invalid UTF-8, a sign language without a lexicon, and a speed outside 0.25–2.
   // The first utterance that uses a sign performs its citation form by IK and stores it (per
-  // signer, so per avatar); later ones reuse it. Safe to call from several threads.
+  // signer, so per avatar); later ones reuse it. A clip sign (keyframed in the studio) plays its
+  // recorded motion and face channels between the same transitions (sentence/clip_sign_motion.hpp).
+  // Safe to call from several threads.
   SentencePerformance say(std::string_view text, const SayOptions& options = {}) const;
 
   // Signs given by their notation (HamNoSys 4 Unicode), performed one after another on one two-hand
@@ -91,6 +98,10 @@ class Signer {
   LayeredLexicon* lexicon_;
   SigningRig rig_;
   std::unique_ptr<SignMotionCache> cache_;
+  // Clip signs made ready for this rig, by their stored bytes.
+  const ClipSignMotion& clip_sign(const SignEntry& entry) const;
+  mutable std::mutex clip_mutex_;
+  mutable std::unordered_map<std::string, std::unique_ptr<ClipSignMotion>> clip_signs_;
 };
 
 }  // namespace gestura
