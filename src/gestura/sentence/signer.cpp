@@ -377,4 +377,35 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
   return out;
 }
 
+
+SentencePerformance Signer::sign_sequence(std::span<const NotatedSign> signs, const SayOptions& options) const {
+  if (!(options.speed >= 0.25f && options.speed <= 2.0f))
+    throw Error("speed " + std::to_string(options.speed) + " is outside 0.25–2");
+  if (!(options.fps >= 1.0f && options.fps <= 240.0f)) throw Error("fps " + std::to_string(options.fps) + " is outside 1–240");
+  if (signs.empty()) throw Error("nothing to sign: no sign was given");
+  if (signs.size() > kMaxSayGlosses)
+    throw Error(std::to_string(signs.size()) + " signs, at most " + std::to_string(kMaxSayGlosses) + " in one utterance");
+  SentencePerformance out;
+  UtteranceBuilder builder(rig_, options.speed);
+  float first_start = -1.0f, last_end = 0.0f;
+  for (std::size_t i = 0; i < signs.size(); ++i) {
+    const float modelled = kPlannedPerModelSecond * citation_timing(sign::parse_hamnosys_unicode(signs[i].notation)).moving();
+    const std::array<float, 2> span = builder.add_sign(cache_->sign(signs[i].notation), i + 1 == signs.size(), 0.0f, modelled);
+    if (first_start < 0.0f) first_start = span[0];
+    last_end = span[1];
+    out.glosses.push_back({signs[i].gloss, signs[i].gloss, span[0], span[1]});
+    if (builder.now() > kMaxSaySeconds)
+      throw Error("the signs would last more than " + std::to_string(static_cast<int>(kMaxSaySeconds)) + " s, passed at sign " +
+                  std::to_string(i + 1) + " of " + std::to_string(signs.size()));
+  }
+  out.plan = builder.finish(first_start, last_end);
+  out.clip = perform_utterance(out.plan, builder.spans(), *cache_, options.fps, &out.motion);
+  out.clip.name = "sign";
+  write_gaze_with_role_shift({}, rig_, out.clip, options.fps);
+  face::write_jaw_from_channel(avatar_->skeleton, out.clip);
+  out.clip.duration = std::max(out.clip.duration, out.clip.end_time());
+  out.duration = out.clip.duration;
+  return out;
+}
+
 }  // namespace gestura

@@ -13,6 +13,7 @@
 // as face channels and head rotations (face/).
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <string_view>
@@ -77,6 +78,15 @@ class Signer {
   // recorded motion and face channels between the same transitions (sentence/clip_sign_motion.hpp).
   // Safe to call from several threads.
   SentencePerformance say(std::string_view text, const SayOptions& options = {}) const;
+
+  // Signs given by their notation (HamNoSys 4 Unicode), performed one after another on one two-hand
+  // timeline as running signing: a SiGML document of several signs. `gloss` names each in the result.
+  // Throws gestura::Error for none, more than kMaxSayGlosses, a notation that does not parse, a speed
+  // outside 0.25–2, or an utterance over kMaxSaySeconds.
+  struct NotatedSign {
+    std::string gloss, notation;
+  };
+  SentencePerformance sign_sequence(std::span<const NotatedSign> signs, const SayOptions& options = {}) const;
 
   // Signs whose joint motion is stored so far.
   std::size_t cached_signs() const { return cache_->signs_stored(); }

@@ -1,5 +1,6 @@
 #include "gestura/serve/api.hpp"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <chrono>
@@ -14,6 +15,10 @@
 #include "gestura/app/say.hpp"
 #include "gestura/app/sign.hpp"
 #include "gestura/body/avatar_look.hpp"
+#include "gestura/core/utf8.hpp"
+#include "gestura/sentence/signer.hpp"
+#include "gestura/sign/hamnosys_symbol.hpp"
+#include "gestura/sign/sigml.hpp"
 #include "gestura/io/gltf_export.hpp"
 #include "gestura/serve/api_error.hpp"
 #include "gestura/serve/clip_glb.hpp"
@@ -400,6 +405,30 @@ ApiResponse Api::sign(ApiRequest& request, const app::RunContext& context) {
     sign.source.sigml = temporary.path.string();
   }
   const WorkspacePool::Lease workspace = workspaces_->acquire();
+  // A document of several signs, none chosen by gloss: all of them, in order, as running signing on
+  // one two-hand timeline (the Signer's, as for a sentence), each gloss timed.
+  if (!sigml_text.empty() && sign.source.gloss.empty()) {
+    std::vector<Signer::NotatedSign> signs;
+    for (const sign::SigmlSign& s : sign::read_sigml(sigml_text, "sigml")) {
+      std::string notation;
+      for (const sign::Symbol symbol : s.symbols) utf8::append(notation, sign::symbol_info(symbol).codepoint);
+      signs.push_back({s.gloss, std::move(notation)});
+    }
+    const bool notated = std::all_of(signs.begin(), signs.end(), [](const Signer::NotatedSign& s) { return !s.notation.empty(); });
+    if (signs.size() > 1 && notated) {
+      SayOptions options;
+      options.speed = sign.speed;
+      if (!(options.speed >= 0.25f && options.speed <= 2.0f)) app::usage_error("speed", "is between 0.25 and 2 for a document of several signs");
+      context.check_stop();
+      const SentencePerformance performed = workspace->signer(sign.avatar).sign_sequence(signs, options);
+      json glosses = json::array();
+      for (const PerformedGloss& g : performed.glosses) glosses.push_back({{"gloss", g.gloss}, {"start", g.start}, {"end", g.end}});
+      const json timeline{{"duration", performed.duration}, {"glosses", glosses}, {"sign_start", performed.plan.sign_start},
+                          {"sign_end", performed.plan.sign_end}, {"notes", performed.notes}};
+      const Avatar& avatar = workspace->avatar(sign.avatar);
+      return performance_response(request, timeline, avatar.skeleton, performed.clip, avatar.mesh);
+    }
+  }
   app::RunContext leased = context;
   leased.workspace = workspace.get();
   const app::SignResult result = app::perform(sign, leased);
