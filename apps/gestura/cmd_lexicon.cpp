@@ -32,6 +32,7 @@ void print_entry(const SignEntry& e) {
             << "  notation (" << to_string(e.notation_kind)
             << "): " << (e.notation_kind == NotationKind::clip ? std::to_string(e.clip.size()) + " bytes" : e.notation)
             << "\n  keywords: " << keyword_list(e) << "\n  source: " << e.source << "\n  licence: " << e.licence << "\n";
+  if (e.agreement != Agreement::none) std::cout << "  agreement: " << to_string(e.agreement) << "\n";
 }
 
 std::function<Invocation()> query(app::LexiconQueryKind kind) {

@@ -380,7 +380,14 @@ void Studio::set_field(const std::string& field, const std::string& value) {
   else if (field == "meaning") d.meaning = value;
   else if (field == "source") d.source = value;
   else if (field == "licence") d.licence = value;
-  else if (field == "variant") {
+  else if (field == "agreement") {
+    try {
+      d.agreement = agreement_from_string(value);
+    } catch (const std::exception& e) {
+      say(e.what());
+      return;
+    }
+  } else if (field == "variant") {
     try {
       const int v = std::stoi(value);
       if (v < 1 || v > 1000000) throw std::out_of_range("variant");
@@ -390,7 +397,7 @@ void Studio::set_field(const std::string& field, const std::string& value) {
       return;
     }
   } else {
-    say("no field '" + field + "' (gloss lang variant names keywords meaning source licence)");
+    say("no field '" + field + "' (gloss lang variant names keywords meaning source licence agreement)");
     return;
   }
   message_.clear();
@@ -1113,6 +1120,15 @@ void Studio::draw_metadata(const ImVec2& pos, const ImVec2& size) {
     field("Meaning", "meaning", d.meaning);
     field("Source", "source", d.source);
     field("Licence", "licence", d.licence);
+    // An agreement verb moves from its subject's place to its object's in sentences (docs/grammar.md).
+    int agreement = static_cast<int>(d.agreement);
+    if (ImGui::Combo("Agreement", &agreement, "none\0forward (subject to object)\0backward (object to subject)\0")) {
+      SignDraft next = model_.draft();
+      next.agreement = static_cast<Agreement>(agreement);
+      message_.clear();
+      model_.edit("edit agreement", next);
+      model_.seal();
+    }
     ImGui::BeginDisabled(!model_.writable());
     if (ImGui::Button("Save  (Ctrl+S)")) {
       message_.clear();

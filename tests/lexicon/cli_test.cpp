@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/build_paths.hpp"
 #include "support/cli.hpp"
 #include "temp_dir.hpp"
 #include "support/shared_data.hpp"
@@ -46,6 +47,28 @@ TEST(LexiconCli, AddShowSearchExportRemove) {
 
   EXPECT_EQ(gestura_cli(dir, "lexicon remove HOUSE --lang ase").status, 0);
   EXPECT_EQ(gestura_cli(dir, "lexicon list").output, "");
+}
+
+TEST(LexiconCli, AgreementIsStoredShownAndExported) {
+  TempDir dir;
+  EXPECT_EQ(gestura_cli(dir, "lexicon add --gloss NUDGE --lang ase --agreement forward --hamnosys '" + kGoodHamnosys +
+                                 "' --keywords nudge").status, 0);
+  const CliRun show = gestura_cli(dir, "lexicon show NUDGE");
+  EXPECT_NE(show.output.find("agreement: forward"), std::string::npos) << show.output;
+  EXPECT_EQ(gestura_cli(dir, "lexicon export '" + dir.file("out.jsonl") + "'").status, 0);
+  std::ifstream exported(dir.file("out.jsonl"));
+  std::string line;
+  std::getline(exported, line);
+  EXPECT_NE(line.find("\"agreement\":\"forward\""), std::string::npos) << line;
+  // The sign agrees in a sentence: from the boy's place to the girl's.
+  const CliRun gloss = gestura::test::run_cli("gloss 'The boy nudged the girl.'",
+                                              "GESTURA_LEXICON='" + dir.file("user.sqlite") + "' GESTURA_BUILTIN_LEXICON='" +
+                                                  gestura::test::source_dir() + "/data/lexicon'");
+  EXPECT_NE(gloss.output.find("NUDGE:3a→3b"), std::string::npos) << gloss.output;
+  const CliRun bad = gestura_cli(dir, "lexicon add --gloss POKE --lang ase --agreement sideways --hamnosys '" +
+                                          kGoodHamnosys + "'");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("agreement"), std::string::npos) << bad.output;
 }
 
 TEST(LexiconCli, AddFromSigmlAndImportSigml) {

@@ -63,6 +63,7 @@ TEST(LexiconJsonl, ExportImportRoundTrip) {
   auto original = Lexicon::in_memory();
   SignEntry house{.gloss = "HOUSE", .language = "ase", .notation = "\xee\x80\x81", .source = "s", .licence = "l"};
   house.keywords = {Keyword{"house"}, Keyword{"haus", "deu", "building"}};
+  house.agreement = Agreement::forward;  // not a verb, but the field travels whatever it says
   original.add(house);
   SignEntry clip{.gloss = "WAVE", .language = "ase", .variant = 3, .notation_kind = NotationKind::clip};
   clip.clip = {0, 255, 1, 2, 3};  // length not a multiple of 3 exercises base64 padding
@@ -85,7 +86,10 @@ TEST(LexiconJsonl, ExportImportRoundTrip) {
     EXPECT_EQ(copied[i].keywords, all[i].keywords);
     EXPECT_EQ(copied[i].source, all[i].source);
     EXPECT_EQ(copied[i].licence, all[i].licence);
+    EXPECT_EQ(copied[i].agreement, all[i].agreement);
   }
+  EXPECT_EQ(copied[0].agreement, Agreement::forward);
+  EXPECT_NE(file.str().find("\"agreement\":\"forward\""), std::string::npos) << file.str();
 }
 
 TEST(LexiconJsonl, FailingLineRollsBackTheWholeImport) {
@@ -128,6 +132,9 @@ TEST(LexiconJsonl, ErrorsNameTheLine) {
   EXPECT_NE(import_text("{\"gloss\":\"A\",\"lang\":\"ase\",\"hamnosys\":\"a\",\"variant\":-3}").find("variant"),
             std::string::npos);
   EXPECT_NE(import_text("{\"gloss\":\"A\",\"hamnosys\":\"a\"}").find("no 'lang'"), std::string::npos);
+  EXPECT_NE(import_text("{\"gloss\":\"A\",\"lang\":\"ase\",\"hamnosys\":\"a\",\"agreement\":\"sideways\"}")
+                .find("x.jsonl:1: unknown agreement 'sideways'"),
+            std::string::npos);
   EXPECT_NE(import_text(std::string("\x89PNG\r\n\x1a\n\xff\xfe", 10)).find("x.jsonl:1: bad JSON"), std::string::npos);
   EXPECT_EQ(lex.size(), 0u);
 }

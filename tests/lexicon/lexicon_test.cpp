@@ -181,7 +181,7 @@ TEST(LexiconMigration, UpgradesVersion1DatabaseKeepingData) {
   }
   auto lex = Lexicon::open(path);
   EXPECT_EQ(lexicon_schema::version_of(lex.database()), lexicon_schema::current_version());
-  EXPECT_EQ(lexicon_schema::current_version(), 2);
+  EXPECT_EQ(lexicon_schema::current_version(), 3);
   const auto tree = lex.find("TREE", "ase");
   ASSERT_TRUE(tree);
   EXPECT_EQ(tree->variant, 1);
@@ -195,6 +195,46 @@ TEST(LexiconMigration, UpgradesVersion1DatabaseKeepingData) {
   SignEntry second = sign("TREE", "ase", "tree-2");
   second.variant = 2;
   EXPECT_NO_THROW(lex.add(second));
+}
+
+TEST(LexiconMigration, UpgradesVersion2DatabaseKeepingRowsAndAddingAgreement) {
+  // A user lexicon written by the program before agreement was a field: every row is kept, each gains
+  // 'none', except the ASL verbs the grammar pass used to know by name, which stay agreement verbs.
+  TempDir dir;
+  const std::string path = dir.file("v2.sqlite");
+  {
+    sqlite::Database db(path, true);
+    lexicon_schema::migrate(db, 2);
+    EXPECT_EQ(lexicon_schema::version_of(db), 2);
+    db.exec("INSERT INTO signs (gloss, lang, variant, notation_kind, notation, source, licence, created, updated) VALUES "
+            "('TREE', 'ase', 1, 'hamnosys', 'tree-notation', 'mine', 'CC0-1.0', 1234, 1300), "
+            "('GIVE', 'ase', 2, 'hamnosys', 'give-notation', 'mine', '', 1, 2), "
+            "('BORROW', 'ase', 1, 'hamnosys', 'borrow-notation', 'mine', '', 1, 2), "
+            "('GIVE', 'bfi', 1, 'hamnosys', 'bsl-give', 'mine', '', 1, 2)");
+    db.exec("INSERT INTO keywords (sign_id, word, lang, meaning) VALUES (1, 'tree', 'eng', 'a plant')");
+  }
+  auto lex = Lexicon::open(path);
+  EXPECT_EQ(lexicon_schema::version_of(lex.database()), 3);
+  EXPECT_EQ(lex.list().size(), 4u);
+  const auto tree = lex.find("TREE", "ase");
+  ASSERT_TRUE(tree);
+  EXPECT_EQ(tree->notation, "tree-notation");
+  EXPECT_EQ(tree->source, "mine");
+  EXPECT_EQ(tree->licence, "CC0-1.0");
+  EXPECT_EQ(tree->created, 1234);
+  EXPECT_EQ(tree->updated, 1300);
+  ASSERT_EQ(tree->keywords.size(), 1u);
+  EXPECT_EQ(tree->keywords[0].meaning, "a plant");
+  EXPECT_EQ(tree->agreement, Agreement::none);
+  EXPECT_EQ(lex.find("GIVE", "ase", 2)->agreement, Agreement::forward);
+  EXPECT_EQ(lex.find("BORROW", "ase")->agreement, Agreement::backward);
+  EXPECT_EQ(lex.find("GIVE", "bfi")->agreement, Agreement::none);  // another language's GIVE is not ASL's
+  // The field is stored and read back, and the database refuses a value it does not know.
+  SignEntry pay = sign("PAY-BACK", "ase", "pay-notation");
+  pay.agreement = Agreement::backward;
+  lex.add(pay);
+  EXPECT_EQ(lex.find("PAY-BACK", "ase")->agreement, Agreement::backward);
+  EXPECT_THROW(lex.database().exec("UPDATE signs SET agreement = 'sideways' WHERE gloss = 'TREE'"), std::exception);
 }
 
 TEST(LexiconMigration, RefusesNewerSchema) {

@@ -143,10 +143,43 @@ TEST(ReferentLoci, PointingWordsThatAreNotAnaphoraKeepTheirSign) {
   EXPECT_FALSE(t.glosses.back().at);
 }
 
-TEST(ReferentLoci, AgreementVerbsAreTheDirectionalOnes) {
-  for (const char* verb : {"GIVE", "HELP", "TELL", "ASK", "SHOW", "SEND", "PAY", "INFORM", "BORROW"})
-    EXPECT_TRUE(is_agreement_verb(verb)) << verb;
-  for (const char* plain : {"LOVE", "EAT", "GO", "KNOW", "IX-3"}) EXPECT_FALSE(is_agreement_verb(plain)) << plain;
+TEST(ReferentLoci, AgreementIsTheLexiconEntrysField) {
+  // The built-in lexicon marks the directional verbs; plain verbs and pronouns have none.
+  Lexicon builtin = load_builtin_lexicon(builtin_lexicon_files());
+  LayeredLexicon layers;
+  layers.push_layer(builtin);
+  LexiconInventory inventory(layers, "ase");
+  for (const char* verb : {"GIVE", "HELP", "TELL", "ASK", "SHOW", "SEND", "PAY"})
+    EXPECT_EQ(inventory.agreement_of(verb), Agreement::forward) << verb;
+  EXPECT_EQ(inventory.agreement_of("BORROW"), Agreement::backward);
+  for (const char* plain : {"LOVE", "EAT", "GO", "KNOW", "IX-3", "NO-SUCH-SIGN"})
+    EXPECT_EQ(inventory.agreement_of(plain), Agreement::none) << plain;
+}
+
+TEST(ReferentLoci, AUserSignMarkedForwardAgrees) {
+  // A user lexicon adds a sign the built-in one lacks, marked as an agreement verb: in a sentence
+  // it moves from the subject's place to the object's, as GIVE does. Unmarked, it keeps its place.
+  Lexicon builtin = load_builtin_lexicon(builtin_lexicon_files());
+  for (const Agreement agreement : {Agreement::forward, Agreement::none}) {
+    Lexicon user = Lexicon::in_memory();
+    SignEntry e;
+    e.gloss = "NUDGE";
+    e.language = "ase";
+    e.notation = builtin.find("GIVE", "ase")->notation;
+    e.keywords = {Keyword{"nudge"}};
+    e.agreement = agreement;
+    user.add(e);
+    LayeredLexicon layers;
+    layers.push_layer(builtin);
+    layers.push_layer(user);
+    LexiconInventory inventory(layers, "ase");
+    const Translation t = translate_to_gloss("The boy nudged the girl.", inventory);
+    if (agreement == Agreement::forward)
+      EXPECT_NE(t.text().find("NUDGE:3a→3b"), std::string::npos) << t.text();
+    else
+      EXPECT_EQ(t.text().find("NUDGE:"), std::string::npos) << t.text();
+    EXPECT_NE(t.text().find("NUDGE"), std::string::npos) << t.text();
+  }
 }
 
 }  // namespace

@@ -28,6 +28,7 @@ WordListInventory vocabulary() {
       for (char& c : g) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
       return g;
     }());
+  v.set_agreement("HELP", Agreement::forward);  // as the built-in lexicon's entry says
   return v;
 }
 
@@ -333,11 +334,35 @@ TEST(TranslatorParse, AParticipleUsedAsAnAdjectiveKeepsItsOwnSign) {
   EXPECT_EQ(text("I am tired."), "IX-1 TIRED");
   EXPECT_EQ(text("I am very tired."), "IX-1 VERY TIRED");
   EXPECT_EQ(text("He left yesterday."), "YESTERDAY IX-3a LEAVE");
+  // After "was", where the parse joins "tired and left" as two verbs, WordNet's adjective 'tired'
+  // (a form the lexicon signs) is the state; "left" after "and" is still the verb.
+  EXPECT_EQ(text("She was tired and left."), "IX-3a TIRED AND LEAVE");
+  // A passive participle that is no adjective in WordNet keeps its verb: "was given" → GIVE.
+  v.add("give", "GIVE");
+  EXPECT_EQ(text("The book was given to me.").find("GIVE") != std::string::npos, true) << text("The book was given to me.");
+}
+
+// A capitalised word that link-grammar reads as a given name is a name, even when the noun has a
+// sign: "Bill" in "John told Bill he won" is a person, fingerspelled and placed, not BILL (money).
+TEST(TranslatorParse, AGivenNameIsANameNotTheNoun) {
+  WordListInventory v = vocabulary();
+  v.add("bill", "BILL");
+  v.add("tell", "TELL");
+  v.add("pay", "PAY");
+  v.set_agreement("TELL", Agreement::forward);
+  const Translation t = translate_to_gloss("John told Bill he won.", v);
+  EXPECT_EQ((" " + t.text() + " ").find(" BILL "), std::string::npos) << t.text();
+  EXPECT_NE(t.text().find("FS-BILL"), std::string::npos) << t.text();
+  EXPECT_NE(t.text().find("TELL:3a→3b"), std::string::npos) << t.text();
+  // The noun keeps its sign, also capitalised at the start of a sentence.
+  EXPECT_NE(translate_to_gloss("I paid the bill.", v).text().find("BILL"), std::string::npos);
+  EXPECT_EQ(translate_to_gloss("Bill paid.", v).text().find("FS-BILL"), std::string::npos);
 }
 
 TEST(TranslatorParse, TheExplanationNamesTheParse) {
   WordListInventory v = vocabulary();
   v.add("give", "GIVE");
+  v.set_agreement("GIVE", Agreement::forward);  // as the lexicon entry says
   const Translation t = translate_to_gloss("She gave him the book. Do you like coffee?", v);
   ASSERT_EQ(t.sentences.size(), 2u);
   EXPECT_EQ(t.sentences[0].parse.rfind("(S (NP she) (VP gave", 0), 0u) << t.sentences[0].parse;

@@ -95,7 +95,8 @@ nlohmann::json entry_json(const SignEntry& e) {
           {"notation", e.notation_kind == NotationKind::clip ? std::string() : e.notation},
           {"keywords", keywords},
           {"source", e.source},
-          {"licence", e.licence}};
+          {"licence", e.licence},
+          {"agreement", to_string(e.agreement)}};
 }
 
 }  // namespace
@@ -173,6 +174,7 @@ LexiconChangeResult run(const LexiconAddRequest& request, const RunContext&) {
     if (!word.empty()) e.keywords.push_back(Keyword{word});
   e.source = request.source.empty() ? "gestura lexicon add" : request.source;
   e.licence = request.licence;
+  as_field_error(ErrorCategory::input, "agreement", [&] { e.agreement = agreement_from_string(request.agreement); });
   as_field_error(ErrorCategory::input, "lang", [&] { require_known_sign_language(e.language); });
   as_field_error(ErrorCategory::input, request.hamnosys.empty() ? "sigml" : "hamnosys", [&] { check_notation(e); });
   Lexicon lex = open_for_writing(request.db);

@@ -58,7 +58,7 @@ struct LexiconChangeResult {
 nlohmann::json to_json(const LexiconChangeResult& result);
 
 struct LexiconAddRequest {
-  std::string gloss, lang, hamnosys, sigml, keywords, source, licence;
+  std::string gloss, lang, hamnosys, sigml, keywords, source, licence, agreement;
   std::optional<int> variant;
   bool replace = false;
   std::string db;
@@ -73,6 +73,7 @@ struct LexiconAddRequest {
     visit(self.variant, FieldInfo{.name = "variant", .help = "the variant number", .value = "N", .min = 1, .max = 1000000, .unset = "1"});
     visit(self.source, FieldInfo{.name = "source", .help = "where the sign comes from", .value = "S"});
     visit(self.licence, FieldInfo{.name = "licence", .help = "its licence", .value = "L"});
+    visit(self.agreement, FieldInfo{.name = "agreement", .help = "none (the default), or an agreement verb: forward (subject to object) or backward", .value = "A"});
     visit(self.replace, FieldInfo{.name = "replace", .help = "replace an entry with the same gloss, language and variant"});
     visit(self.db, FieldInfo{.name = "db", .help = "the user lexicon (SQLite file)", .value = "PATH"});
   }

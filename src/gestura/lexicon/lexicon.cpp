@@ -18,7 +18,7 @@ namespace gestura {
 namespace {
 
 constexpr std::string_view kSignColumns =
-    "SELECT id, gloss, lang, variant, notation_kind, notation, clip, source, licence, created, updated FROM signs ";
+    "SELECT id, gloss, lang, variant, notation_kind, notation, clip, source, licence, created, updated, agreement FROM signs ";
 
 std::string ascii_lower(std::string_view text) {
   std::string out(text);
@@ -171,13 +171,14 @@ std::int64_t Lexicon::add(SignEntry e, OnConflict on_conflict) {
     }
   }
   auto& insert = db_.cached(
-      "INSERT INTO signs (gloss, lang, variant, notation_kind, notation, clip, source, licence, created, updated) "
-      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, COALESCE(?9, unixepoch()), unixepoch())");
+      "INSERT INTO signs (gloss, lang, variant, notation_kind, notation, clip, source, licence, created, updated, "
+      "agreement) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, COALESCE(?9, unixepoch()), unixepoch(), ?10)");
   insert.bind(1, e.gloss).bind(2, e.language).bind(3, std::int64_t{e.variant});
   insert.bind(4, to_string(e.notation_kind)).bind(5, e.notation);
   if (e.clip.empty()) insert.bind_null(6); else insert.bind(6, e.clip);
   insert.bind(7, e.source).bind(8, e.licence);
   if (created) insert.bind(9, *created); else insert.bind_null(9);
+  insert.bind(10, to_string(e.agreement));
   insert.run();
   const std::int64_t id = db_.last_insert_rowid();
   auto& keyword = db_.cached("INSERT INTO keywords (sign_id, word, lang, meaning) VALUES (?1, ?2, ?3, ?4)");
@@ -219,6 +220,7 @@ std::vector<SignEntry> Lexicon::query(std::string_view where_and_order, const st
     e.licence = stmt.text(8);
     e.created = stmt.integer(9);
     e.updated = stmt.integer(10);
+    e.agreement = agreement_from_string(stmt.text(11));
     out.push_back(std::move(e));
   }
   for (SignEntry& e : out) load_keywords(e);

@@ -144,6 +144,7 @@ SignEntry entry_from_json(const nlohmann::json& o, const ImportOptions& options)
   if (e.source.empty()) e.source = options.source;
   e.licence = string_field(o, "licence");
   if (e.licence.empty()) e.licence = options.licence;
+  e.agreement = agreement_from_string(string_field(o, "agreement"));
   return e;
 }
 
@@ -167,6 +168,7 @@ nlohmann::json entry_to_json(const SignEntry& e) {
   o["keywords"] = std::move(keywords);
   o["source"] = e.source;
   o["licence"] = e.licence;
+  if (e.agreement != Agreement::none) o["agreement"] = to_string(e.agreement);
   return o;
 }
 

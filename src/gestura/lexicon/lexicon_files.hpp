@@ -4,6 +4,7 @@
 // JSON lines: one entry per line, e.g.
 //   {"gloss":"HOUSE","lang":"ase","variant":1,"hamnosys":"…","keywords":["house","home"],
 //    "source":"my notes","licence":"CC0-1.0"}
+// An agreement verb adds "agreement":"forward" (or "backward"; "none", the default, is not written).
 // The notation is one of "hamnosys" (text), "sigml" (one <hns_sign> element as text) or
 // "clip_base64". "keywords" is a list of words or of {"word","lang","meaning"} objects (lang defaults
 // to eng), or one comma-separated string. Blank lines are skipped. Unknown fields are ignored. A gloss

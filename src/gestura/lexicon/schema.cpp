@@ -42,7 +42,19 @@ ALTER TABLE keywords ADD COLUMN meaning TEXT NOT NULL DEFAULT '';
 CREATE INDEX keywords_by_sign ON keywords (sign_id);
 )sql";
 
-constexpr std::array kMigrations{Migration{1, kV1}, Migration{2, kV2}};
+// Version 3: agreement verbs are a property of the entry (docs/grammar.md). Rows stored before keep
+// their data and gain 'none', except the ASL verbs the grammar pass used to know by name, which
+// stay agreement verbs as they were.
+constexpr std::string_view kV3 = R"sql(
+ALTER TABLE signs ADD COLUMN agreement TEXT NOT NULL DEFAULT 'none'
+  CHECK (agreement IN ('none', 'forward', 'backward'));
+UPDATE signs SET agreement = 'forward' WHERE lang = 'ase' AND gloss IN
+  ('GIVE', 'HELP', 'TELL', 'ASK', 'SHOW', 'SEND', 'PAY', 'INFORM', 'BOTHER', 'ANSWER', 'BLAME', 'EMAIL',
+   'WARN', 'ADVISE', 'LEND', 'CHALLENGE', 'TEASE', 'PHONE', 'TEXT', 'FORGIVE');
+UPDATE signs SET agreement = 'backward' WHERE lang = 'ase' AND gloss IN ('BORROW');
+)sql";
+
+constexpr std::array kMigrations{Migration{1, kV1}, Migration{2, kV2}, Migration{3, kV3}};
 
 }  // namespace
 

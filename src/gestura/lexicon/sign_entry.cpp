@@ -20,4 +20,20 @@ NotationKind notation_kind_from_string(std::string_view text) {
   throw Error("unknown notation kind '" + std::string(text) + "' (expected hamnosys, sigml or clip)");
 }
 
+std::string_view to_string(Agreement agreement) {
+  switch (agreement) {
+    case Agreement::none: return "none";
+    case Agreement::forward: return "forward";
+    case Agreement::backward: return "backward";
+  }
+  return "none";
+}
+
+Agreement agreement_from_string(std::string_view text) {
+  if (text == "none" || text.empty()) return Agreement::none;
+  if (text == "forward") return Agreement::forward;
+  if (text == "backward") return Agreement::backward;
+  throw Error("unknown agreement '" + std::string(text) + "' (expected none, forward or backward)");
+}
+
 }  // namespace gestura

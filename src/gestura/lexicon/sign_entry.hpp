@@ -15,6 +15,15 @@ std::string_view to_string(NotationKind kind);
 // Throws gestura::Error for anything other than "hamnosys", "sigml" or "clip".
 NotationKind notation_kind_from_string(std::string_view text);
 
+// How a verb sign uses the signing space (docs/grammar.md): an agreement verb's movement runs from
+// its subject's place to its object's (forward: GIVE, TELL) or from the object's to the subject's
+// (backward: BORROW); plain signs keep their citation place.
+enum class Agreement { none, forward, backward };
+
+std::string_view to_string(Agreement agreement);
+// Throws gestura::Error for anything other than "none", "forward" or "backward".
+Agreement agreement_from_string(std::string_view text);
+
 // A spoken-language word or phrase that this sign translates, with an optional gloss of its meaning
 // ("bank" → "financial institution") to tell homonyms apart.
 struct Keyword {
@@ -34,6 +43,7 @@ struct SignEntry {
   std::string notation;         // HamNoSys (Unicode) or one SiGML <hns_sign> element; empty for clips
   std::vector<std::uint8_t> clip;  // encoded clip for NotationKind::clip
   std::vector<Keyword> keywords;
+  Agreement agreement = Agreement::none;  // verbs that move between referents' places
   std::string source;           // where the entry came from (lexicon name, file)
   std::string licence;
   std::int64_t created = 0;     // Unix seconds, set by the store

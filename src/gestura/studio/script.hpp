@@ -3,7 +3,7 @@
 // running studio (the same actions the menus, buttons and keys call). '#' starts a comment.
 //
 //   open GLOSS [LANG [VARIANT]]   new   duplicate   save   delete   undo   redo
-//   set FIELD VALUE...            FIELD: gloss lang variant names keywords meaning source licence
+//   set FIELD VALUE...            FIELD: gloss lang variant names keywords meaning source licence agreement
 //   select-symbol INDEX           palette NAME (as a click on the palette: replaces the selected
 //   replace-symbol INDEX NAME     symbol, else appends)
 //   insert-symbol INDEX NAME      remove-symbol INDEX

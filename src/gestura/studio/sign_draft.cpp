@@ -55,6 +55,7 @@ SignDraft draft_from_entry(const SignEntry& entry, bool builtin) {
     }
   d.source = entry.source;
   d.licence = entry.licence;
+  d.agreement = entry.agreement;
   d.origin = key_of(entry);
   d.from_builtin = builtin;
   return d;
@@ -117,13 +118,14 @@ SignEntry to_entry(const SignDraft& draft) {
   flush();
   e.source = draft.source;
   e.licence = draft.licence;
+  e.agreement = draft.agreement;
   return e;
 }
 
 nlohmann::json to_json(const SignDraft& d) {
   nlohmann::json j{{"gloss", d.gloss},       {"lang", d.language}, {"variant", d.variant}, {"names", d.names},
                    {"keywords", d.keywords}, {"meaning", d.meaning}, {"source", d.source},   {"licence", d.licence},
-                   {"from_builtin", d.from_builtin}};
+                   {"agreement", to_string(d.agreement)}, {"from_builtin", d.from_builtin}};
   if (d.origin) j["origin"] = {{"gloss", d.origin->gloss}, {"lang", d.origin->language}, {"variant", d.origin->variant}};
   return j;
 }
@@ -138,6 +140,7 @@ SignDraft draft_from_json(const nlohmann::json& j) {
   d.meaning = string_of(j, "meaning");
   d.source = string_of(j, "source");
   d.licence = string_of(j, "licence");
+  d.agreement = agreement_from_string(string_of(j, "agreement"));
   if (const auto v = j.find("variant"); v != j.end()) {
     if (!v->is_number_integer() || v->get<long long>() < 1 || v->get<long long>() > 1000000)
       throw Error("draft field 'variant' must be a whole number from 1");

@@ -29,6 +29,7 @@ struct SignDraft {
   std::string keywords;    // English words, comma-separated
   std::string meaning;     // a plain description of what the sign means / looks like (first keyword's meaning)
   std::string source, licence;
+  Agreement agreement = Agreement::none;  // an agreement verb's direction (docs/grammar.md)
   std::optional<EntryKey> origin;  // the row it was opened from; none for a new sign
   bool from_builtin = false;       // opened from the read-only built-in lexicon
 

@@ -14,4 +14,13 @@ std::optional<std::string> LexiconInventory::gloss_for(std::string_view word) {
   return gloss;
 }
 
+Agreement LexiconInventory::agreement_of(std::string_view gloss) {
+  std::string key(gloss);
+  if (const auto it = agreement_cache_.find(key); it != agreement_cache_.end()) return it->second;
+  const auto entry = lexicon_.find(gloss, language_);
+  const Agreement agreement = entry ? entry->agreement : Agreement::none;
+  agreement_cache_.emplace(std::move(key), agreement);
+  return agreement;
+}
+
 }  // namespace gestura

@@ -14,11 +14,14 @@ class LexiconInventory final : public SignInventory {
  public:
   LexiconInventory(LayeredLexicon& lexicon, std::string sign_language) : lexicon_(lexicon), language_(std::move(sign_language)) {}
   std::optional<std::string> gloss_for(std::string_view word) override;
+  // The agreement field of the gloss's first variant in the chosen language (the top layer's).
+  Agreement agreement_of(std::string_view gloss) override;
 
  private:
   LayeredLexicon& lexicon_;
   std::string language_;
   std::unordered_map<std::string, std::optional<std::string>> cache_;
+  std::unordered_map<std::string, Agreement> agreement_cache_;
 };
 
 }  // namespace gestura

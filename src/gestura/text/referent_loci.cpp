@@ -13,17 +13,6 @@ namespace gestura {
 
 namespace {
 
-// Agreement verbs of ASL whose lexicon sign moves between two places (Padden 1988's agreement
-// verbs; the "backwards" ones, BORROW, move from the object to the subject).
-constexpr std::array kForwardVerbs{"GIVE",  "HELP",   "TELL",  "ASK",       "SHOW",  "SEND",  "PAY",
-                                   "INFORM", "BOTHER", "ANSWER", "BLAME",   "EMAIL", "WARN",  "ADVISE",
-                                   "LEND",  "CHALLENGE", "TEASE", "PHONE",  "TEXT",  "FORGIVE"};
-constexpr std::array kBackwardVerbs{"BORROW"};
-
-bool in(std::span<const char* const> list, std::string_view gloss) {
-  return std::any_of(list.begin(), list.end(), [&](const char* g) { return gloss == g; });
-}
-
 enum class Gender { unknown, male, female, neuter };
 
 struct Referent {
@@ -113,8 +102,8 @@ std::string third(const std::string& base_person, int locus, std::string_view ta
 
 class Placer {
  public:
-  Placer(Translation& t, std::string_view text, std::span<const SourceWord> words)
-      : t_(t), text_(text), words_(words), mentions_(t.glosses.size()) {}
+  Placer(Translation& t, std::string_view text, std::span<const SourceWord> words, SignInventory& inventory)
+      : t_(t), text_(text), words_(words), inventory_(inventory), mentions_(t.glosses.size()) {}
 
   void run() {
     for (std::size_t s = 0; s < t_.sentences.size(); ++s) {
@@ -314,9 +303,11 @@ class Placer {
         clause_start = i + 1;
         continue;
       }
-      const bool forward = in(kForwardVerbs, g.sign());
-      const bool backward = in(kBackwardVerbs, g.sign());
-      if (g.kind != GlossKind::sign || (!forward && !backward)) continue;
+      if (g.kind != GlossKind::sign) continue;
+      // The lexicon entry says whether the sign agrees (its `agreement` field, docs/grammar.md).
+      const Agreement agreement = inventory_.agreement_of(g.sign());
+      const bool backward = agreement == Agreement::backward;
+      if (agreement == Agreement::none) continue;
       // Subject and object are looked for within kReach glosses of the verb, in its clause.
       std::size_t clause_end = i;
       while (clause_end < sentence.last && clause_end - i <= kReach && t_.glosses[clause_end].kind != GlossKind::pause)
@@ -469,6 +460,7 @@ class Placer {
   Translation& t_;
   std::string_view text_;
   std::span<const SourceWord> words_;
+  SignInventory& inventory_;
   std::vector<Mention> mentions_;
   std::vector<Referent> referents_;
   std::unordered_map<std::string, int> by_key_;  // a noun's or name's gloss → its referent
@@ -480,10 +472,9 @@ class Placer {
 
 }  // namespace
 
-bool is_agreement_verb(std::string_view gloss) { return in(kForwardVerbs, gloss) || in(kBackwardVerbs, gloss); }
-
-void place_referents(Translation& translation, std::string_view text, std::span<const SourceWord> words) {
-  Placer(translation, text, words).run();
+void place_referents(Translation& translation, std::string_view text, std::span<const SourceWord> words,
+                     SignInventory& inventory) {
+  Placer(translation, text, words, inventory).run();
 }
 
 }  // namespace gestura

@@ -13,8 +13,9 @@
 //   - a noun or name whose place is used later is followed by an index that sets the place up
 //     (BOY IX-3a), and a plural noun of people by an arc over its place (CHILD IX-3a-PL);
 //   - "they" without a plural antecedent sweeps over the places of the people already placed;
-//   - an agreement verb (GIVE, HELP, TELL, ASK, SHOW, SEND, PAY, INFORM…) moves from its subject's
-//     place to its object's (1 = the signer, 2 = the addressee): GIVE:3a→3b;
+//   - an agreement verb — a sign whose lexicon entry says `agreement` forward (GIVE, HELP, TELL, ASK,
+//     SHOW, SEND, PAY…) or backward (BORROW) — moves from its subject's place to its object's (from
+//     the object's to the subject's when backward; 1 = the signer, 2 = the addressee): GIVE:3a→3b;
 //   - quoted speech is marked for role shift toward the place of the person quoted.
 // It only rewrites glosses (gloss text, lexeme, places) and adds index glosses; how a place is
 // signed is the performer's (sentence/signing_space.hpp).
@@ -25,6 +26,7 @@
 
 #include "gestura/text/english_parse.hpp"
 #include "gestura/text/gloss.hpp"
+#include "gestura/text/sign_inventory.hpp"
 
 namespace gestura {
 
@@ -38,12 +40,9 @@ struct SourceWord {
 };
 
 // Places the referents of `translation` (made from `text`, whose words are `words` in text order)
-// as the header says. Glosses inserted keep the sentences', markers' and role shifts' spans around
-// the same glosses.
-void place_referents(Translation& translation, std::string_view text, std::span<const SourceWord> words);
-
-// Whether the lexicon sign `gloss` is an agreement (directional) verb of ASL: its movement runs from
-// the subject's place to the object's.
-bool is_agreement_verb(std::string_view gloss);
+// as the header says; `inventory` says which signs are agreement verbs. Glosses inserted keep the
+// sentences', markers' and role shifts' spans around the same glosses.
+void place_referents(Translation& translation, std::string_view text, std::span<const SourceWord> words,
+                     SignInventory& inventory);
 
 }  // namespace gestura

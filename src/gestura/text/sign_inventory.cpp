@@ -12,4 +12,9 @@ std::optional<std::string> WordListInventory::gloss_for(std::string_view word) {
   return it->second;
 }
 
+Agreement WordListInventory::agreement_of(std::string_view gloss) {
+  const auto it = agreement_.find(std::string(gloss));
+  return it == agreement_.end() ? Agreement::none : it->second;
+}
+
 }  // namespace gestura

@@ -1,6 +1,7 @@
 #include "gestura/text/translator.hpp"
 
 #include <algorithm>
+#include <array>
 #include <optional>
 
 #include "gestura/text/english_parse.hpp"
@@ -534,7 +535,7 @@ class SentenceTranslator {
       // a person the possessive ("sent her mother a letter").
       const Word* next = at(i_ + 1);
       const bool object = (parsed(i_) && parsed(i_)->role == english::Role::object) ||
-                          (!items_.empty() && is_agreement_verb(items_.back().token.gloss) && next &&
+                          (!items_.empty() && inventory_.agreement_of(items_.back().token.gloss) != Agreement::none && next &&
                            !wordnet::names_a_person(next->lower));
       const bool possessive = !object && next_is_content_word();
       const std::string gloss = possessive ? "POSS-3" : "IX-3";
@@ -561,6 +562,11 @@ class SentenceTranslator {
     ++i_;
     const bool looks_like_name = w.capitalized && !all_caps_ && l != "i" && !sentence_initial_word(w);
     const auto candidates = lemma_candidates(l);
+    // A capitalised word that link-grammar's dictionary reads as a given name here ("Bill.m",
+    // "Rose.f") is a person's name, even when the same word as a noun has a sign (bill, rose, mark).
+    if (looks_like_name)
+      if (const english::ParsedWord* named = parsed(i_ - 1); named && is_given_name_tag(named->tag))
+        return fingerspell(w, "name (capitalized), a given name to link-grammar (" + named->tag + ")");
     if (looks_like_name) {
       // A capitalised word with a sign of its own (a place, a holiday, "Sundays") is signed.
       if (!inventory_.open_vocabulary())
@@ -586,8 +592,12 @@ class SentenceTranslator {
     // A verb takes its WordNet lemma first (left → LEAVE, leaves → LEAVE, not LEFT or LEAF). A
     // participle that is not its clause's verb ("I am tired", "she looks worried") is used as an
     // adjective: a form the lexicon lists keeps its own sign (TIRED, not WHEEL by the lemma 'tire').
-    const bool adjectival = p && pos == english::PartOfSpeech::verb && p->role != english::Role::verb &&
-                            p->tag.ends_with(".v-d") && in_adjective_phrase(parse_.tree, p->tag);
+    // Also a participle right after a form of "be" or a linking verb ("she was tired and left", where
+    // the parse joins "tired and left" as verbs) when WordNet lists the form itself as an adjective
+    // and the lexicon signs that form: a state, not the passive of the verb ('tire' → WHEEL).
+    const bool adjectival =
+        p && pos == english::PartOfSpeech::verb && p->role != english::Role::verb && p->tag.ends_with(".v-d") &&
+        (in_adjective_phrase(parse_.tree, p->tag) || (after_linking_verb(i_ - 1) && adjective_form_with_sign(l)));
     if (pos == english::PartOfSpeech::verb && !adjectival)
       if (const auto found = by_wordnet()) return sign(w, found->first, quoted(w.text) + " → " + found->first + ": " + as + found->second);
     // A form the lexicon lists as written ("glasses", "hearing", "news", "oranges") keeps its own
@@ -627,6 +637,29 @@ class SentenceTranslator {
       }
     }
     return false;
+  }
+
+  // Link-grammar marks the given names of its dictionary by sex: "John.m", "Mary.f", "Bill.m".
+  static bool is_given_name_tag(std::string_view tag) {
+    const auto dot = tag.rfind('.');
+    return dot != std::string_view::npos && dot > 0 && (tag.substr(dot) == ".m" || tag.substr(dot) == ".f");
+  }
+
+  // Whether the word before index k is a form of "be" or a linking verb (seem, feel, look, get, become).
+  bool after_linking_verb(std::size_t k) const {
+    if (k == 0) return false;
+    static constexpr std::array kLinking{"am",    "is",     "are",    "was",   "were",  "be",    "been",   "being",
+                                         "seem",  "seems",  "seemed", "feel",  "feels", "felt",  "look",   "looks",
+                                         "looked", "get",   "gets",   "got",   "become", "became", "becomes"};
+    const std::string& before = w_[k - 1].lower;
+    return std::any_of(kLinking.begin(), kLinking.end(), [&](const char* v) { return before == v; });
+  }
+
+  // WordNet has the form itself as an adjective (tired, worried, closed) and the lexicon signs it.
+  bool adjective_form_with_sign(const std::string& l) {
+    if (inventory_.open_vocabulary()) return false;
+    const auto as_adjective = wordnet::lemmas(l, english::PartOfSpeech::adjective);
+    return !as_adjective.empty() && as_adjective.front() == l && inventory_.gloss_for(l).has_value();
   }
 
   bool sentence_initial_word(const Word& w) const { return first_word_ < w_.size() && &w == &w_[first_word_]; }
@@ -834,7 +867,7 @@ Translation translate_to_gloss(std::string_view english, SignInventory& inventor
   const auto by_position = [](const WordNote& a, const WordNote& b) { return a.begin < b.begin; };
   if (!std::is_sorted(out.notes.begin(), out.notes.end(), by_position))
     std::stable_sort(out.notes.begin(), out.notes.end(), by_position);
-  place_referents(out, english, source_words);
+  place_referents(out, english, source_words, inventory);
   return out;
 }
 
