@@ -1,5 +1,10 @@
 #include "gestura/app/workspace.hpp"
 
+#include <cstdlib>
+#include <cstring>
+
+#include "gestura/lexicon/lexicon_files.hpp"
+
 namespace gestura::app {
 
 Workspace::Workspace() = default;
@@ -31,7 +36,19 @@ const SigningRig& Workspace::rig(const AvatarChoice& choice) {
 const Signer& Workspace::signer(const AvatarChoice& choice) {
   const std::lock_guard lock(mutex_);
   std::unique_ptr<Signer>& slot = signers_[choice.key()];
-  if (!slot) slot = std::make_unique<Signer>(avatar_locked(choice), lexicon_locked());
+  if (!slot) {
+    slot = std::make_unique<Signer>(avatar_locked(choice), lexicon_locked());
+    // Signs solved by earlier runs are read from the user lexicon, and new ones kept there
+    // (docs/say.md, "Speed"); GESTURA_CITATION_CACHE=off solves everything afresh.
+    const char* cache = std::getenv("GESTURA_CITATION_CACHE");
+    if (!cache || std::strcmp(cache, "off") != 0) {
+      try {
+        slot->keep_citations_in(default_user_lexicon_path());
+      } catch (const std::exception&) {
+        // No HOME and no GESTURA_LEXICON: nowhere to keep them.
+      }
+    }
+  }
   return *slot;
 }
 

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "gestura/core/error.hpp"
+#include "gestura/sentence/citation_store.hpp"
 #include "gestura/sign/hand_solver.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sign_performer.hpp"
@@ -43,6 +44,17 @@ std::string posture_key(Hand hand, const HandState& s) {
   key.push_back(static_cast<char>(p.thumb_tip_contacts));
   key.push_back(p.middle_crosses_index ? 'x' : '-');
   return key;
+}
+
+// A form an earlier process solved (sentence/citation_store.hpp), kept under `key`; nullptr when
+// there is no store or it has none.
+template <class Map>
+const CitationMotion* from_store(CitationStore* store, std::mutex& mutex, Map& signs, const std::string& key) {
+  if (!store) return nullptr;
+  std::unique_ptr<CitationMotion> stored = store->load(key);
+  if (!stored) return nullptr;
+  std::lock_guard lock(mutex);
+  return signs.emplace(key, std::move(stored)).first->second.get();
 }
 
 }  // namespace
@@ -142,6 +154,7 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     std::lock_guard lock(mutex_);
     if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
   }
+  if (const CitationMotion* kept = from_store(store_, mutex_, signs_, key)) return *kept;
   return perform_and_store(key, plan_citation(sign::parse_hamnosys_unicode(notation), *rig_, ScheduleOptions{1.0f, 0.0f, 0.0f}));
 }
 
@@ -151,6 +164,7 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation, std::stri
     std::lock_guard lock(mutex_);
     if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
   }
+  if (const CitationMotion* kept = from_store(store_, mutex_, signs_, key)) return *kept;
   return perform_and_store(std::move(key), change(plan_citation(sign::parse_hamnosys_unicode(notation), *rig_,
                                                                 ScheduleOptions{1.0f, 0.0f, 0.0f})));
 }
@@ -169,6 +183,7 @@ const CitationMotion& SignMotionCache::perform_and_store(std::string key, const 
     auto at_first_posture = perform_citation(citation, Start::AtFirstPosture);
     if (plan_error(*at_first_posture) < error - kPlanTolerance) motion = std::move(at_first_posture);
   }
+  if (store_) store_->save(key, *motion);
   std::lock_guard lock(mutex_);
   return *signs_.emplace(std::move(key), std::move(motion)).first->second;
 }

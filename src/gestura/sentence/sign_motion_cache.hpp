@@ -26,6 +26,8 @@
 
 namespace gestura {
 
+class CitationStore;
+
 // Which joints carry a hand's motion, in the order postures store them: the arm chain (clavicle →
 // wrist), then thumb1..3, index1..3, … pinky1..3.
 std::vector<int> hand_motion_joints(const SigningRig& rig, Hand hand);
@@ -77,6 +79,11 @@ class SignMotionCache {
   // transition between two given signs), so the first solution is reused.
   const HandJointPosture& posture_from(Hand hand, const HandState& state, std::span<const quat> seed);
 
+  // Citation forms are looked up in `store` before they are solved and given to it after
+  // (sentence/citation_store.hpp: forms solved by an earlier process). Contract: `store` outlives
+  // the cache; call before the first sign(). nullptr: solve everything.
+  void persist_to(CitationStore* store) { store_ = store; }
+
   const SigningRig& rig() const { return *rig_; }
   const std::vector<int>& joints(Hand hand) const { return joints_[hand]; }
   std::size_t signs_stored() const;
@@ -92,6 +99,7 @@ class SignMotionCache {
   const CitationMotion& perform_and_store(std::string key, const SignPlan& citation);
 
   const SigningRig* rig_;
+  CitationStore* store_ = nullptr;
   ByHand<std::vector<int>> joints_;
   mutable std::mutex mutex_;
   std::unordered_map<std::string, std::unique_ptr<CitationMotion>> signs_;

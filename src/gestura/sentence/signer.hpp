@@ -25,6 +25,8 @@
 
 namespace gestura {
 
+class CitationStore;
+
 struct SayOptions {
   float speed = 1.0f;        // global tempo 0.25–2
   std::string lang = "ase";  // sign language (ISO 639-3); only ASL has a built-in lexicon
@@ -62,6 +64,7 @@ class Signer {
  public:
   // Contract: `avatar` and `lexicon` outlive the signer (the rig is built once, here).
   Signer(const Avatar& avatar, LayeredLexicon& lexicon);
+  ~Signer();
   Signer(const Signer&) = delete;  // the motion cache refers to this signer's rig
   Signer& operator=(const Signer&) = delete;
 
@@ -70,6 +73,12 @@ class Signer {
   // The first utterance that uses a sign performs its citation form by IK and stores it (per
   // signer, so per avatar); later ones reuse it. Safe to call from several threads.
   SentencePerformance say(std::string_view text, const SayOptions& options = {}) const;
+
+  // Keeps solved citation forms in the SQLite database at `path` (the user lexicon) and reads the
+  // ones an earlier process solved (sentence/citation_store.hpp). Never throws: a database that
+  // cannot be used leaves the signer as it was (store()->problem() says why). Call before say().
+  void keep_citations_in(const std::string& path);
+  const CitationStore* store() const { return store_.get(); }
 
   // Signs whose joint motion is stored so far.
   std::size_t cached_signs() const { return cache_->signs_stored(); }
@@ -81,6 +90,7 @@ class Signer {
   LayeredLexicon* lexicon_;
   SigningRig rig_;
   std::unique_ptr<SignMotionCache> cache_;
+  std::unique_ptr<CitationStore> store_;
 };
 
 }  // namespace gestura
