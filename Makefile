@@ -14,7 +14,7 @@ FUZZ_SECONDS ?= 60
 SANITIZER_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
                  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
 
-.PHONY: run test build build-cli deps bench bench-studio bench-anchors legibility coverage serve load clean fuzz fuzz-smoke test-asan
+.PHONY: run test build build-cli deps bench bench-studio bench-anchors legibility coverage serve load load-rooms test-capture clean fuzz fuzz-smoke test-asan
 
 deps:
 	@scripts/setup-deps.sh
@@ -73,6 +73,17 @@ serve: build-cli
 # LOAD_ARGS="--clients 200 --seconds 60 --threads 2" are the defaults.
 load: build-cli
 	@node tools/serve-load.mjs --gestura $(BIN)/gestura $(LOAD_ARGS)
+
+# A bounded load run of the shared rooms (docs/benchmarks.md, "Rooms"); not part of make test.
+# ROOM_LOAD_ARGS="--clients 40 --seconds 30 --capture 8 --threads 2" are the defaults.
+load-rooms: build-cli
+	@node --experimental-websocket tools/room-load.mjs --gestura $(BIN)/gestura $(ROOM_LOAD_ARGS)
+
+# Driving a room avatar by camera in headless chromium: gestura's own HELLO as a fake camera, MediaPipe Holistic
+# in the page, a second client sees the wrist move (web/tests/capture.test.mjs). MediaPipe runs in software and
+# takes 2-4 minutes with every core, so it is not part of make test.
+test-capture: build-cli
+	@cd web && node tests/capture.test.mjs --gestura $(CURDIR)/$(BIN)/gestura
 
 # MediaPipe Holistic on rendered signs (minutes: ~5-10 s per frame); not part of make test.
 # LEGIBILITY_ARGS passes options, e.g. LEGIBILITY_ARGS="--size 640x360 --step 3 house".

@@ -26,6 +26,7 @@
 #include "gestura/io/openpose_json.hpp"
 #include "gestura/io/pose_format.hpp"
 #include "gestura/sign/hamnosys_symbol.hpp"
+#include "gestura/studio/figure_model.hpp"
 #include "gestura/core/utf8.hpp"
 
 namespace fs = std::filesystem;
@@ -392,6 +393,42 @@ void front_door_seeds() {
   dictionary("studio_draft", draft);
 }
 
+// The figure editor's skeleton files (studio/figure_model): a sidecar alone is read beside the
+// avatar's skeleton file; BVH, NUL, sidecar is a pair (fuzz/fuzz_figure.cpp).
+void figure_seeds(const fs::path& shared, const Motions& m) {
+  using gestura::studio::write_figure;
+  const auto pair = [](const gestura::studio::FigureTexts& t) { return t.bvh + std::string(1, '\0') + t.sidecar; };
+  gestura::Skeleton avatar = m.avatar;
+  seed("figure", write_figure(avatar, "avatar.bvh").sidecar);
+  // Limits on a few axes, a DH description, a joint with no free axis.
+  for (const char* name : {"l_elbow", "r_wrist", "skullbase"})
+    if (const int j = avatar.find(name); j >= 0) {
+      const auto u = static_cast<std::size_t>(j);
+      avatar.dofs[u] = gestura::JointDofs{gestura::RotationOrder::ZXY, 5, gestura::vec3(-0.7f, 0, -1.2f), gestura::vec3(2.4f, 0, 0.3f)};
+      avatar.dh.resize(avatar.size());
+      avatar.dh[u] = gestura::DenavitHartenberg{0.25f, 0.1f, 0.02f, -0.4f};
+    }
+  if (const int j = avatar.find("vl5"); j >= 0) avatar.dofs[static_cast<std::size_t>(j)].axes = 0;
+  seed("figure", write_figure(avatar, "avatar.bvh").sidecar);
+  seed("figure", pair(write_figure(avatar, "avatar.bvh")));
+  seed("figure", pair(write_figure(m.humanoid, "humanoid.bvh")));
+  seed("figure", R"({"format": "gestura figure", "version": 1, "skeleton": "avatar.bvh", "joints": {"l_elbow":
+  {"order": "YXZ", "axes": "xy", "min_degrees": [-150, -10, 0], "max_degrees": [0, 90, 0],
+   "dh": {"a": 0.26, "alpha_degrees": 0, "d": 0, "theta_degrees": -90}}}})");
+  // A plain BVH from elsewhere (no sidecar: every rotation axis free).
+  seed("figure", read_text(shared / "makehuman" / "poses" / "tpose.bvh") + std::string(1, '\0'));
+  std::set<std::string> figure = kJsonTokens;
+  for (const char* t : {"\"format\"", "\"gestura figure\"", "\"version\"", "\"skeleton\"", "\"joints\"", "\"order\"",
+                        "\"axes\"", "\"min_degrees\"", "\"max_degrees\"", "\"dh\"", "\"a\"", "\"alpha_degrees\"",
+                        "\"d\"", "\"theta_degrees\"", "\"XYZ\"", "\"XZY\"", "\"YXZ\"", "\"YZX\"", "\"ZXY\"", "\"ZYX\"",
+                        "\"xyz\"", "\"l_elbow\"", "\"r_wrist\"", "\"humanoid_root\"", "HIERARCHY", "ROOT", "JOINT",
+                        "End Site", "OFFSET", "CHANNELS", "MOTION", "Frames:", "Frame Time:", "Xrotation", "Yrotation",
+                        "Zrotation", "Xposition", "_end", "1e39", "3.5e38"})
+    figure.insert(t);
+  figure.insert(std::string(1, '\0'));
+  dictionary("figure", figure);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -410,6 +447,7 @@ int main(int argc, char** argv) {
     text_seeds(source);
     world_seeds(source);
     front_door_seeds();
+    figure_seeds(shared, motions);
   } catch (const std::exception& e) {
     std::cerr << "gestura-fuzz-seeds: " << e.what() << "\n";
     return 1;

@@ -1,5 +1,6 @@
 // The room page: join a room with a name and a look, type to sign
 // (the scene and the protocol are in room.js).
+import { BodyCapture } from './capture.js';
 import { RoomView } from './room.js';
 
 const $ = (id) => document.getElementById(id);
@@ -41,6 +42,8 @@ room.addEventListener('message', ({ detail: m }) => {
   if (m.type === 'replaced') setStatus('This seat was taken back from another tab or window.', true);
 });
 room.addEventListener('closed', () => {
+  stopCamera();
+  $('camera-button').disabled = true;
   $('sign-button').disabled = true;
   $('join-button').disabled = false;
   $('leave-button').disabled = true;
@@ -53,6 +56,7 @@ $('join-form').addEventListener('submit', async (e) => {
     const welcome = await room.join($('room-name').value, { name: $('your-name').value, look: $('look').value });
     setStatus(`In room ${welcome.room}, seat ${welcome.you.seat + 1}. Type text and press Enter.`);
     $('sign-button').disabled = false;
+    $('camera-button').disabled = false;
     $('join-button').disabled = true;
     $('leave-button').disabled = false;
   } catch (err) {
@@ -67,3 +71,34 @@ const sign = () => {
 };
 $('say-form').addEventListener('submit', (e) => { e.preventDefault(); sign(); });
 $('text').addEventListener('keydown', (e) => { if (e.key === 'Enter' && !e.shiftKey) { e.preventDefault(); sign(); } });
+
+// The camera drives your avatar: Holistic in this page, the landmarks to the room (capture.js).
+const capture = new BodyCapture(room);
+window.gesturaCapture = capture;  // for tests and the console
+const cameraStatus = (text, error = false) => { $('camera-status').textContent = text; $('camera-status').classList.toggle('error', error); };
+function stopCamera() {
+  capture.stop();
+  $('camera-button').setAttribute('aria-pressed', 'false');
+  $('camera-button').textContent = 'Use my camera';
+  $('camera-preview').hidden = true;
+}
+capture.addEventListener('sent', ({ detail }) => {
+  if (detail.sent === 1) cameraStatus('Your avatar follows your arms, hands and head.');
+});
+$('camera-button').addEventListener('click', async () => {
+  if (capture.running) { stopCamera(); cameraStatus('Camera off.'); return; }
+  $('camera-button').disabled = true;
+  cameraStatus('Starting the camera and the body tracker…');
+  try {
+    await capture.start($('camera-preview'));
+    $('camera-preview').hidden = false;
+    $('camera-button').setAttribute('aria-pressed', 'true');
+    $('camera-button').textContent = 'Stop my camera';
+    cameraStatus('Camera on: looking for your body…');
+  } catch (err) {
+    stopCamera();
+    cameraStatus(err.message, true);
+  } finally {
+    $('camera-button').disabled = !room.you;
+  }
+});

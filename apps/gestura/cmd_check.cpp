@@ -21,7 +21,9 @@ Invocation prepare() {
     for (const std::string& f : r.failures) std::printf("%s\n", f.c_str());
     if (r.stopped)
       std::printf("stopped after %d failing signs (--max-errors %d; 0 checks every sign)\n", r.failed, request->max_errors);
-    std::printf("%d signs: %d parsed, %d synthesized, %d failed\n", r.signs, r.parsed, r.synthesized, r.failed);
+    std::printf("%d signs: %d parsed, %d synthesized, %d failed", r.signs, r.parsed, r.synthesized, r.failed);
+    if (r.clips > 0) std::printf(", %d clip signs (recorded motion, not checked)", r.clips);
+    std::printf("\n");
     return r.failed == 0 ? 0 : 1;
   };
   return invocation;
@@ -31,8 +33,9 @@ const Registration reg{{
     "check",
     "parse (and synthesize) every sign of a .jsonl lexicon or .sigml file",
     "FILE is a .jsonl lexicon (one JSON object per line with a `hamnosys` Unicode string or a `names`\n"
-    "list) or a .sigml document. Prints what the parser accepted with a note (file:line: gloss: note:\n"
-    "symbol N: what it did), one line per failing sign (file:line: gloss: reason), then\n"
+    "list; a `clip_base64` line is a clip sign, listed and not checked) or a .sigml document. Prints\n"
+    "what the parser accepted with a note (file:line: gloss: note: symbol N: what it did), one line\n"
+    "per failing sign (file:line: gloss: reason), then\n"
     "  N signs: P parsed, S synthesized, F failed\n"
     "Synthesis runs on the default avatar: a sign fails when it cannot be performed, produces NaN,\n"
     "breaks a joint limit, puts a hand more than 1 cm inside the body, or (IK residual at the planned\n"

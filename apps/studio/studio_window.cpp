@@ -44,6 +44,7 @@
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/app/motion_output.hpp"
 #include "gestura/compress/compress.hpp"
+#include "gestura/sentence/signer.hpp"
 #include "gestura/studio/figure_model.hpp"
 #include "gestura/studio/learning.hpp"
 #include "gestura/studio/limb_drag.hpp"
@@ -71,6 +72,24 @@ double percentile(std::vector<double> v, double p) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
   return v[std::min(v.size() - 1, static_cast<std::size_t>(p * static_cast<double>(v.size() - 1) + 0.5))];
+}
+
+// Input events seen by GLFW (counted by callbacks installed before ImGui's, which chains to them):
+// a frame is drawn after input, and not while nothing moves and nothing is touched.
+std::atomic<unsigned> g_input_events{0};
+// Frames drawn after the last input, so ImGui settles (hover, a popup opening, a release).
+constexpr int kSettleFrames = 3;
+
+void count_input_events(GLFWwindow* window) {
+  glfwSetCursorPosCallback(window, [](GLFWwindow*, double, double) { ++g_input_events; });
+  glfwSetMouseButtonCallback(window, [](GLFWwindow*, int, int, int) { ++g_input_events; });
+  glfwSetScrollCallback(window, [](GLFWwindow*, double, double) { ++g_input_events; });
+  glfwSetKeyCallback(window, [](GLFWwindow*, int, int, int, int) { ++g_input_events; });
+  glfwSetCharCallback(window, [](GLFWwindow*, unsigned) { ++g_input_events; });
+  glfwSetWindowFocusCallback(window, [](GLFWwindow*, int) { ++g_input_events; });
+  glfwSetCursorEnterCallback(window, [](GLFWwindow*, int) { ++g_input_events; });
+  glfwSetFramebufferSizeCallback(window, [](GLFWwindow*, int, int) { ++g_input_events; });
+  glfwSetWindowRefreshCallback(window, [](GLFWwindow*) { ++g_input_events; });
 }
 
 const char* const kPanels[] = {"Signs", "Sign", "Notation", "Palette", "Preview", "Problems"};
@@ -118,6 +137,7 @@ class Studio {
     io.IniFilename = nullptr;  // the layout is fixed; nothing to remember in the working directory
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 0.0f;
+    count_input_events(window_.window());  // before ImGui's callbacks, which call these after their own
     ImGui_ImplGlfw_InitForOpenGL(window_.window(), true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -138,6 +158,9 @@ class Studio {
   }
 
   ~Studio() {
+    if (ui_fbo_) glDeleteFramebuffers(1, &ui_fbo_);
+    if (preview_read_fbo_) glDeleteFramebuffers(1, &preview_read_fbo_);
+    if (ui_texture_) glDeleteTextures(1, &ui_texture_);
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
@@ -146,6 +169,26 @@ class Studio {
   int run();
 
  private:
+  // Whether this frame must be drawn: input came, something plays or is computed, a script runs.
+  bool needs_frame();
+  std::optional<Clock::time_point> wait_file_since_;  // the script's wait-file began
+  unsigned seen_events_ = 0;
+  int settle_frames_ = kSettleFrames;
+  std::uint64_t idle_waits_ = 0;  // waits for input instead of a frame (the frame log counts them)
+  // The drawn UI kept in a texture: while only the preview plays (no input, no script step, no new
+  // synthesis) a frame copies it and the new preview picture into the window instead of building and
+  // drawing the whole UI again (Dear ImGui's draw of the window costs llvmpipe more than the preview).
+  // The UI itself (playhead, time) is drawn again at least every kUiRefresh.
+  static constexpr std::chrono::milliseconds kUiRefresh{250};
+  bool reuse_ui(Clock::time_point now, bool stepped, int width, int height) const;
+  void compose_cached_ui(int width, int height, bool with_preview);
+  unsigned ui_fbo_ = 0, ui_texture_ = 0, preview_read_fbo_ = 0;
+  glm::ivec2 ui_size_{0, 0};
+  bool preview_in_ui_ = false;  // the last full UI showed the preview picture at preview_rect_
+  ImVec2 preview_rect_min_{}, preview_rect_max_{};
+  Clock::time_point last_full_ui_{};
+  std::uint64_t reused_ui_frames_ = 0;
+
   // ---- actions (UI and script) ----
   void refresh_browse() { rows_ = model_.browse(filter_); }
   void execute(const ScriptStep& step);
@@ -165,6 +208,12 @@ class Studio {
   void play_word(const LessonWord& word, bool reveal);
   void play_sentence(const std::string& text);
   void show_clip(const Clip& clip);
+  // A clip sign from the dictionary or the learning mode: its recorded motion played in the preview.
+  bool play_clip_sign(const SignEntry& entry, bool reveal);
+  // Opens a row of the dictionary: a notated sign as the draft, a clip sign played.
+  void open_row(const EntryKey& key);
+  // The learning mode's topic of the user's own signs, read again from the lexicon.
+  void refresh_user_topic();
   void draw_learn(const ImVec2& pos, const ImVec2& size);
   void draw_word(const ImVec2& pos, const ImVec2& size);
   // timeline and figure modes, IK drag (the part of the file after "timeline and figure")
@@ -277,6 +326,8 @@ class Studio {
   std::string message_;  // overrides the model's status until the next model action
   // learning mode
   bool learning_ = false;
+  std::optional<Signer> learn_signer_;
+  std::string shown_clip_sign_;  // the dictionary plays this clip sign (not the draft)  // sentences from the studio's lexicons (the user's clip signs too)
   std::vector<Topic> topics_;
   int topic_ = 0;
   std::string learn_title_;          // what the preview performs: a word or a sentence
@@ -426,8 +477,55 @@ void Studio::set_learning(bool on) {
     requested_revision_ = ~0ull;
     say("sign editor");
   } else {
+    refresh_user_topic();
     say(topics_.empty() ? "learning mode: no topics (no built-in lexicon)" : "learning mode: pick a topic, a word or a sentence");
   }
+}
+
+void Studio::refresh_user_topic() {
+  // Words are pointed at by the shown word and the self-test: both let go before the topics change.
+  learn_word_ = nullptr;
+  quiz_.reset();
+  const std::string current = topics_.empty() ? std::string() : topics_[static_cast<std::size_t>(topic_)].name;
+  std::erase_if(topics_, [](const Topic& t) { return t.name == kUserTopic; });
+  const std::vector<SignEntry> mine = model_.user_signs();
+  if (Topic t = user_topic(mine); !t.words.empty()) topics_.push_back(std::move(t));
+  topic_ = 0;
+  for (std::size_t i = 0; i < topics_.size(); ++i)
+    if (topics_[i].name == current) topic_ = static_cast<int>(i);
+}
+
+bool Studio::play_clip_sign(const SignEntry& entry, bool reveal) {
+  try {
+    Clip clip = clip_of(entry);
+    validate(clip, subject_.skeleton);
+    const float duration = clip.duration;
+    show_clip(clip);
+    learn_glosses_ = {PerformedGloss{entry.gloss, entry.keywords.empty() ? std::string() : entry.keywords.front().word, 0.0f, duration}};
+    learn_title_ = reveal ? entry.gloss : "which sign is this?";
+    char text[160];
+    std::snprintf(text, sizeof text, "clip sign %s: its keyframed motion (%.2f s)", entry.gloss.c_str(), static_cast<double>(duration));
+    if (reveal) say(text);
+    return true;
+  } catch (const std::exception& e) {
+    say("cannot play " + entry.gloss + ": " + e.what());
+    return false;
+  }
+}
+
+void Studio::open_row(const EntryKey& key) {
+  const std::optional<BrowseRow> row = model_.find(key);
+  if (row && row->entry.notation_kind == NotationKind::clip) {
+    // Not editable as notation: the dictionary shows it playing (the timeline editor makes them).
+    if (play_clip_sign(row->entry, true)) {
+      learn_word_ = nullptr;
+      shown_clip_sign_ = row->entry.gloss;
+      rendered_ = false;
+    }
+    return;
+  }
+  shown_clip_sign_.clear();
+  model_.open(key);
 }
 
 void Studio::set_posing(bool on) {
@@ -491,6 +589,12 @@ void Studio::select_topic(const std::string& name) {
 }
 
 void Studio::play_word(const LessonWord& word, bool reveal) {
+  if (word.clip_sign) {
+    const std::optional<BrowseRow> row = model_.find(EntryKey{word.gloss, word.language, word.variant});
+    if (!row) return say("no sign " + word.gloss + " in your lexicon any more");
+    if (play_clip_sign(row->entry, reveal)) learn_word_ = reveal ? &word : nullptr;
+    return;
+  }
   SignDraft d;
   d.gloss = word.gloss;
   d.language = word.language;
@@ -508,14 +612,12 @@ void Studio::play_word(const LessonWord& word, bool reveal) {
 }
 
 void Studio::play_sentence(const std::string& text) {
-  app::SayRequest request;
-  request.text = text;
-  app::RunContext context;
-  context.workspace = workspace_;
   try {
-    const app::SayResult r = app::run(request, context);
-    show_clip(r.performance.clip);
-    learn_glosses_ = r.performance.glosses;
+    // Signed from the studio's own lexicons, so the user's signs (clip signs too) are used.
+    if (!learn_signer_) learn_signer_.emplace(workspace_->avatar(request_.avatar), model_.lexicon());
+    const SentencePerformance performance = learn_signer_->say(text);
+    show_clip(performance.clip);
+    learn_glosses_ = performance.glosses;
     learn_word_ = nullptr;
     learn_title_ = text;
     std::string glosses;
@@ -579,14 +681,26 @@ void Studio::execute(const ScriptStep& step) {
       throw Error(SourceLocation{request_.script, step.line}, "'" + arg(i) + "' is not a number");
     }
   };
-  static const char* const keeps_message[] = {"screenshot", "dump", "wait", "time", "play", "pause", "speed", "camera", "views", "panel"};
+  static const char* const keeps_message[] = {"screenshot", "dump", "wait", "wait-file", "time", "play", "pause", "speed", "camera", "views", "panel"};
   if (std::none_of(std::begin(keeps_message), std::end(keeps_message), [&](const char* k) { return a == k; })) message_.clear();
+  if (a == "wait-file") {
+    // The script waits (frames go on) until the file exists: another program — a test moving the
+    // real mouse — says it is done by creating it. At most two minutes.
+    if (!wait_file_since_) wait_file_since_ = Clock::now();
+    if (!std::filesystem::exists(arg(0)) && Clock::now() - *wait_file_since_ < std::chrono::seconds(120)) {
+      --script_next_;
+      return;
+    }
+    if (!std::filesystem::exists(arg(0))) say("waited two minutes for " + arg(0) + " in vain");
+    wait_file_since_.reset();
+    return;
+  }
   if (execute_timeline_or_figure(step)) return;
   if (a.rfind("env-", 0) == 0) set_environment(true);
   if (environment_ && env_->execute(step)) return;
   if (a == "open") {
     EntryKey key{arg(0), step.args.size() > 1 ? arg(1) : "ase", step.args.size() > 2 ? number(2) : 1};
-    model_.open(key);
+    open_row(key);
     selected_symbol_ = -1;
   } else if (a == "new") {
     model_.new_sign();
@@ -736,6 +850,7 @@ void Studio::apply_preview(SignPreview result) {
   synthesis_ms_.push_back(preview_.synthesis_ms);
   // Keep the last good clip on screen while the notation does not parse (the error says why).
   if (preview_.clip) {
+    shown_clip_sign_.clear();
     subject_.clip = *preview_.clip;
     animator_.emplace(subject_);
     ++shown_clip_;
@@ -953,7 +1068,9 @@ void Studio::draw_signs(const ImVec2& pos, const ImVec2& size) {
                     r.entry.variant > 1 ? (" v" + std::to_string(r.entry.variant)).c_str() : "", r.entry.gloss.c_str(),
                     r.entry.language.c_str(), r.entry.variant);
       if (r.builtin) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.65f, 0.65f, 0.65f, 1.0f));
-      if (ImGui::Selectable(label, origin && *origin == key)) model_.open(key), message_.clear(), selected_symbol_ = -1;
+      const bool shown = r.entry.notation_kind == NotationKind::clip ? shown_clip_sign_ == r.entry.gloss : origin && *origin == key;
+      if (ImGui::Selectable(label, shown)) message_.clear(), open_row(key), selected_symbol_ = -1;
+      if (r.entry.notation_kind == NotationKind::clip) ImGui::SameLine(), ImGui::TextDisabled("clip");
       if (r.builtin) ImGui::PopStyleColor();
     }
     ImGui::EndChild();
@@ -964,6 +1081,9 @@ void Studio::draw_signs(const ImVec2& pos, const ImVec2& size) {
 void Studio::draw_metadata(const ImVec2& pos, const ImVec2& size) {
   if (begin_panel("Sign", pos, size)) {
     const SignDraft& d = model_.draft();
+    if (!shown_clip_sign_.empty())
+      ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "playing the clip sign %s (keyframed, no notation: the timeline editor, F8, makes them)",
+                         shown_clip_sign_.c_str());
     ImGui::Text("%s%s", d.origin ? (d.from_builtin ? "built-in sign (saving writes your copy)" : "stored sign") : "new sign",
                 model_.dirty() ? "  - unsaved changes" : "");
     auto field = [&](const char* label, const char* key, std::string value) {
@@ -1093,6 +1213,7 @@ void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(shown.resolved_texture())), avail,
                  ImVec2(0, static_cast<float>(preview_height_) / static_cast<float>(std::max(1, shown.height()))),
                  ImVec2(static_cast<float>(preview_width_) / static_cast<float>(std::max(1, shown.width())), 0));
+    preview_in_ui_ = true, preview_rect_min_ = ImGui::GetItemRectMin(), preview_rect_max_ = ImGui::GetItemRectMax();
     draw_preview_overlay(ImGui::GetItemRectMin(), avail);
     if ((posing_ || timeline_mode_) && !ik_tool_ && ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
       // Pick the bone under the click (the mouse ray against the bones' capsules), else the joint
@@ -1924,7 +2045,7 @@ bool Studio::execute_timeline_or_figure(const ScriptStep& step) {
   }
   const bool timeline_action = a.rfind("timeline-", 0) == 0 || a == "key-pose" || a == "key" || a == "move-key" || a == "move-keys-at" ||
                                a == "key-interp" || a == "bar-duration" || a == "export-timeline" || a == "save-clip-sign" ||
-                               a == "strip-zoom" || a == "loop";
+                               a == "strip-zoom" || a == "loop" || a == "where-key";
   if (timeline_action && !timeline_mode_) set_timeline_mode(true);
   if (timeline_mode_) {
     if (a == "timeline-say") tl_view_.say_text = arg(0), timeline_source_from_say(arg(0));
@@ -1937,6 +2058,19 @@ bool Studio::execute_timeline_or_figure(const ScriptStep& step) {
     } else if (a == "move-key") {
       const int c = timeline_->find_channel(arg(0));
       if (c < 0 || !timeline_->move_key(c, static_cast<int>(number(1)), number(2))) say("no key " + arg(1) + " on " + arg(0));
+    } else if (a == "where-key") {
+      // Writes "X Y": the window pixel where the key was drawn in the last frame (for tests that
+      // drive the real mouse), or nothing (the status says why) when it is not on screen.
+      const int c = timeline_->find_channel(arg(0)), k = static_cast<int>(number(1));
+      const auto drawn = std::find_if(tl_view_.drawn_keys.begin(), tl_view_.drawn_keys.end(),
+                                      [&](const TimelineView::DrawnKey& d) { return d.channel == c && d.key == k; });
+      if (c < 0 || drawn == tl_view_.drawn_keys.end()) {
+        say("key " + arg(1) + " of " + arg(0) + " is not on screen");
+      } else {
+        std::ofstream out(arg(2));
+        out << std::lround(drawn->x) << ' ' << std::lround(drawn->y) << '\n';
+        if (!out) say("cannot write " + arg(2));
+      }
     } else if (a == "move-keys-at") {
       say("moved " + std::to_string(timeline_->move_keys_at(number(0), number(1))) + " keys");
     } else if (a == "key-interp") {
@@ -2142,6 +2276,7 @@ void Studio::write_dump(const std::string& path) {
                      {"word", quiz_->word().gloss}};
   }
   j["learning"] = learn;
+  j["clip_sign_shown"] = shown_clip_sign_;
   j.update(dump_timeline_and_figure());
   if (posing_) {
     std::vector<mat4> model(subject_.skeleton.size());
@@ -2174,6 +2309,45 @@ void Studio::screenshot(const std::string& path) {
 
 // ---------------------------------------------------------------------------------------------
 
+bool Studio::needs_frame() {
+  if (const unsigned events = g_input_events.load(); events != seen_events_) seen_events_ = events, settle_frames_ = kSettleFrames;
+  if (settle_frames_ > 0 || !script_.empty() || request_.frames > 0 || wait_frames_ > 0 || !pending_screenshot_.empty()) return true;
+  if (preview_busy() || export_.valid() || environment_ || !rendered_) return true;
+  // Playing something that lasts (a new sign without notation has nothing to play).
+  if (timeline_mode_ ? tl_view_.playing && timeline_->duration() > 0.0f
+                     : controls_->playing && !posing_ && !figure_mode_ && animator_->duration() > 0.0f)
+    return true;
+  return show_recovery_;
+}
+
+bool Studio::reuse_ui(Clock::time_point now, bool stepped, int width, int height) const {
+  return ui_fbo_ != 0 && ui_size_ == glm::ivec2(width, height) && preview_in_ui_ && !stepped && settle_frames_ == 0 &&
+         now - last_full_ui_ < kUiRefresh && pending_screenshot_.empty() && request_.frames == 0 && !environment_ && !posing_ &&
+         !figure_or_timeline() && !show_recovery_ && !preview_busy() && !export_.valid() &&
+         !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+}
+
+void Studio::compose_cached_ui(int width, int height, bool with_preview) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, ui_fbo_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  if (with_preview && shown_renderer_) {
+    // The new preview picture where the UI shows it (GL rows bottom-up; ImGui's y grows downward).
+    const Renderer& shown = *shown_renderer_;
+    const unsigned texture = shown.resolved_texture();
+    if (!preview_read_fbo_) glGenFramebuffers(1, &preview_read_fbo_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, preview_read_fbo_);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    const int x0 = static_cast<int>(std::lround(preview_rect_min_.x * scale.x)), x1 = static_cast<int>(std::lround(preview_rect_max_.x * scale.x));
+    const int y0 = height - static_cast<int>(std::lround(preview_rect_max_.y * scale.y)),
+              y1 = height - static_cast<int>(std::lround(preview_rect_min_.y * scale.y));
+    glBlitFramebuffer(0, 0, preview_width_, preview_height_, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT,
+                      preview_width_ == x1 - x0 ? GL_NEAREST : GL_LINEAR);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 int Studio::run() {
   std::vector<double> frame_ms;
   std::FILE* log = nullptr;
@@ -2184,12 +2358,25 @@ int Studio::run() {
   }
   Clock::time_point last = Clock::now();
   while (!window_.should_close() && !quit_) {
-    const Clock::time_point start = Clock::now();
     glfwPollEvents();
+    if (!needs_frame()) {
+      // Nothing moves and nothing was touched: the last frame stays on screen, and the studio waits
+      // for input (waking 4 times a second for the autosave and finished work) instead of drawing.
+      glfwWaitEventsTimeout(0.25);
+      if (!needs_frame()) {
+        ++idle_waits_;
+        autosave();
+        last = Clock::now();
+        continue;
+      }
+    }
+    const Clock::time_point start = Clock::now();
+    bool stepped = false;  // a script step ran in this frame
     // One script step per frame boundary (after its waits).
     if (wait_frames_ > 0) {
       --wait_frames_;
     } else if (script_next_ < script_.size() && !preview_busy()) {
+      stepped = true;
       const ScriptStep& step = script_[script_next_++];
       try {
         execute(step);
@@ -2218,19 +2405,44 @@ int Studio::run() {
     if (timing) glFinish();
     const Clock::time_point t_preview = Clock::now();
 
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
     const std::uint64_t revision_before_ui = model_.revision();
-    draw_ui();
-    ImGui::Render();
-    const Clock::time_point t_ui = Clock::now();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, width, height);
-    glDisable(GL_SCISSOR_TEST);
-    glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    const bool reuse = synthesis_ms_.size() == syntheses && reuse_ui(start, stepped, width, height);
+    Clock::time_point t_ui;
+    if (reuse) {
+      // Only the preview moved: the UI drawn last time, with the new picture in it.
+      t_ui = Clock::now();
+      compose_cached_ui(width, height, true);
+      ++reused_ui_frames_;
+    } else {
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      preview_in_ui_ = false;
+      draw_ui();
+      ImGui::Render();
+      t_ui = Clock::now();
+      if (ui_size_ != glm::ivec2(width, height)) {
+        if (!ui_texture_) glGenTextures(1, &ui_texture_);
+        glBindTexture(GL_TEXTURE_2D, ui_texture_);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        if (!ui_fbo_) glGenFramebuffers(1, &ui_fbo_);
+        glBindFramebuffer(GL_FRAMEBUFFER, ui_fbo_);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, ui_texture_, 0);
+        ui_size_ = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE ? glm::ivec2(width, height) : glm::ivec2(0, 0);
+      }
+      // Drawn into the kept texture (when there is one), then copied into the window.
+      glBindFramebuffer(GL_FRAMEBUFFER, ui_size_ == glm::ivec2(width, height) ? ui_fbo_ : 0);
+      glViewport(0, 0, width, height);
+      glDisable(GL_SCISSOR_TEST);
+      glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      if (ui_size_ == glm::ivec2(width, height)) compose_cached_ui(width, height, false);
+      last_full_ui_ = start;
+    }
     if (timing) glFinish();
     const Clock::time_point t_draw = Clock::now();
     if (!pending_screenshot_.empty()) screenshot(pending_screenshot_), pending_screenshot_.clear();
@@ -2254,6 +2466,7 @@ int Studio::run() {
                    ms_between(start, t_preview), ms_between(t_preview, t_ui), ms_between(t_ui, t_draw), ms_between(t_draw, end),
                    synthesis_ms_.size() > syntheses ? synthesis_ms_.back() : 0.0, latency, preview_width_, preview_height_);
     ++frame_;
+    if (settle_frames_ > 0) --settle_frames_;
     if (last_frame) break;
     if (script_next_ >= script_.size() && !script_.empty() && request_.frames == 0 && wait_frames_ == 0 &&
         pending_screenshot_.empty() && !preview_busy()) {
@@ -2270,6 +2483,12 @@ int Studio::run() {
                  "gestura studio: %zu frames at %dx%d (preview %dx%d): frame time median %.1f ms, p95 %.1f ms, max %.1f ms\n",
                  frame_ms.size(), request_.size.width, request_.size.height, preview_width_, preview_height_,
                  percentile(steady, 0.5), percentile(steady, 0.95), percentile(steady, 1.0));
+    if (reused_ui_frames_ > 0)
+      std::fprintf(stderr, "gestura studio: %llu frames showed a new preview in the UI kept from the frame before (not drawn again)\n",
+                   static_cast<unsigned long long>(reused_ui_frames_));
+    if (idle_waits_ > 0)
+      std::fprintf(stderr, "gestura studio: %llu waits for input with nothing to draw (no frame drawn)\n",
+                   static_cast<unsigned long long>(idle_waits_));
     if (!latencies_ms_.empty())
       std::fprintf(stderr, "gestura studio: %zu edits: edit to preview median %.1f ms, max %.1f ms; synthesis median %.1f ms\n",
                    latencies_ms_.size(), percentile(latencies_ms_, 0.5), percentile(latencies_ms_, 1.0),

@@ -209,6 +209,7 @@ void draw_timeline_tracks(Timeline& timeline, TimelineView& view) {
     view.first_row = view.channel - kRows / 2;
   view.first_row = std::clamp(view.first_row, 0, std::max(0, count - kRows));
   const float rows_top = y;
+  view.drawn_keys.clear();
   for (std::size_t c = static_cast<std::size_t>(view.first_row); c < channels.size() && c < static_cast<std::size_t>(view.first_row + kRows); ++c) {
     const bool selected = view.channel == static_cast<int>(c);
     d->AddRectFilled(ImVec2(ax.x0, y), ImVec2(ax.x0 + ax.width, y + row - 1), selected ? IM_COL32(52, 58, 72, 255) : IM_COL32(40, 40, 46, 255));
@@ -220,6 +221,7 @@ void draw_timeline_tracks(Timeline& timeline, TimelineView& view) {
       if (x < ax.x0 - 6 || x > ax.x0 + ax.width + 6) continue;
       const bool is = selected && view.key == static_cast<int>(k);
       diamond(d, ImVec2(x, y + row * 0.5f), 5.0f, is ? kKeySelected : kKey);
+      view.drawn_keys.push_back({static_cast<int>(c), static_cast<int>(k), x, y + row * 0.5f});
       ImGui::SetCursorScreenPos(ImVec2(x - 6, y));
       ImGui::PushID(static_cast<int>(c * 10000 + k));
       ImGui::InvisibleButton("key", ImVec2(12, row));

@@ -4,6 +4,9 @@
 // time ruler to scrub, the utterance's bars (drag a bar's right edge to retime it), one row of keys
 // per channel (drag a key to retime it), the curve of the selected channel (drag a key up or down),
 // and the pan-zoom film strip of the poses at the keys. Plain ImDrawList drawing (no implot).
+#include <string>
+#include <vector>
+
 #include "gestura/studio/timeline_model.hpp"
 
 namespace gestura::studio_ui {
@@ -27,6 +30,13 @@ struct TimelineView {
   bool say_requested = false;  // "Sign it" was pressed
   bool sign_requested = false; // "Use the draft" was pressed (the sign being edited)
   bool clear_requested = false;
+  // Where the last frame drew each key (window pixels): for the script's where-key, which lets a
+  // test drive the real mouse at a key.
+  struct DrawnKey {
+    int channel = -1, key = -1;
+    float x = 0.0f, y = 0.0f;
+  };
+  std::vector<DrawnKey> drawn_keys;
 };
 
 // Moves the playhead when playing (wrapping when looping, stopping at the end otherwise).

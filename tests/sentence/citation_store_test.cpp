@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "gestura/body/avatar.hpp"
 #include "gestura/lexicon/lexicon.hpp"
 #include "gestura/sentence/citation_store.hpp"
 #include "gestura/sentence/sign_motion_cache.hpp"
@@ -154,6 +155,41 @@ TEST(CitationStore, AChangedNotationAvatarOrSolverIsNotServedStale) {
   EXPECT_EQ(rows(path), 1);  // MOTHER's row of the other solver is gone
   EXPECT_EQ(store.load(kFather), nullptr);
   EXPECT_EQ(store.load(kMother), nullptr);
+}
+
+TEST(CitationStore, AnotherAvatarIsNotServedTheFormsOfThisOne) {
+  gestura::testing::TempDir dir;
+  const std::string path = dir.file("lexicon.sqlite");
+  {
+    CitationStore store(path, fx().rig);
+    SignMotionCache cache(fx().rig);
+    cache.persist_to(&store);
+    cache.sign(kMother);
+  }
+  // The same avatar with forearms 2 cm longer: its arm must be solved again.
+  Avatar longer = fx().avatar;
+  for (const char* wrist : {"l_wrist", "r_wrist"}) {
+    const int j = longer.skeleton.find(wrist);
+    ASSERT_GE(j, 0);
+    const vec3 t = longer.skeleton.rest_translations[j];
+    longer.skeleton.rest_translations[j] = t * ((glm::length(t) + 0.02f) / glm::length(t));
+  }
+  const SigningRig rig = make_signing_rig(longer);
+  CitationStore store(path, rig);
+  EXPECT_NE(store.avatar_hash(), CitationStore(path, fx().rig).avatar_hash());
+  EXPECT_EQ(store.load(kMother), nullptr);
+  SignMotionCache cache(rig);
+  cache.persist_to(&store);
+  const CitationMotion& solved = cache.sign(kMother);
+  EXPECT_EQ(store.loaded(), 0u);
+  EXPECT_EQ(store.saved(), 1u);
+  SignMotionCache fresh(rig);
+  expect_same_motion(solved, fresh.sign(kMother));
+  // Both avatars' forms are kept side by side; the first avatar still gets its own.
+  EXPECT_EQ(rows(path), 2);
+  CitationStore first(path, fx().rig);
+  SignMotionCache first_cache(fx().rig);
+  expect_same_motion(*first.load(kMother), first_cache.sign(kMother));
 }
 
 TEST(CitationStore, ADamagedRowOrFileIsSolvedAfresh) {

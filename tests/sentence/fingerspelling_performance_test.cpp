@@ -92,6 +92,41 @@ TEST(FingerspellingPerformance, LettersTakeTheirHandshapesAtTheirInstants) {
   EXPECT_LT(glm::distance(at(mb, "l_wrist"), at(rest, "l_wrist")), 0.01f);
 }
 
+// A point of the right hand in its own frame, in centimetres from the index knuckle: x towards the
+// thumb side, y along the hand (wrist to middle knuckle), z out of the palm.
+vec3 in_hand(const std::vector<mat4>& m, const char* joint) {
+  const vec3 up = glm::normalize(at(m, "r_middle1") - at(m, "r_wrist"));
+  vec3 radial = at(m, "r_index1") - at(m, "r_pinky1");
+  radial = glm::normalize(radial - glm::dot(radial, up) * up);
+  vec3 palmar = glm::cross(up, radial);
+  if (glm::dot(at(m, "r_index2") - at(m, "r_index1"), palmar) < 0.0f) palmar = -palmar;  // the fist curls palmward
+  const vec3 d = at(m, joint) - at(m, "r_index1");
+  return 100.0f * vec3(glm::dot(d, radial), glm::dot(d, up), glm::dot(d, palmar));
+}
+
+TEST(FingerspellingPerformance, TheThumbLiesAlongTheFistInAAndAcrossItInS) {
+  const FingerspellingPerformance p = spell("AS");
+  const LetterTarget& a = letter(p, 0, 'A');
+  const LetterTarget& s = letter(p, 1, 'S');
+  const auto ma = model_at(p.clip, 0.5f * (a.reached + a.end));
+  const auto ms = model_at(p.clip, 0.5f * (s.reached + s.end));
+  // A: the thumb against the side of the curled index, its tip about level with the top of the
+  // fist (the index's middle joint) — not standing above it like a thumbs-up (4.2 cm above the
+  // knuckle and 4.3 cm from the middle joint before).
+  const vec3 a_tip = in_hand(ma, "r_thumb_tip"), a_pip = in_hand(ma, "r_index2");
+  EXPECT_LT(a_tip.y, a_pip.y + 2.5f);
+  EXPECT_LT(glm::distance(a_tip, a_pip), 3.0f);
+  EXPECT_GT(a_tip.x, a_pip.x);  // on the thumb side of the index, not over the fingers
+  EXPECT_GT(a_tip.z, 2.0f);     // forward with the curled index, not back at the palm
+  // S: the thumb across the front of the curled fingers, its tip between the middle and the ring
+  // finger's middle joints — not past the little finger (7.0 cm across before, the little
+  // finger's middle joint 6.8 cm).
+  const vec3 s_tip = in_hand(ms, "r_thumb_tip"), s_ip = in_hand(ms, "r_thumb3");
+  EXPECT_LT(s_tip.x, in_hand(ms, "r_middle2").x);
+  EXPECT_GT(s_tip.x, in_hand(ms, "r_ring2").x);
+  EXPECT_GT(s_ip.z, in_hand(ms, "r_index2").z);  // in front of the fingers
+}
+
 TEST(FingerspellingPerformance, FluentLettersFollowOneAnotherAtTheirRate) {
   // Reference: fluent ASL fingerspelling at about 5–7 letters per second (docs/sign-phonology.md).
   const FingerspellingPerformance p = spell("BCDFGH");

@@ -126,3 +126,32 @@ TEST(SignMotionCache, HandMotionJointsAreTheArmThenTheFingers) {
   EXPECT_EQ(joints[h.arm.joints.size()], h.fingers[0][0]);  // thumb1
   EXPECT_EQ(joints.back(), h.fingers[4][2]);                // pinky3
 }
+
+TEST(SignMotionCache, EachSignIsPerformedExactlyOnce) {
+  // Signs whose palm a low elbow carried in from the relaxed posture held centimetres off were
+  // performed a second time from their first posture; now every sign is performed once, and
+  // asking again performs nothing.
+  SignMotionCache cache(fx().rig);
+  const std::string outside =
+      "hamparbegin,hampinchall,hamextfingerdo,hampalmd,hamplus,hamceeall,hamextfingeror,hampalml,hamparend,hamchest,"
+      "hammoveu,hamsmallmod,hamreplace,hampinchall,hamrepeatfromstart";
+  const std::string speed =
+      "hamparbegin,hamfinger2,hamthumboutmod,hamextfingero,hampalml,hamplus,hamfinger2,hamthumboutmod,hamextfingero,"
+      "hampalml,hamparend,hamchest,hammoveo,hamfast";
+  std::size_t signs = 0;
+  for (const std::string& names : {kMother, outside, speed}) {
+    const CitationMotion& m = cache.sign(unicode(names));
+    EXPECT_EQ(cache.performances(), ++signs) << names;
+    EXPECT_EQ(&cache.sign(unicode(names)), &m);
+    EXPECT_EQ(cache.performances(), signs);
+    // …and the one performance keeps the palms on the plan.
+    for (float t = 0.0f; t <= m.movement(); t += 0.05f)
+      for (Hand hand : kBothHands) {
+        if (m.plan.hand(hand).segments.empty()) continue;
+        const HandState planned = sample_hand(m.plan.hand(hand), t);
+        if (!planned.active) continue;
+        EXPECT_LT(glm::distance(palm_centre(cache, m, hand, t), planned.position), 0.012f) << names << " at " << t << " s";
+      }
+  }
+  EXPECT_EQ(cache.signs_stored(), signs);
+}

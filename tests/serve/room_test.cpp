@@ -9,7 +9,9 @@
 #include <boost/beast.hpp>
 #include <boost/beast/websocket.hpp>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -280,6 +282,67 @@ TEST_F(RoomTest, AFloodIsThrottledAndTheServerStaysUp) {
   still_up();
   Client other(port(), "flood-test");
   EXPECT_FALSE(other.join("Other").is_null());
+}
+
+// A plausible Holistic frame: a person facing the camera, the right arm raised in front with the
+// elbow bent, the left arm hanging (picture coordinates: x right, y down; the person's left is on
+// the picture's right).
+json landmarks_frame() {
+  json pose = json::array();
+  for (int i = 0; i < 33; ++i) pose.push_back({0.5, 0.5, 0.0, 0.9});
+  const auto set = [&](int i, double x, double y, double z) { pose[static_cast<std::size_t>(i)] = {x, y, z, 0.95}; };
+  set(7, 0.54, 0.2, 0.0), set(8, 0.46, 0.2, 0.0);      // ears
+  set(11, 0.6, 0.35, 0.0), set(12, 0.4, 0.35, 0.0);    // shoulders
+  set(13, 0.63, 0.55, 0.0), set(15, 0.64, 0.75, 0.0);  // left elbow, wrist: hanging
+  set(14, 0.33, 0.5, -0.1), set(16, 0.36, 0.3, -0.2);  // right elbow out and down, wrist up in front
+  set(23, 0.56, 0.8, 0.0), set(24, 0.44, 0.8, 0.0);    // hips
+  return {{"type", "landmarks"}, {"pose", pose}, {"aspect", 1.0}};
+}
+
+TEST_F(RoomTest, LandmarksDriveTheAvatarForEveryoneAndMalformedOnesAreLocatedErrors) {
+  Client a(port(), "capture-test"), b(port(), "capture-test");
+  ASSERT_FALSE(a.join("Ana").is_null());
+  ASSERT_FALSE(b.join("Ben").is_null());
+  a.send(landmarks_frame());
+  const json pose = b.next_of("pose", 120s);
+  ASSERT_FALSE(pose.is_null());
+  EXPECT_EQ(pose["participant"], "p1");
+  for (const char* joint : {"r_shoulder", "r_elbow", "r_wrist", "l_shoulder", "vc4", "skullbase"}) {
+    ASSERT_TRUE(pose["rotations"].contains(joint)) << joint;
+    EXPECT_EQ(pose["rotations"][joint].size(), 4u) << joint;
+  }
+  // The raised right arm turned the shoulder far from rest; the hanging left one hardly.
+  const auto turn = [&](const char* joint) { return 2.0 * std::acos(std::min(1.0, std::abs(pose["rotations"][joint][3].get<double>()))); };
+  EXPECT_GT(turn("r_shoulder"), 0.6);
+  EXPECT_GT(turn("r_elbow"), 0.6);
+  EXPECT_LT(turn("l_shoulder"), 0.35);
+  // A late joiner's welcome carries the pose.
+  Client c(port(), "capture-test");
+  EXPECT_TRUE(c.join("Chidi")["poses"].contains("p1"));
+  // Malformed frames: an error naming the place; nothing is fitted.
+  const std::vector<std::pair<std::function<void(json&)>, std::string>> cases{
+      {[](json& m) { m["pose"].erase(m["pose"].size() - 1); }, "pose"},
+      {[](json& m) { m["pose"][3][1] = "x"; }, "pose[3][1]"},
+      {[](json& m) { m["pose"][5][0] = 1e300; }, "pose[5][0]"},
+      {[](json& m) { m["pose"][6][3] = 7; }, "pose[6][3]"},
+      {[](json& m) { m["pose"][2] = {1, 2}; }, "pose[2]"},
+      {[](json& m) { m["right"] = json::array({{0.1, 0.2, 0.3}}); }, "right"},
+      {[](json& m) { m["aspect"] = -1; }, "aspect"},
+      {[](json& m) { m["colour"] = "red"; }, "colour"},
+  };
+  for (const auto& [spoil, field] : cases) {
+    json m = landmarks_frame();
+    spoil(m);
+    a.send(m);
+    const json e = a.next_of("error", 10s);
+    ASSERT_FALSE(e.is_null()) << field;
+    EXPECT_EQ(e["error"]["code"], 400) << field;
+    EXPECT_EQ(e["error"]["field"], field) << e.dump();
+  }
+  // A text of 1e400 is infinity to a parser: still no crash, an error.
+  a.send_text(R"({"type":"landmarks","pose":[[1e400,0,0]]})");
+  EXPECT_FALSE(a.next_of("error", 10s).is_null());
+  still_up();
 }
 
 TEST_F(RoomTest, ARoomHasSeatsAndANameOfItsOwnKind) {

@@ -215,6 +215,42 @@ TEST_F(ServeTest, SignPerformsNotationAndNamesTheBadSymbol) {
   still_up();
 }
 
+TEST_F(ServeTest, ASigmlDocumentOfSeveralSignsPlaysThemAllInOrder) {
+  const auto sign = [](const char* gloss, std::initializer_list<const char*> symbols) {
+    std::string out = std::string("<hns_sign gloss=\\\"") + gloss + "\\\"><hamnosys_manual>";
+    for (const char* s : symbols) out += std::string("<") + s + "/>";
+    return out + "</hamnosys_manual></hns_sign>";
+  };
+  const std::string one = sign("ONE", {"hamflathand", "hamextfingeru", "hampalml", "hamshoulders"});
+  const std::string two = sign("TWO", {"hamfist", "hamextfingerol", "hampalmd", "hamchest", "hammoveo"});
+  const std::string three = sign("THREE", {"hamfinger2", "hamextfingeru", "hampalml", "hamchin"});
+  const auto timeline = [&](const std::string& signs) {
+    const auto r = http(port(), "POST", "/api/sign", "{\"sigml\": \"<sigml>" + signs + "</sigml>\"}");
+    EXPECT_EQ(r.status, 200) << r.body;
+    const json body = json::parse(r.body, nullptr, false);
+    return body.contains("timeline") ? body["timeline"] : body;
+  };
+  const json all = timeline(one + two + three), first = timeline(one);
+  ASSERT_TRUE(all.contains("glosses")) << all.dump();
+  ASSERT_EQ(all["glosses"].size(), 3u) << all.dump();
+  const char* names[3] = {"ONE", "TWO", "THREE"};
+  double previous_end = 0.0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const json& g = all["glosses"][i];
+    EXPECT_EQ(g["gloss"], names[i]);
+    EXPECT_GE(g["start"].get<double>(), previous_end - 1e-6) << "in order, not overlapping";
+    EXPECT_GT(g["end"].get<double>(), g["start"].get<double>());
+    previous_end = g["end"].get<double>();
+  }
+  EXPECT_LT(previous_end, all["duration"].get<double>()) << "the hands return to rest after the last sign";
+  // Each sign takes its own time on the one timeline; a one-sign document still plays as one sign.
+  for (std::size_t i = 0; i < 3; ++i)
+    EXPECT_GT(all["glosses"][i]["end"].get<double>() - all["glosses"][i]["start"].get<double>(), 0.1) << all.dump();
+  EXPECT_GT(first["duration"].get<double>(), 0.5) << first.dump();
+  EXPECT_FALSE(first.contains("glosses")) << first.dump();
+  still_up();
+}
+
 TEST_F(ServeTest, GlossAndLexicon) {
   auto r = http(port(), "GET", "/api/gloss?text=I+like+coffee");
   ASSERT_EQ(r.status, 200) << r.body;

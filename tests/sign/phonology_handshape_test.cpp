@@ -170,8 +170,9 @@ TEST(PhonologyHandshape, BendingActsOnTheSelectedFingersOnly) {
 TEST(PhonologyHandshape, AslShapesHaveTheirDefiningFeatures) {
   EXPECT_TRUE(asl_handshape(AslHandshape::R).middle_crosses_index);
   EXPECT_LT(asl_handshape(AslHandshape::L).thumb.cmc_flexion, 0.0f);            // thumb out
-  EXPECT_GT(asl_handshape(AslHandshape::S).thumb.cmc_flexion, deg(20));         // thumb across
-  EXPECT_LT(asl_handshape(AslHandshape::A).thumb.cmc_flexion, deg(5));          // thumb alongside
+  EXPECT_GT(asl_handshape(AslHandshape::S).thumb.cmc_flexion, 0.0f);           // thumb across…
+  EXPECT_GT(asl_handshape(AslHandshape::S).thumb.mcp, deg(30));                 // …bent over the fingers
+  EXPECT_LT(asl_handshape(AslHandshape::A).thumb.cmc_flexion, 0.0f);            // thumb alongside
   EXPECT_EQ(asl_handshape(AslHandshape::Six).thumb_tip_contacts, finger_bit(Finger::Pinky));
   EXPECT_EQ(asl_handshape(AslHandshape::Seven).thumb_tip_contacts, finger_bit(Finger::Ring));
   EXPECT_EQ(asl_handshape(AslHandshape::Eight).thumb_tip_contacts, finger_bit(Finger::Middle));

@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 #include "gestura/body/avatar_skeleton.hpp"
+#include "gestura/core/error.hpp"
 #include "gestura/io/bvh.hpp"
 #include "gestura/studio/figure_model.hpp"
 #include "gestura/studio/limb_drag.hpp"
@@ -121,6 +123,105 @@ TEST(FigureEditor, TheSkeletonFileReadsBackWithLimitsAndDhAndABrokenOneLosesNoth
   EXPECT_NE(std::string::npos, f.error().find("broken.bvh")) << f.error();
   EXPECT_EQ(kept.names, f.skeleton().names);
   EXPECT_EQ(path, f.file());
+}
+
+// Found while writing fuzz_figure (fuzz/fuzz_figure.cpp), each input crashing it: the sidecar
+// reader let nlohmann's own exception
+// out for a value of the wrong type (the studio catches gestura::Error only, so it would have
+// ended), and read a limit past float's range as infinity, which a save writes as null: a file
+// the editor could not read back.
+TEST(FigureFile, ASidecarValueOfTheWrongTypeIsAnErrorNamingTheFileAndJoint) {
+  const std::string bvh = write_figure(build_avatar_skeleton(), "avatar.bvh").bvh;
+  const auto refused = [&](const std::string& sidecar) {
+    try {
+      (void)read_figure(bvh, "avatar.bvh", std::string_view(sidecar), "avatar.figure.json");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(read)");
+  };
+  const std::string limits = R"(, "min_degrees": [-10, 0, 0], "max_degrees": [10, 0, 0]}}})";
+  std::string why = refused(R"({"joints": {"l_elbow": {"order": 5, "axes": "x")" + limits);
+  EXPECT_NE(std::string::npos, why.find("avatar.figure.json: joint 'l_elbow': 'order' must be a string")) << why;
+  why = refused(R"({"joints": {"l_elbow": {"order": "ZXY", "axes": ["x"])" + limits);
+  EXPECT_NE(std::string::npos, why.find("'axes' must be a string")) << why;
+  // Not JSON at all: the place named.
+  why = refused(R"({"joints": {"l_elbow": )");
+  EXPECT_NE(std::string::npos, why.find("avatar.figure.json")) << why;
+  EXPECT_NE(std::string::npos, why.find("not a figure file")) << why;
+  why = refused(R"({"joints": {"l_elbow": {"axes": "x", "min_degrees": [1e999, 0, 0], "max_degrees": [10, 0, 0]}}})");
+  EXPECT_NE(std::string::npos, why.find("not a figure file")) << why;  // past a double: the JSON library's overflow
+  // A limit min above its max: the file named (the check is the skeleton's own).
+  why = refused(R"({"joints": {"l_elbow": {"axes": "x", "min_degrees": [20, 0, 0], "max_degrees": [10, 0, 0]}}})");
+  EXPECT_EQ(0u, why.find("avatar.figure.json: ")) << why;
+  EXPECT_NE(std::string::npos, why.find("min > max")) << why;
+}
+
+TEST(FigureFile, NumbersPastTheFileLimitAreRefusedSoWhatLoadsAlwaysSavesAndReadsBack) {
+  const std::string bvh = write_figure(build_avatar_skeleton(), "avatar.bvh").bvh;
+  const auto read = [&](const std::string& sidecar) {
+    return read_figure(bvh, "avatar.bvh", std::string_view(sidecar), "avatar.figure.json");
+  };
+  // 1e39 degrees is past float's range (it was read as infinity and saved as null).
+  for (const std::string field : {R"("min_degrees": [-1e39, 0, 0], "max_degrees": [10, 0, 0])",
+                                  R"("min_degrees": [-10, 0, 0], "max_degrees": [10, 0, 3.5e38])"}) {
+    try {
+      (void)read(R"({"joints": {"l_elbow": {"axes": "x", )" + field + "}}}");
+      ADD_FAILURE() << "read " << field;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string::npos, std::string(e.what()).find("magnitude at most 1e7")) << e.what();
+    }
+  }
+  try {
+    (void)read(R"({"joints": {"r_wrist": {"axes": "", "min_degrees": [0, 0, 0], "max_degrees": [0, 0, 0],
+                  "dh": {"a": 1e30, "alpha_degrees": 0, "d": 0, "theta_degrees": 0}}}})");
+    ADD_FAILURE() << "read a DH length of 1e30";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string::npos, std::string(e.what()).find("joint 'r_wrist': 'a' must be a number of magnitude at most 1e7")) << e.what();
+  }
+  // At the limit: read, saved, and read back the same.
+  const Skeleton wide = read(R"({"joints": {"l_elbow": {"axes": "xz", "min_degrees": [-1e7, 0, -400], "max_degrees": [1e7, 0, 400],
+                               "dh": {"a": -1e7, "alpha_degrees": 1e7, "d": 0.5, "theta_degrees": -90}}}})");
+  const FigureTexts saved = write_figure(wide, "wide.bvh");
+  const Skeleton back = read_figure(saved.bvh, "wide.bvh", std::string_view(saved.sidecar), "wide.figure.json");
+  const auto e = static_cast<std::size_t>(back.find("l_elbow"));
+  EXPECT_EQ(0b101, back.dofs[e].axes);
+  EXPECT_FLOAT_EQ(glm::radians(-1e7f), back.dofs[e].min_angle.x);
+  EXPECT_FLOAT_EQ(glm::radians(400.0f), back.dofs[e].max_angle.z);
+  ASSERT_TRUE(back.dh.size() > e && back.dh[e]);
+  EXPECT_FLOAT_EQ(-1e7f, back.dh[e]->a);
+}
+
+// Found the same way: a BVH whose joint name is not UTF-8 (Latin-1 from an old exporter)
+// loaded, and saving it threw nlohmann's exception (JSON text is UTF-8), ending the studio with
+// the user's work. It still loads (so it can be repaired); saving names the joint.
+TEST(FigureFile, AJointNameThatIsNotUtf8LoadsAndItsSaveIsRefusedByNameUntilRenamed) {
+  TempDir dir;
+  const std::string path = dir.write("latin1.bvh",
+                                     "HIERARCHY\nROOT hips\n{\n OFFSET 0 1 0\n CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n"
+                                     " JOINT t\xEAte\n {\n  OFFSET 0 0.5 0\n  CHANNELS 3 Zrotation Xrotation Yrotation\n"
+                                     "  End Site\n  {\n   OFFSET 0 0.2 0\n  }\n }\n}\nMOTION\nFrames: 1\nFrame Time: 0.04\n0 1 0 0 0 0 0 30 0\n");
+  FigureEditor f(build_avatar_skeleton());
+  ASSERT_TRUE(f.load(path)) << f.error();
+  const int head = f.skeleton().find("t\xEAte");
+  ASSERT_GE(head, 0);
+  const std::string out = dir.file("out.bvh");
+  try {
+    f.save(out);
+    ADD_FAILURE() << "saved a joint name that is not UTF-8";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string::npos, std::string(e.what()).find("joint 1's name is not UTF-8")) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_FALSE(std::filesystem::exists(figure_sidecar_path(out)));
+  ASSERT_TRUE(f.rename(head, "tete"));
+  ASSERT_TRUE(f.rename(f.skeleton().find("t\xEAte_end"), "tete_end"));  // its End Site, named after it
+  f.save(out);
+  const Skeleton back = load_figure(out);
+  ASSERT_EQ(3u, back.size());
+  EXPECT_GE(back.find("tete"), 0);
+  EXPECT_GT(std::abs(glm::dot(back.rest_rotations[static_cast<std::size_t>(back.find("tete"))],
+                              f.skeleton().rest_rotations[static_cast<std::size_t>(head)])), 0.99999f);
 }
 
 TEST(LimbDrag, ARayThroughTheForearmPicksItAndDraggingTheWristReachesTheTarget) {

@@ -1,6 +1,8 @@
 // The studio's timeline, figure and IK editors under a virtual X server, driven by --script: a key
 // dragged to another time moves the peak of the exported BVH there (and undo moves it back); a
-// sign's bar made longer makes the exported motion longer by as much; the figure editor's saved
+// sign's bar made longer makes the exported motion longer by as much; the timeline saved as a clip
+// sign is played by the learning mode (topic "your signs"), signed in a sentence and played by the
+// dictionary; the figure editor's saved
 // skeleton renders with `gestura render` and receives a motion with `gestura retarget`, while a
 // skeleton file that does not parse is refused with nothing lost; dragging the right hand with IK
 // puts the wrist within 1 cm of the target and undo puts it back. Screenshots go to
@@ -13,6 +15,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "gestura/body/avatar_skeleton.hpp"
 #include "gestura/io/bvh.hpp"
@@ -31,6 +34,7 @@ namespace fs = std::filesystem;
 using gestura::test::run_command;
 using gestura::testing::TempDir;
 using gestura::test::have_xvfb;
+using gestura::test::peak_time;
 using gestura::test::read_json_file;
 using gestura::test::shot_dir;
 using gestura::test::run_studio;
@@ -39,18 +43,6 @@ using gestura::test::run_studio;
 
 
 
-// The time at which `joint` is turned furthest from its first frame in a BVH file.
-float peak_time(const BvhFile& bvh, const std::string& joint) {
-  const int j = bvh.skeleton.find(joint);
-  if (j < 0) return -1.0f;
-  const QuatTrack& track = bvh.clip.rotations[static_cast<std::size_t>(j)];
-  float best = -1.0f, at = -1.0f;
-  for (std::size_t k = 0; k < track.size(); ++k) {
-    const float angle = 2.0f * std::acos(std::min(1.0f, std::abs(glm::dot(track.values[k], track.values[0]))));
-    if (angle > best + 1e-6f) best = angle, at = track.times[k];
-  }
-  return at;
-}
 
 TEST(StudioTimelineUnderXvfb, RetimingAKeyMovesItInTheExportedBvhAndABarRetimesTheUtterance) {
   if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
@@ -81,6 +73,20 @@ TEST(StudioTimelineUnderXvfb, RetimingAKeyMovesItInTheExportedBvhAndABarRetimesT
                             "undo\n"  // the move
                             "export-timeline " + j + "c.bvh\n"
                             "save-clip-sign TESTWAVE\n"
+                            // The clip sign in the learning mode, in a sentence and in the dictionary.
+                            "mode learn\n"
+                            "topic your signs\n"
+                            "word TESTWAVE\n"
+                            "dump " + j + "learn-word.json\n"
+                            "sentence hello testwave\n"
+                            "dump " + j + "learn-sentence.json\n"
+                            "mode edit\n"
+                            "open TESTWAVE\n"
+                            "time 1.0\n"
+                            "wait 2\n"
+                            "dump " + j + "dictionary.json\n"
+                            "screenshot " + shots + "/studio-clip-sign.png\n"
+                            "mode timeline\n"
                             "timeline-say hello my name is\n"  // the keys over an utterance, for the screenshot
                             "key l_elbow.x 0.6 -80\n"
                             "key-interp r_elbow.x 1 kb 0.5 0 0\n"
@@ -124,6 +130,23 @@ TEST(StudioTimelineUnderXvfb, RetimingAKeyMovesItInTheExportedBvhAndABarRetimesT
   ASSERT_LT(static_cast<std::size_t>(elbow), stored.rotations.size());
   const quat at_peak = sample_track(stored.rotations[static_cast<std::size_t>(elbow)], 1.0f);
   EXPECT_NEAR(-100.0f, glm::degrees(joint_angles(skeleton, elbow, at_peak).x), 1.0f);
+
+  // The learning mode has it among the user's signs and plays its motion; a sentence signs it
+  // between its other signs; the dictionary plays it (it has no notation to open).
+  const auto word = read_json_file(j + "learn-word.json"), sentence = read_json_file(j + "learn-sentence.json"),
+             dictionary = read_json_file(j + "dictionary.json");
+  ASSERT_TRUE(word.is_object() && sentence.is_object() && dictionary.is_object());
+  EXPECT_EQ("your signs", word["learning"]["topic"]);
+  EXPECT_EQ("TESTWAVE", word["learning"]["title"]);
+  EXPECT_NEAR(stored.duration, word["learning"]["duration"].get<float>(), 0.05f);
+  std::vector<std::string> glosses;
+  for (const auto& g : sentence["learning"]["glosses"]) glosses.push_back(g["gloss"]);
+  ASSERT_EQ(2u, glosses.size()) << sentence["learning"].dump();
+  EXPECT_EQ("HELLO", glosses[0]);
+  EXPECT_EQ("TESTWAVE", glosses[1]);
+  EXPECT_GT(sentence["learning"]["glosses"][1]["end"].get<float>() - sentence["learning"]["glosses"][1]["start"].get<float>(), 1.9f);
+  EXPECT_EQ("TESTWAVE", dictionary["clip_sign_shown"]);
+  EXPECT_NE(std::string::npos, dictionary["status"].get<std::string>().find("clip sign TESTWAVE")) << dictionary["status"];
 
   // An output the exporter does not write is refused, naming why.
   EXPECT_NE(std::string::npos, bad["status"].get<std::string>().find("not exported")) << bad["status"];

@@ -1,5 +1,12 @@
 #include "support/studio_under_xvfb.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "gestura/io/bvh.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -30,6 +37,18 @@ std::string shot_dir(const gestura::testing::TempDir& dir) {
     return env;
   }
   return dir.file("");
+}
+
+float peak_time(const gestura::BvhFile& bvh, const std::string& joint) {
+  const int j = bvh.skeleton.find(joint);
+  if (j < 0) return -1.0f;
+  const gestura::QuatTrack& track = bvh.clip.rotations[static_cast<std::size_t>(j)];
+  float best = -1.0f, at = -1.0f;
+  for (std::size_t k = 0; k < track.size(); ++k) {
+    const float angle = 2.0f * std::acos(std::min(1.0f, std::abs(glm::dot(track.values[k], track.values[0]))));
+    if (angle > best + 1e-6f) best = angle, at = track.times[k];
+  }
+  return at;
 }
 
 }  // namespace gestura::test

@@ -8,6 +8,8 @@
 #include "lexicon/temp_dir.hpp"
 #include "support/cli.hpp"
 
+namespace gestura { struct BvhFile; }
+
 namespace gestura::test {
 
 bool have_xvfb();
@@ -22,5 +24,8 @@ nlohmann::json read_json_file(const std::string& path);
 
 // Where screenshots go: $GESTURA_STUDIO_SCREENSHOTS when set (docs/studio.md uses them), else `dir`.
 std::string shot_dir(const gestura::testing::TempDir& dir);
+
+// The time at which `joint` is turned furthest from its first frame in an exported BVH (-1 if absent).
+float peak_time(const gestura::BvhFile& bvh, const std::string& joint);
 
 }  // namespace gestura::test

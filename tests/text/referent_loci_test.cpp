@@ -75,6 +75,16 @@ TEST(ReferentLoci, LaterPronounsReuseTheirAntecedentsPlaces) {
   EXPECT_NE(find(u, "TELL:3a→3b"), nullptr) << u.text();
 }
 
+// Reported speech after a verb of telling: English leaves "he" open, and the grammar takes the
+// teller, as readers most often do without more context (docs/grammar.md, "Reported speech").
+TEST(ReferentLoci, ReportedSpeechAfterTellTakesTheTeller) {
+  const Translation t = gloss("John told Tom he won.");
+  EXPECT_EQ(t.text(), "FS-JOHN IX-3a TELL:3a→3b FS-TOM IX-3b IX-3a WIN") << t.text();
+  // A pronoun of the other gender has only one antecedent.
+  const Translation u = gloss("John told Mary she won.");
+  EXPECT_NE(u.text().find("IX-3b WIN"), std::string::npos) << u.text();
+}
+
 TEST(ReferentLoci, HerIsTheRecipientOfAThingAndThePossessorOfAPerson) {
   EXPECT_EQ(gloss("I gave her money.").text(), "IX-1 GIVE:1→3a IX-3a MONEY");
   EXPECT_EQ(gloss("She sent her mother a letter.").text(), "IX-3a SEND:3a→3b POSS-3a MOTHER IX-3b LETTER");

@@ -319,6 +319,22 @@ TEST(TranslatorParse, IssueExamplesReadThroughTheParse) {
   EXPECT_EQ(text("Turn left."), "TURN LEFT");
 }
 
+// A participle in an adjective phrase keeps the sign listed for its form; as its clause's verb it
+// takes its lemma's.
+TEST(TranslatorParse, AParticipleUsedAsAnAdjectiveKeepsItsOwnSign) {
+  WordListInventory v = vocabulary();
+  v.add("tired", "TIRED");
+  v.add("tire", "WHEEL");
+  v.add("very", "VERY");
+  v.add("yesterday", "YESTERDAY");
+  v.add("leave", "LEAVE");
+  v.add("left", "LEFT");
+  const auto text = [&](std::string_view english) { return translate_to_gloss(english, v).text(); };
+  EXPECT_EQ(text("I am tired."), "IX-1 TIRED");
+  EXPECT_EQ(text("I am very tired."), "IX-1 VERY TIRED");
+  EXPECT_EQ(text("He left yesterday."), "YESTERDAY IX-3a LEAVE");
+}
+
 TEST(TranslatorParse, TheExplanationNamesTheParse) {
   WordListInventory v = vocabulary();
   v.add("give", "GIVE");

@@ -45,12 +45,12 @@ export function startServer(gestura, extra = []) {
   });
 }
 
-export async function launchBrowser(chromium) {
+export async function launchBrowser(chromium, extraArgs = []) {
   const { default: puppeteer } = await import('puppeteer-core');
   return puppeteer.launch({
     executablePath: chromium, headless: true,
     args: ['--no-sandbox', '--disable-dev-shm-usage', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-           '--disable-background-networking', '--disable-component-update', '--no-first-run'],
+           '--disable-background-networking', '--disable-component-update', '--no-first-run', ...extraArgs],
   });
 }
 

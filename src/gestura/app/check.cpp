@@ -46,7 +46,7 @@ CheckResult run(const CheckRequest& request, const RunContext& context) {
 nlohmann::json to_json(const CheckResult& result) {
   const sign::CheckReport& r = result.report;
   return {{"signs", r.signs},       {"parsed", r.parsed},     {"synthesized", r.synthesized},
-          {"failed", r.failed},     {"failures", r.failures}, {"notes", r.notes},
+          {"failed", r.failed},     {"failures", r.failures}, {"notes", r.notes}, {"clips", r.clips},
           {"stopped", r.stopped},   {"descriptions", r.descriptions}};
 }
 

@@ -71,11 +71,20 @@ void add_arm(Builder& b, int vt1, const SideDims& s) {
   const float a = s.a_pose;
   const vec3 down = at(vec3(std::sin(a), -std::cos(a), 0.0f));
   const vec3 elbow_pos = shoulder_pos + down * s.upper_arm;
+  // Table 1 of sign-language-interpreter.txt, with two corrections from the goniometry norms (AAOS;
+  // Boone & Azen 1979; Macedo & Magee 2008): the elbow flexes to 150° (means 143–158°), not 142°,
+  // and the wrist bends 47° toward the little finger (+x, ulnar: the table's figure for the
+  // larger side; the norms give 26–41°, always more than radial), not 27°. The radial side keeps
+  // the table's 47° (norms 18–25°): the avatar's palm is rigid, where a real hand's carpal and
+  // metacarpal joints add to what a goniometer reads, and a flat hand held upright in front of the
+  // chest needs it. With 27° ulnar a palm-down hand could not point its fingers ahead of its
+  // forearm, and with 142° a hand could not bring its fingertips to the ear or the chin at a
+  // notated turn (docs/sign-phonology.md).
   const int elbow = b.add(p + "elbow", shoulder, elbow_pos,
-                          limits(dofs(RotationOrder::XYZ, kX | kY, {-142, -77, 0}, {0, 113, 0})));
+                          limits(dofs(RotationOrder::XYZ, kX | kY, {-150, -77, 0}, {0, 113, 0})));
   const vec3 wrist_pos = elbow_pos + down * s.forearm;
   const int wrist = b.add(p + "wrist", elbow, wrist_pos,
-                          limits(dofs(RotationOrder::ZXY, kX | kZ, {-47, 0, -90}, {27, 0, 99})));
+                          limits(dofs(RotationOrder::ZXY, kX | kZ, {-47, 0, -90}, {47, 0, 99})));
 
   // Hand frame: `down` along the hand, `fwd` towards the thumb (+Z), `dorsal` the back of the hand.
   const vec3 fwd(0.0f, 0.0f, 1.0f);

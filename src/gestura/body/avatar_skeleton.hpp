@@ -26,8 +26,8 @@
 //   l_eyeball_joint             YXZ    −25..30 (+ = look down)  ±35 (+ = look to its left) —
 //   l_sternoclavicular          ZXY    —                        −30 protraction..25 retraction  −10 depression..40 elevation
 //   l_shoulder                  ZXY    −188 flexion..61 extension  −70 internal..90 external  −48 adduction..134 abduction
-//   l_elbow                     XYZ    −142 flexion..0          −77 pronation..113 supination —
-//   l_wrist                     ZXY    −47 radial abduction..27 ulnar adduction  —       −90 flexion..99 extension
+//   l_elbow                     XYZ    −150 flexion..0          −77 pronation..113 supination —
+//   l_wrist                     ZXY    −47 radial abduction..47 ulnar adduction  —       −90 flexion..99 extension
 //   l_index1 l_middle1 l_ring1 l_pinky1 (MCP)
 //                               XZY    −20..20 spread (+ = towards the little finger)  —  −90 flexion..30 extension
 //   l_*2 (PIP)                  XYZ    —                        —                          −110 flexion..0
@@ -44,7 +44,7 @@
 //   l_midtarsal                 XYZ    —                        ±10 forefoot ab/adduction  —
 //   l_metatarsal (toes)         XYZ    −60 extension..40 flexion  —                        —
 //
-// Arm ranges follow Table 1 of sign-language-interpreter.txt; hands: MCP ~90, PIP ~110, DIP ~80,
+// Arm ranges: Table 1 of sign-language-interpreter.txt, corrected (avatar_skeleton.cpp); hands: MCP ~90, PIP ~110, DIP ~80,
 // spread ±20. Rest orientation of the forearm is mid-pronation (palm facing the thigh), which is
 // the zero of the pronation/supination angle.
 //

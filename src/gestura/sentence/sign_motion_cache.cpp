@@ -21,8 +21,6 @@ namespace {
 // instants (SayMotion test) for 1.6× the first-use cost.
 constexpr float kCitationRate = 40.0f;
 
-// A cached performance whose palms stay this close to the plan is not tried from another start.
-constexpr float kPlanTolerance = 0.01f;
 // Seconds of the approach from the relaxed posture a sign is performed with before its first posture.
 constexpr float kApproachSeconds = 0.4f;
 
@@ -95,8 +93,9 @@ SignPlan SignMotionCache::approached_from_relaxed(const SignPlan& citation) cons
   return timeline.finish(kApproachSeconds + citation.sign_start, kApproachSeconds + citation.sign_end);
 }
 
-std::unique_ptr<CitationMotion> SignMotionCache::perform_citation(const SignPlan& citation, Start start) const {
-  const SignPlan performed = start == Start::FromRelaxed ? approached_from_relaxed(citation) : citation;
+std::unique_ptr<CitationMotion> SignMotionCache::perform_citation(const SignPlan& citation) const {
+  performances_.fetch_add(1, std::memory_order_relaxed);
+  const SignPlan performed = approached_from_relaxed(citation);
   const Clip clip = perform_plan(performed, *rig_, PerformOptions{kCitationRate});
   auto motion = std::make_unique<CitationMotion>();
   motion->plan = citation;
@@ -115,32 +114,6 @@ std::unique_ptr<CitationMotion> SignMotionCache::perform_citation(const SignPlan
     }
   }
   return motion;
-}
-
-float SignMotionCache::plan_error(const CitationMotion& motion) const {
-  // Largest distance of a signing palm from its planned place, over the sign's samples.
-  const Skeleton& skeleton = rig_->skeleton();
-  Pose pose = rig_->neutral;
-  std::vector<mat4> model(skeleton.size());
-  std::vector<quat> posture;
-  float worst = 0.0f;
-  for (float t = 0.0f; t <= motion.movement() + 0.5f / motion.rate; t += 1.0f / motion.rate) {
-    for (Hand hand : kBothHands) {
-      const HandTimeline& timeline = motion.plan.hand(hand);
-      if (timeline.segments.empty()) continue;
-      const HandState planned = sample_hand(timeline, t);
-      if (!planned.active) continue;
-      const std::vector<int>& joints = this->joints(hand);
-      posture.resize(joints.size());
-      motion.sample(hand, t, posture);
-      for (std::size_t j = 0; j < joints.size(); ++j) pose.rotations[joint_slot(joints[j])] = posture[j];
-      local_to_model(skeleton, pose, model);
-      const HandRig& h = rig_->hand(hand);
-      const vec3 palm = vec3(model[joint_slot(h.wrist)] * vec4(h.palm_centre_local, 1.0f));
-      worst = std::max(worst, glm::distance(palm, planned.position));
-    }
-  }
-  return worst;
 }
 
 std::size_t SignMotionCache::signs_stored() const {
@@ -171,18 +144,12 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation, std::stri
 
 const CitationMotion& SignMotionCache::perform_and_store(std::string key, const SignPlan& citation) {
   // Computed outside the lock: two threads may both compute a new sign; the first stored wins.
-  // The citation form is stored as the planner makes it. The arm the solver finds depends on where
-  // it starts: arriving from the relaxed posture in front, as in running signing, it keeps the
-  // elbows low (started at the first posture, STORE comes out with both elbows at shoulder
-  // height). Continuing from there, it can also get stuck with a hand centimetres off its plan
-  // (14 of the 416 ASL signs, by 1–17 cm): a sign whose palm strays more than 1 cm is performed
-  // from its first posture as well, and that one kept if it is closer to the plan by over 1 cm.
-  std::unique_ptr<CitationMotion> motion = perform_citation(citation, Start::FromRelaxed);
-  const float error = plan_error(*motion);
-  if (error > kPlanTolerance) {
-    auto at_first_posture = perform_citation(citation, Start::AtFirstPosture);
-    if (plan_error(*at_first_posture) < error - kPlanTolerance) motion = std::move(at_first_posture);
-  }
+  // The citation form is stored as the planner makes it and performed once, arriving from the
+  // relaxed posture in front as in running signing, which keeps the elbows low where they can be
+  // (started at the first posture, STORE came out with both elbows at shoulder height). Where the
+  // hand lands does not depend on that start: the hand solver leaves an elbow that cannot make
+  // the place and turn (sign/hand_solver.hpp).
+  std::unique_ptr<CitationMotion> motion = perform_citation(citation);
   if (store_) store_->save(key, *motion);
   std::lock_guard lock(mutex_);
   return *signs_.emplace(std::move(key), std::move(motion)).first->second;

@@ -12,6 +12,7 @@
 // Thread-safe: lookups and inserts are serialised; entries are never moved or evicted, so the
 // references returned stay valid for the cache's lifetime.
 #include <array>
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -87,14 +88,13 @@ class SignMotionCache {
   const SigningRig& rig() const { return *rig_; }
   const std::vector<int>& joints(Hand hand) const { return joints_[hand]; }
   std::size_t signs_stored() const;
+  // How many times a sign has been performed (once per stored sign, unless two threads raced to
+  // store the same one).
+  std::size_t performances() const { return performances_.load(std::memory_order_relaxed); }
 
  private:
-  // Where the solver starts a citation form: arriving from the relaxed posture in front (as in
-  // running signing), or at its first posture with a full search of the elbow's circle.
-  enum class Start : std::uint8_t { FromRelaxed, AtFirstPosture };
   SignPlan approached_from_relaxed(const SignPlan& citation) const;
-  std::unique_ptr<CitationMotion> perform_citation(const SignPlan& citation, Start start) const;
-  float plan_error(const CitationMotion& motion) const;
+  std::unique_ptr<CitationMotion> perform_citation(const SignPlan& citation) const;
   // Performs `citation` (see sign()) and stores it under `key`; the first stored wins.
   const CitationMotion& perform_and_store(std::string key, const SignPlan& citation);
 
@@ -102,6 +102,7 @@ class SignMotionCache {
   CitationStore* store_ = nullptr;
   ByHand<std::vector<int>> joints_;
   mutable std::mutex mutex_;
+  mutable std::atomic<std::size_t> performances_{0};
   std::unordered_map<std::string, std::unique_ptr<CitationMotion>> signs_;
   std::unordered_map<std::string, std::unique_ptr<HandJointPosture>> postures_;
 };

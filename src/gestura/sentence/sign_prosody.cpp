@@ -23,4 +23,15 @@ SignTiming running_sign_timing(float citation_movement, bool phrase_final, float
   return t;
 }
 
+SignTiming recorded_sign_timing(float recorded_seconds, bool phrase_final, float extra_hold, float speed) {
+  SignTiming t;
+  t.tempo = speed / (phrase_final ? kPhraseFinalSlowing : 1.0f);
+  t.movement = recorded_seconds / t.tempo;
+  t.final_hold = phrase_final ? kPhraseFinalHold / speed : 0.0f;
+  const float minimum = (phrase_final ? kMinPhraseFinalSeconds : kMinSignSeconds) / speed;
+  t.final_hold += std::max(0.0f, minimum - t.span());
+  t.final_hold += extra_hold / speed;
+  return t;
+}
+
 }  // namespace gestura

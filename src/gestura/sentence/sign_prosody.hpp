@@ -47,4 +47,10 @@ struct SignTiming {
 // Contract: citation_movement >= 0, extra_hold >= 0, speed in [0.25, 2].
 SignTiming running_sign_timing(float citation_movement, bool phrase_final, float extra_hold, float speed);
 
+// Timing of a recorded sign (a clip sign keyframed in the studio): its author timed it, holds
+// included, so it keeps its own pace — divided by the global speed, and slowed at the end of a
+// phrase like any sign, whose final hold and least length it also gets.
+// Contract: recorded_seconds >= 0, extra_hold >= 0, speed in [0.25, 2].
+SignTiming recorded_sign_timing(float recorded_seconds, bool phrase_final, float extra_hold, float speed);
+
 }  // namespace gestura

@@ -15,6 +15,8 @@
 #include "gestura/face/mouthing.hpp"
 #include "gestura/face/nonmanual.hpp"
 #include "gestura/face/nonmanual_from_translation.hpp"
+#include "gestura/lexicon/clip_sign.hpp"
+#include "gestura/sentence/clip_sign_motion.hpp"
 #include "gestura/sentence/fingerspelling_performance.hpp"
 #include "gestura/sentence/role_shift.hpp"
 #include "gestura/sentence/sign_prosody.hpp"
@@ -62,10 +64,20 @@ class UtteranceBuilder {
   // planner's seconds; the sign then lasts what the model says and its planned motion is played at
   // the tempo that fits it.
   std::array<float, 2> add_sign(const CitationMotion& motion, bool phrase_final, float extra_hold, float modelled) {
-    const SignPlan& plan = motion.plan;
     SignTiming timing = running_sign_timing(modelled, phrase_final, extra_hold, speed_);
     if (motion.movement() > 0.0f && timing.movement > 0.0f) timing.tempo = motion.movement() / timing.movement;
     else timing = running_sign_timing(motion.movement(), phrase_final, extra_hold, speed_);
+    return place_sign(motion, timing);
+  }
+
+  // Appends a recorded sign (a clip sign, clip_sign_motion.hpp) at its own pace (recorded_sign_timing).
+  std::array<float, 2> add_recorded_sign(const CitationMotion& motion, bool phrase_final, float extra_hold) {
+    return place_sign(motion, recorded_sign_timing(motion.movement(), phrase_final, extra_hold, speed_));
+  }
+
+  // Appends a sign with `timing`: reached from where the hands are, held, moved, held.
+  std::array<float, 2> place_sign(const CitationMotion& motion, const SignTiming& timing) {
+    const SignPlan& plan = motion.plan;
     ByHand<HandState> first;
     for (Hand hand : kBothHands) {
       const HandTimeline& t = plan.hand(hand);
@@ -163,6 +175,18 @@ void Signer::keep_citations_in(const std::string& path) {
   cache_->persist_to(store_->readable() ? store_.get() : nullptr);
 }
 
+const ClipSignMotion& Signer::clip_sign(const SignEntry& entry) const {
+  // Keyed by the stored bytes: a clip sign saved again under its gloss is a new motion.
+  std::string key(entry.clip.begin(), entry.clip.end());
+  {
+    std::lock_guard lock(clip_mutex_);
+    if (auto it = clip_signs_.find(key); it != clip_signs_.end()) return *it->second;
+  }
+  std::unique_ptr<ClipSignMotion> motion = clip_sign_motion(decode_clip_sign(entry), rig_, entry.gloss);
+  std::lock_guard lock(clip_mutex_);
+  return *clip_signs_.emplace(std::move(key), std::move(motion)).first->second;
+}
+
 SentencePerformance Signer::say(std::string_view text, const SayOptions& options) const {
   if (options.lang != "ase")
     throw Error("no lexicon for sign language '" + options.lang + "': only 'ase' (American Sign Language) has one");
@@ -194,6 +218,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
   for (const Marker& m : translation.markers)
     if (m.kind == MarkerKind::yes_no_question && m.last > m.first) question_end[m.last - 1] = true;
 
+  std::vector<ClipSignFace> clip_faces;
   float first_start = -1.0f, last_end = 0.0f;
   auto spell = [&](std::string_view word, const std::string& why) -> std::optional<std::array<float, 2>> {
     const std::string letters = letters_only(word);
@@ -211,8 +236,21 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
                         const GlossToken* placed = nullptr) -> std::optional<std::array<float, 2>> {
     const std::optional<SignEntry> entry = lexicon_->find(placed ? placed->sign() : gloss, options.lang);
     if (!entry) return std::nullopt;
+    if (entry->notation_kind == NotationKind::clip) {
+      // A keyframed sign plays its recorded motion (not placed in space: a recording has one place).
+      try {
+        const ClipSignMotion& clip = clip_sign(*entry);
+        const std::array<float, 2> span = builder.add_recorded_sign(clip.motion, phrase_final, extra_hold);
+        const CachedSignSpan& placed_span = builder.spans().back();
+        clip_faces.push_back({&clip.face, placed_span.start, placed_span.moving, placed_span.end, placed_span.tempo});
+        return span;
+      } catch (const Error& e) {
+        out.notes.push_back(gloss + ": its clip cannot be played (" + e.what() + ")");
+        return std::nullopt;
+      }
+    }
     if (entry->notation_kind != NotationKind::hamnosys) {
-      out.notes.push_back(gloss + ": only HamNoSys entries are performed, this one is " +
+      out.notes.push_back(gloss + ": only HamNoSys and clip entries are performed, this one is " +
                           std::string(to_string(entry->notation_kind)));
       return std::nullopt;
     }
@@ -337,8 +375,40 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
     }
   }
   if (!face_actions.empty()) face::write_face_channels(face_actions, out.clip);
+  for (const ClipSignFace& face : clip_faces) add_clip_sign_face(face, options.fps, out.clip);
   write_gaze_with_role_shift(shifts, rig_, out.clip, options.fps);
   face::write_jaw_from_channel(skeleton, out.clip);
+  out.clip.duration = std::max(out.clip.duration, out.clip.end_time());
+  out.duration = out.clip.duration;
+  return out;
+}
+
+
+SentencePerformance Signer::sign_sequence(std::span<const NotatedSign> signs, const SayOptions& options) const {
+  if (!(options.speed >= 0.25f && options.speed <= 2.0f))
+    throw Error("speed " + std::to_string(options.speed) + " is outside 0.25–2");
+  if (!(options.fps >= 1.0f && options.fps <= 240.0f)) throw Error("fps " + std::to_string(options.fps) + " is outside 1–240");
+  if (signs.empty()) throw Error("nothing to sign: no sign was given");
+  if (signs.size() > kMaxSayGlosses)
+    throw Error(std::to_string(signs.size()) + " signs, at most " + std::to_string(kMaxSayGlosses) + " in one utterance");
+  SentencePerformance out;
+  UtteranceBuilder builder(rig_, options.speed);
+  float first_start = -1.0f, last_end = 0.0f;
+  for (std::size_t i = 0; i < signs.size(); ++i) {
+    const float modelled = kPlannedPerModelSecond * citation_timing(sign::parse_hamnosys_unicode(signs[i].notation)).moving();
+    const std::array<float, 2> span = builder.add_sign(cache_->sign(signs[i].notation), i + 1 == signs.size(), 0.0f, modelled);
+    if (first_start < 0.0f) first_start = span[0];
+    last_end = span[1];
+    out.glosses.push_back({signs[i].gloss, signs[i].gloss, span[0], span[1]});
+    if (builder.now() > kMaxSaySeconds)
+      throw Error("the signs would last more than " + std::to_string(static_cast<int>(kMaxSaySeconds)) + " s, passed at sign " +
+                  std::to_string(i + 1) + " of " + std::to_string(signs.size()));
+  }
+  out.plan = builder.finish(first_start, last_end);
+  out.clip = perform_utterance(out.plan, builder.spans(), *cache_, options.fps, &out.motion);
+  out.clip.name = "sign";
+  write_gaze_with_role_shift({}, rig_, out.clip, options.fps);
+  face::write_jaw_from_channel(avatar_->skeleton, out.clip);
   out.clip.duration = std::max(out.clip.duration, out.clip.end_time());
   out.duration = out.clip.duration;
   return out;

@@ -12,7 +12,10 @@
 // (sentence/sign_motion_cache, sentence/utterance_performer) → non-manual markers and mouthing added
 // as face channels and head rotations (face/).
 #include <memory>
+#include <mutex>
+#include <span>
 #include <string>
+#include <unordered_map>
 #include <string_view>
 #include <vector>
 
@@ -26,6 +29,7 @@
 namespace gestura {
 
 class CitationStore;
+struct ClipSignMotion;
 
 struct SayOptions {
   float speed = 1.0f;        // global tempo 0.25–2
@@ -64,14 +68,16 @@ class Signer {
  public:
   // Contract: `avatar` and `lexicon` outlive the signer (the rig is built once, here).
   Signer(const Avatar& avatar, LayeredLexicon& lexicon);
-  ~Signer();
   Signer(const Signer&) = delete;  // the motion cache refers to this signer's rig
   Signer& operator=(const Signer&) = delete;
+  ~Signer();
 
   // Throws gestura::Error for empty text, text over kMaxSayBytes or kMaxSayGlosses glosses, an
   // utterance that would last over kMaxSaySeconds, invalid UTF-8, a sign language without a lexicon, and a speed outside 0.25–2.
   // The first utterance that uses a sign performs its citation form by IK and stores it (per
-  // signer, so per avatar); later ones reuse it. Safe to call from several threads.
+  // signer, so per avatar); later ones reuse it. A clip sign (keyframed in the studio) plays its
+  // recorded motion and face channels between the same transitions (sentence/clip_sign_motion.hpp).
+  // Safe to call from several threads.
   SentencePerformance say(std::string_view text, const SayOptions& options = {}) const;
 
   // Keeps solved citation forms in the SQLite database at `path` (the user lexicon) and reads the
@@ -79,6 +85,15 @@ class Signer {
   // cannot be used leaves the signer as it was (store()->problem() says why). Call before say().
   void keep_citations_in(const std::string& path);
   const CitationStore* store() const { return store_.get(); }
+
+  // Signs given by their notation (HamNoSys 4 Unicode), performed one after another on one two-hand
+  // timeline as running signing: a SiGML document of several signs. `gloss` names each in the result.
+  // Throws gestura::Error for none, more than kMaxSayGlosses, a notation that does not parse, a speed
+  // outside 0.25–2, or an utterance over kMaxSaySeconds.
+  struct NotatedSign {
+    std::string gloss, notation;
+  };
+  SentencePerformance sign_sequence(std::span<const NotatedSign> signs, const SayOptions& options = {}) const;
 
   // Signs whose joint motion is stored so far.
   std::size_t cached_signs() const { return cache_->signs_stored(); }
@@ -91,6 +106,10 @@ class Signer {
   SigningRig rig_;
   std::unique_ptr<SignMotionCache> cache_;
   std::unique_ptr<CitationStore> store_;
+  // Clip signs made ready for this rig, by their stored bytes.
+  const ClipSignMotion& clip_sign(const SignEntry& entry) const;
+  mutable std::mutex clip_mutex_;
+  mutable std::unordered_map<std::string, std::unique_ptr<ClipSignMotion>> clip_signs_;
 };
 
 }  // namespace gestura

@@ -1,5 +1,6 @@
 #include "gestura/serve/api.hpp"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <chrono>
@@ -14,6 +15,10 @@
 #include "gestura/app/say.hpp"
 #include "gestura/app/sign.hpp"
 #include "gestura/body/avatar_look.hpp"
+#include "gestura/core/utf8.hpp"
+#include "gestura/sentence/signer.hpp"
+#include "gestura/sign/hamnosys_symbol.hpp"
+#include "gestura/sign/sigml.hpp"
 #include "gestura/io/gltf_export.hpp"
 #include "gestura/serve/api_error.hpp"
 #include "gestura/serve/clip_glb.hpp"
@@ -135,7 +140,8 @@ Api::Api(ServeOptions options) : options_(std::move(options)) {
   }
   if (!options_.lexicon.empty()) setenv("GESTURA_LEXICON", options_.lexicon.c_str(), 1);  // the workspace's user lexicon
   // With a broker the workers render: this server needs no workspaces for jobs.
-  workspaces_ = std::make_unique<WorkspacePool>(options_.threads + (options_.broker.empty() ? options_.jobs : 0));
+  workspaces_ = std::make_unique<WorkspacePool>(options_.threads + (options_.broker.empty() ? options_.jobs : 0),
+                                                app::user_citation_store());
   if (options_.broker.empty()) {
     jobs_ = std::make_unique<LocalRenderJobs>((data_ / "jobs").string(), options_.jobs, static_cast<std::size_t>(options_.queue), *workspaces_);
   } else {
@@ -254,7 +260,31 @@ RoomServices Api::room_services() {
     return gaze->look_at(SeatView{host.position, host.yaw}, point);
   };
   services.prepare_host = [this] { host_gaze(); };
+  services.capture = [this](const HolisticFrame& frame, const std::string& look) {
+    const std::shared_ptr<const HolisticFit> fit = holistic_fit(look);
+    const Pose pose = fit->fit(frame);
+    JointRotations out;
+    for (const int j : fit->driven_joints()) {
+      const quat& q = pose.rotations[joint_slot(j)];
+      out.push_back({fit->skeleton().names[joint_slot(j)], {q.x, q.y, q.z, q.w}});
+    }
+    return out;
+  };
   return services;
+}
+
+std::shared_ptr<const HolisticFit> Api::holistic_fit(const std::string& look) {
+  {
+    std::lock_guard lock(fit_mutex_);
+    if (const auto it = fits_.find(look); it != fits_.end()) return it->second;
+  }
+  // Built outside the lock (the look's avatar may take seconds the first time).
+  const WorkspacePool::Lease workspace = workspaces_->acquire();
+  app::AvatarChoice choice;
+  choice.avatar = look;
+  auto fit = std::make_shared<const HolisticFit>(workspace->avatar(choice).skeleton);
+  std::lock_guard lock(fit_mutex_);
+  return fits_.emplace(look, std::move(fit)).first->second;
 }
 
 std::shared_ptr<const HostGaze> Api::host_gaze() {
@@ -376,6 +406,30 @@ ApiResponse Api::sign(ApiRequest& request, const app::RunContext& context) {
     sign.source.sigml = temporary.path.string();
   }
   const WorkspacePool::Lease workspace = workspaces_->acquire();
+  // A document of several signs, none chosen by gloss: all of them, in order, as running signing on
+  // one two-hand timeline (the Signer's, as for a sentence), each gloss timed.
+  if (!sigml_text.empty() && sign.source.gloss.empty()) {
+    std::vector<Signer::NotatedSign> signs;
+    for (const sign::SigmlSign& s : sign::read_sigml(sigml_text, "sigml")) {
+      std::string notation;
+      for (const sign::Symbol symbol : s.symbols) utf8::append(notation, sign::symbol_info(symbol).codepoint);
+      signs.push_back({s.gloss, std::move(notation)});
+    }
+    const bool notated = std::all_of(signs.begin(), signs.end(), [](const Signer::NotatedSign& s) { return !s.notation.empty(); });
+    if (signs.size() > 1 && notated) {
+      SayOptions options;
+      options.speed = sign.speed;
+      if (!(options.speed >= 0.25f && options.speed <= 2.0f)) app::usage_error("speed", "is between 0.25 and 2 for a document of several signs");
+      context.check_stop();
+      const SentencePerformance performed = workspace->signer(sign.avatar).sign_sequence(signs, options);
+      json glosses = json::array();
+      for (const PerformedGloss& g : performed.glosses) glosses.push_back({{"gloss", g.gloss}, {"start", g.start}, {"end", g.end}});
+      const json timeline{{"duration", performed.duration}, {"glosses", glosses}, {"sign_start", performed.plan.sign_start},
+                          {"sign_end", performed.plan.sign_end}, {"notes", performed.notes}};
+      const Avatar& avatar = workspace->avatar(sign.avatar);
+      return performance_response(request, timeline, avatar.skeleton, performed.clip, avatar.mesh);
+    }
+  }
   app::RunContext leased = context;
   leased.workspace = workspace.get();
   const app::SignResult result = app::perform(sign, leased);

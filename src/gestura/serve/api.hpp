@@ -65,6 +65,7 @@ class Api {
   ApiResponse health();
   RoomServices room_services();
   std::shared_ptr<const HostGaze> host_gaze();
+  std::shared_ptr<const HolisticFit> holistic_fit(const std::string& look);  // one per look, built once
 
   ServeOptions options_;
   std::filesystem::path data_, web_;
@@ -81,6 +82,8 @@ class Api {
   std::unique_ptr<Rooms> rooms_;
   std::mutex host_mutex_;
   std::shared_ptr<const HostGaze> host_gaze_;
+  std::mutex fit_mutex_;
+  std::map<std::string, std::shared_ptr<const HolisticFit>> fits_;  // by look
 };
 
 }  // namespace gestura::serve

@@ -8,6 +8,7 @@
 #include "gestura/app/error.hpp"
 #include "gestura/body/avatar_look.hpp"
 #include "gestura/serve/api_error.hpp"
+#include "gestura/serve/landmarks_json.hpp"
 #include "gestura/serve/random_hex.hpp"
 
 namespace gestura::serve {
@@ -439,17 +440,16 @@ void Rooms::finish_say(const std::string& room_name, const std::string& id, std:
 }
 
 void Rooms::landmarks(Connection& c, Participant& p, const json& message) {
-  if (!message.contains("pose") || !message["pose"].is_array())
-    app::usage_error("pose", "expected the 33 body landmarks of MediaPipe Holistic as [[x, y, z], …]");
+  HolisticFrame frame = landmarks_from_json(message);  // every number checked before any work is queued
   if (!services_.capture) throw app::AppError(app::ErrorCategory::conflict, app::Place{"type", {}}, "this server does not fit bodies to landmarks");
-  if (p.solving) return;  // the newest pose wins: one being fitted, this one is dropped
+  if (p.solving) return;  // one frame is being fitted: this one is dropped, the next one will be newer
   p.solving = true;
   std::weak_ptr<bool> alive = alive_;
-  defer([this, alive, room = c.room, id = p.id, connection = c.id, message, look = p.look] {
+  defer([this, alive, room = c.room, id = p.id, connection = c.id, frame = std::move(frame), look = p.look] {
     std::optional<JointRotations> rotations;
     std::string error_body;
     try {
-      rotations = services_.capture(message, look);
+      rotations = services_.capture(frame, look);
     } catch (...) {
       error_body = current_error_response().body;
     }

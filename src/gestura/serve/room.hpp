@@ -9,7 +9,7 @@
 // work (a sentence signed, a body pose solved) goes to a Post callback (the server's compute
 // threads). The protocol (docs/api.md, "Rooms") is JSON text messages with a "type":
 //
-//   client → server   join {name, look, token?} · say {text, speed?} · landmarks {pose, left?, right?}
+//   client → server   join {name, look, token?} · say {text, speed?} · landmarks {pose, left?, right?, face?, aspect?}
 //                     · ping {t} · leave
 //   server → client   welcome · joined · left · away · back · play · pose · host · pong · error
 //
@@ -28,6 +28,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gestura/mocap/holistic_fit.hpp"
 #include "gestura/serve/room_host.hpp"
 #include "gestura/skeleton/skeleton.hpp"
 
@@ -59,9 +60,9 @@ using JointRotations = std::vector<std::pair<std::string, std::array<float, 4>>>
 struct RoomServices {
   // Signs `text` on the look (slow: call from Post only). Throws AppError for a bad request.
   std::function<RoomClip(const std::string& text, float speed, const std::string& look)> say;
-  // Fits the look's body to MediaPipe Holistic landmarks (the JSON of a landmarks message);
-  // throws AppError (usage) naming the field for malformed landmarks.
-  std::function<JointRotations(const nlohmann::json& landmarks, const std::string& look)> capture;
+  // Fits the look's body to one frame of MediaPipe Holistic landmarks (a landmarks message, checked
+  // already: landmarks_json.hpp); slow: call from Post only. Throws for a frame it cannot fit.
+  std::function<JointRotations(const HolisticFrame& landmarks, const std::string& look)> capture;
   // The host's head and eyes turned toward a point (world, metres); quick, never blocks: none while
   // the host's body is not built yet. prepare_host builds it (slow: called through post, once).
   std::function<std::optional<JointRotations>(const vec3& point)> gaze;

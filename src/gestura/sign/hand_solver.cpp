@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "gestura/ik/dls.hpp"
 #include "gestura/ik/residual.hpp"
@@ -15,6 +16,7 @@ constexpr int kEscapePasses = 5;           // pushes out of the body per frame
 constexpr float kEscapeTolerance = 0.002f;  // metres deeper than the margin that calls for the straight way out
 constexpr float kEscapeStep = 0.01f;        // metres per step of it
 constexpr int kEscapeSteps = 15;
+constexpr float kLostHand = 0.03f;         // metres off its place that make a frame search the elbow circle
 constexpr float kContactTolerance = 0.002f;  // metres a hand's contact point may miss before it is corrected
 
 constexpr float kSpaceTurnWeight = 0.25f;  // metres a radian of turn weighs against place, out in space…
@@ -22,6 +24,17 @@ constexpr float kBodyTurnWeight = 0.08f;   // …and at the body, where the plac
 constexpr float kContactTurnCost = deg(2.0f);  // turn a contact correction may cost, or up to kTurnRead:
 constexpr float kTurnRead = deg(24.0f);  // just inside the 25° within which a 45°-step notated turn still
                                          // reads as itself (synthesis_problem's tolerance)
+
+// A hand that continues last frame's elbow and lands this far from its plan (metres, a radian of
+// turn weighed as the solver weighs it) is also solved without history; that solution is kept
+// when it lands this much nearer and within kLanded of the plan, and only tried when its elbow is
+// elsewhere on the circle.
+constexpr float kLandingTolerance = 0.01f;
+constexpr float kLandingGain = 0.005f;
+constexpr float kLanded = 0.02f;
+constexpr float kSameElbow = deg(10.0f);
+
+float wrap_angle(float a) { return std::remainder(a, 2.0f * kPi); }
 
 // The arm chain's joint rotations, to go back to (no allocation: this is per-frame code).
 struct ArmSnapshot {
@@ -84,25 +97,23 @@ vec3 planned_contact(const SigningRig& rig, Hand hand, const HandState& state, s
   return best;
 }
 
-HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
-                           bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
-                           HandPoints& points) {
+namespace {
+
+// The analytic arm for the hand's place and turn (the swivel solver), from `prefer`.
+SwivelSolution seed_arm(const SigningRig& rig, const HandRig& h, const HandState& state, const SwivelPreference& prefer,
+                        Pose& pose) {
   const Skeleton& s = rig.skeleton();
-  const HandRig& h = rig.hand(hand);
   const quat wrist_rotation = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), state.orientation},
                                                  h.rest_frame.rotation, h.rest_wrist_rotation);
   // Seed: the clavicle relaxed, the arm from the analytic solver at a natural elbow swivel
-  // (continuing last frame's). It is exact when the joint ranges allow the hand's place and
-  // turn; when they do not, wrist and forearm stop at their limits (the nearest turn the arm
-  // can make) and the palm is put back where it belongs for that turn.
+  // (continuing last frame's, or the best of the whole circle). It is exact when the joint ranges
+  // allow the hand's place and turn; when they do not, wrist and forearm stop at their limits (the
+  // nearest turn the arm can make) and the palm is put back where it belongs for that turn.
   pose.rotations[joint_slot(h.clavicle)] = rig.neutral.rotations[joint_slot(h.clavicle)];
   const mat4 shoulder_parent = parent_model_matrix(s, pose, h.shoulder);
   const vec3 shoulder_at = vec3(shoulder_parent * vec4(s.rest_translations[joint_slot(h.shoulder)], 1.0f));
   const quat shoulder_parent_rotation = glm::normalize(glm::quat_cast(mat3(shoulder_parent)));
   SwivelGoal goal{state.position - wrist_rotation * h.palm_centre_local, wrist_rotation};
-  SwivelPreference prefer;
-  prefer.previous = solver.swivel;
-  prefer.search_circle = search_circle;
   SwivelSolution arm = solve_swivel_arm(s, h.swivel, shoulder_at, shoulder_parent_rotation, goal, prefer);
   if (arm.orientation_excess > deg(1.0f)) {
     apply_swivel_solution(s, h.swivel, arm, pose);
@@ -111,8 +122,18 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
     goal.wrist_position = state.position - reached * h.palm_centre_local;
     arm = solve_swivel_arm_at(s, h.swivel, shoulder_at, shoulder_parent_rotation, goal, arm.swivel, prefer);
   }
+  return arm;
+}
+
+// From the seed `arm` to the final arm: damped least squares, the contact point put on its place,
+// the hand pushed out of the body. `depth` is set to how deep the final hand is (hand_depth).
+IkResult refine_arm(const SigningRig& rig, const HandRig& h, const HandState& state, float body_margin,
+                    const SwivelSolution& arm, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
+                    HandPoints& points, float& depth) {
+  const Skeleton& s = rig.skeleton();
+  const quat wrist_rotation = wrist_rotation_for(HandFrame{vec3(), vec3(), vec3(), state.orientation},
+                                                 h.rest_frame.rotation, h.rest_wrist_rotation);
   apply_swivel_solution(s, h.swivel, arm, pose);
-  solver.swivel = arm.swivel;
 
   // Refine with damped least squares over the whole chain, clavicle included (the swivel
   // solver leaves it relaxed, and its forearm twist is one pass short of exact). The posture
@@ -192,7 +213,7 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
   // notated turn, fingers curled into the head). Move the hand straight out from the body at its
   // planned place, keeping the notated turn, a step at a time until it is clear; if nothing
   // clears it, the least deep of the tries. Rare (a few frames of a few signs in thousands).
-  float depth = hand_depth(rig, h, body_margin, pose, model, points);
+  depth = hand_depth(rig, h, body_margin, pose, model, points);
   if (depth > kEscapeTolerance) {
     local_to_model(s, pose, model);
     vec3 out(0, 0, 1);
@@ -213,7 +234,82 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
       }
     best.restore(pose);
     r = best_r;
+    depth = best_depth;
   }
+  return r;
+}
+
+// How far the posed hand lands from where `state` plans it: the part that meets the body for a hand
+// at the body, the palm centre in space, and its turn weighed as the solver weighs it.
+float landing_miss(const SigningRig& rig, const HandRig& h, const HandState& state, const Pose& pose,
+                   std::vector<mat4>& model, HandPoints& points) {
+  local_to_model(rig.skeleton(), pose, model);
+  const mat4& w = model[joint_slot(h.wrist)];
+  float place = glm::distance(vec3(w * vec4(h.palm_centre_local, 1.0f)), state.position);
+  if (state.at_body) {
+    hand_surface_points(rig, h.hand, model, points);
+    std::size_t contact = 0;
+    const vec3 planned = planned_contact(rig, h.hand, state, model, points, contact);
+    place = glm::distance(planned, points[contact]);
+  }
+  const float turn =
+      glm::length(rotation_error(glm::normalize(glm::quat_cast(mat3(w))), planned_wrist_rotation(rig, h.hand, state)));
+  return place + glm::mix(kSpaceTurnWeight, kBodyTurnWeight, state.body_weight) * turn;
+}
+
+}  // namespace
+
+HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
+                           bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
+                           HandPoints& points) {
+  const HandRig& h = rig.hand(hand);
+  SwivelPreference prefer;
+  prefer.previous = solver.swivel;
+  prefer.search_circle = search_circle;
+  SwivelSolution arm = seed_arm(rig, h, state, prefer, pose);
+  float continued_depth = 0.0f;
+  IkResult r = refine_arm(rig, h, state, body_margin, arm, solver, pose, model, points, continued_depth);
+
+  // Continuing last frame's elbow keeps the arm on one solution, but where that solution cannot
+  // make the place and turn (the elbow low while the hand must point down above the other hand)
+  // it would hold the hand centimetres off for the rest of the sign, and where the hand lands
+  // would depend on where the arm came from. The posture is then also solved from the start a
+  // hand without history takes (the whole elbow circle searched), and that one kept when it
+  // lands clearly nearer: where a hand lands does not depend on what it did before.
+  if (prefer.previous) {
+    const float miss = landing_miss(rig, h, state, pose, model, points);
+    // (A hand touching the body is within the margin of it: only a hand really inside counts.)
+    const bool inside = continued_depth > body_margin + kEscapeTolerance;
+    if (miss > kLandingTolerance || inside) {
+      SwivelPreference fresh_prefer;
+      fresh_prefer.previous.reset();
+      fresh_prefer.search_circle = true;
+      const ArmSnapshot continued(h.arm, pose);
+      const SwivelSolution fresh = seed_arm(rig, h, state, fresh_prefer, pose);
+      bool keep_fresh = false;
+      IkResult fresh_r;
+      if (std::abs(wrap_angle(fresh.swivel - arm.swivel)) > kSameElbow) {
+        float fresh_depth = 0.0f;
+        fresh_r = refine_arm(rig, h, state, body_margin, fresh, solver, pose, model, points, fresh_depth);
+        // Kept when it lands on the plan (nearer than the continued one, no deeper in the body),
+        // or when the continued arm is in the body and this one is clearly less deep without
+        // landing further off (an arm switched near the body can be carried into it by the frames
+        // that continue it: PJM 'Suwałki' ended 4.9 cm inside until deep arms were re-solved too).
+        const float fresh_miss = landing_miss(rig, h, state, pose, model, points);
+        keep_fresh = (fresh_miss < std::min(miss - kLandingGain, kLanded) &&
+                      fresh_depth <= std::max(continued_depth, kEscapeTolerance)) ||
+                     (inside && fresh_depth < continued_depth - kEscapeTolerance &&
+                      fresh_miss <= miss + kLandingGain);
+      }
+      if (keep_fresh) {
+        arm = fresh;
+        r = fresh_r;
+      } else {
+        continued.restore(pose);
+      }
+    }
+  }
+  solver.swivel = arm.swivel;
   return HandSolveResult{r.position_error, r.orientation_error};
 }
 
@@ -221,7 +317,33 @@ HandSolveResult pose_hand(const SigningRig& rig, Hand hand, const HandState& sta
                           bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
                           HandPoints& points) {
   apply_hand_posture(rig, hand, state.shape, pose);
-  if (state.active) return solve_hand(rig, hand, state, body_margin, search_circle, solver, pose, model, points);
+  if (state.active) {
+    const HandRig& h = rig.hand(hand);
+    const ArmSnapshot last_frame(h.arm, pose);
+    const std::optional<float> last_swivel = solver.swivel;
+    HandSolveResult r = solve_hand(rig, hand, state, body_margin, search_circle, solver, pose, model, points);
+    if (r.position_error <= kLostHand) return r;
+    // Near the ends of the joint ranges (a hand beside the ear, the elbow fully bent, a turn the
+    // wrist cannot make) continuing last frame's elbow swivel can lead the solver astray: a hand
+    // leaving the ear ended 40 cm off, then behind the head. Such a frame looks round the whole
+    // elbow circle afresh and, if that is no nearer, the arm keeps last frame's posture for it
+    // (unless that puts the hand in the body). Rare: the normal frame pays nothing for this.
+    solver.swivel.reset();
+    r = solve_hand(rig, hand, state, body_margin, true, solver, pose, model, points);
+    if (r.position_error <= kLostHand) return r;
+    local_to_model(rig.skeleton(), pose, model);
+    const float now = glm::distance(vec3(model[joint_slot(h.wrist)] * vec4(h.palm_centre_local, 1.0f)), state.position);
+    const ArmSnapshot solved(h.arm, pose);
+    last_frame.restore(pose);
+    local_to_model(rig.skeleton(), pose, model);
+    const float before = glm::distance(vec3(model[joint_slot(h.wrist)] * vec4(h.palm_centre_local, 1.0f)), state.position);
+    if (before < now && hand_depth(rig, h, body_margin, pose, model, points) <= kEscapeTolerance) {
+      solver.swivel = last_swivel;
+      return HandSolveResult{before, r.orientation_error};
+    }
+    solved.restore(pose);
+    return r;
+  }
   for (int j : rig.hand(hand).arm.joints) pose.rotations[joint_slot(j)] = rig.rest.rotations[joint_slot(j)];
   solver.swivel.reset();
   return {};

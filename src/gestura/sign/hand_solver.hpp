@@ -1,6 +1,9 @@
 #pragma once
 // Putting one hand where a HandState says: the arm by the analytic swivel solver (a natural elbow,
 // joint limits respected), refined by damped least squares, then pushed out of the collision body.
+// The elbow continues last frame's; where that elbow cannot put the hand on its plan (over 1 cm
+// off), the posture is also solved as a hand without history would be, and the one that lands
+// nearer kept: where a hand lands depends on its plan, hardly on where the arm came from.
 // One frame of perform_plan, and what the sentence layer uses to solve a single posture, so both
 // solve exactly the same problem.
 #include <optional>

@@ -60,8 +60,11 @@ HandState sample_hand(const HandTimeline& timeline, float t) {
   for (const Movement& m : seg.paths) out.position += sample(m, u * m.duration).position;
   out.position += seg.detour * std::sin(kPi * s);
   if (seg.oscillation != Oscillation::None && seg.oscillation_cycles > 0) {
-    // Envelope so the oscillation starts and ends at rest.
-    const float envelope = std::sin(kPi * u);
+    // Envelope so the oscillation starts and ends at rest: it rises over the first quarter cycle
+    // and falls over the last, so that every swing between reaches full size (a sine envelope over
+    // the whole segment left a two-cycle wag at 70 % in its middle swings and less at its ends).
+    const float ramp = 0.25f / seg.oscillation_cycles;
+    const float envelope = std::sin(0.5f * kPi * std::clamp(std::min(u, 1.0f - u) / ramp, 0.0f, 1.0f));
     const float wave = std::sin(2 * kPi * seg.oscillation_cycles * u) * envelope;
     const vec3 local_axis = seg.oscillation == Oscillation::Nod     ? vec3(1, 0, 0)
                             : seg.oscillation == Oscillation::Swing ? vec3(0, 0, 1)

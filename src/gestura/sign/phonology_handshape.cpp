@@ -29,9 +29,21 @@ constexpr FingerFlexion kStraight = flex(0, 0, 0);
 // ~2 cm from the palm plane (at 0° abduction the avatar's thumb stands 4–6 cm out of it, which held
 // a flat palm 5–10 cm off the chest it should touch).
 constexpr ThumbPose kThumbAlongside = thumb(0, -15, 0, 8, 5);
+// Alongside a fist (ASL A, the HamNoSys fist): the curled index stands ~4 cm in front of the palm,
+// so the thumb comes forward with it (radial extension, MCP and IP bent) and lies against the
+// index's side, its tip level with the top of the fist (~2.5 cm above the index knuckle). The flat
+// hand's thumb held straight up there stood 4 cm above the knuckles: a thumbs-up, not an A.
+constexpr ThumbPose kThumbAlongsideFist = thumb(-20, -5, 0, 40, 20);
 // Across: metacarpal swung toward the little finger and pronated so the pad lies over the middle
-// phalanges of the curled index/middle (ASL S, 1, U).
+// phalanges of the curled index/middle (ASL 1, U, the HamNoSys thumb-across modifier). On the
+// avatar it runs low, across the fingertips, and its tip stands 1 cm past the little finger.
 constexpr ThumbPose kThumbAcross = thumb(40, 22, 42, 32, 22);
+// Across the fist of ASL S as a signer makes it: less CMC flexion, the phalanges bent over the
+// fingers, the pad on the middle phalanges of the index and middle fingers, the tip at the middle or
+// ring finger. Only S takes it so far: given to every thumb-across shape, it left 5 more of the
+// 4,070 signs of the lexicon sweep turned over 25° (236, ratchet 231): the planner's hand points
+// include the thumb tip, and the sign layer has yet to be measured with it.
+constexpr ThumbPose kThumbAcrossFist = thumb(10, 25, 30, 50, 35);
 // Across the palm under straight fingers (ASL B, 4): more CMC flexion, less abduction, since the
 // thumb must fit between the palm and the extended fingers.
 constexpr ThumbPose kThumbInPalm = thumb(45, 10, 40, 40, 20);
@@ -136,7 +148,7 @@ HandPosture basic_handshape(BasicHandshape shape) {
   const FingerFlexion* c = kCurled;
   switch (shape) {
     case BasicHandshape::Fist:
-      return with(kThumbAlongside, c[0], c[1], c[2], c[3]);
+      return with(kThumbAlongsideFist, c[0], c[1], c[2], c[3]);
     case BasicHandshape::Flat:
       return with(kThumbAlongside, kStraight, kStraight, kStraight, kStraight);
     case BasicHandshape::Finger2:
@@ -306,7 +318,7 @@ HandPosture asl_handshape(AslHandshape shape) {
       return h;
     }
     case AslHandshape::S:
-      return with(kThumbAcross, c[0], c[1], c[2], c[3]);
+      return with(kThumbAcrossFist, c[0], c[1], c[2], c[3]);
     case AslHandshape::T:
       // Index hooked over the thumb, whose tip sits between index and middle.
       return with(thumb(25, 30, 35, 20, 5), flex(65, 85, 35), c[1], c[2], c[3]);

@@ -17,6 +17,7 @@ struct ReadSign {
   std::optional<HamSign> sign;
   std::vector<NonManual> nonmanual;
   std::string error;  // when there is no sign
+  bool clip = false;  // a clip sign: a recorded motion, no notation to parse
 };
 
 // Counts the signs in file order. Synthesis (the costly step, ~10 ms a sign) runs on every core a
@@ -42,6 +43,11 @@ void count_signs(CheckReport& report, const std::vector<ReadSign>& signs, const 
       }
       ++report.signs;
       const ReadSign& s = signs[i];
+      if (s.clip) {
+        ++report.clips;
+        report.notes.push_back(s.place + ": clip sign (keyframed motion, no notation to check)");
+        continue;
+      }
       if (!s.sign) {
         ++report.failed;
         report.failures.push_back(s.place + ": " + s.error);
@@ -97,6 +103,13 @@ CheckReport check_jsonl(std::string_view text, std::string_view file_name, const
     const auto names = j.find("names");
     const bool have_unicode = ham != j.end() && ham->is_string() && !ham->get_ref<const std::string&>().empty();
     const bool have_names = names != j.end() && names->is_string() && !names->get_ref<const std::string&>().empty();
+    if (const auto clip = j.find("clip_base64"); !have_unicode && !have_names && clip != j.end() && clip->is_string() &&
+                                                 !clip->get_ref<const std::string&>().empty()) {
+      ReadSign r{std::move(place), std::nullopt, {}, {}};
+      r.clip = true;
+      signs.push_back(std::move(r));
+      continue;
+    }
     if (!have_unicode && !have_names) {
       signs.push_back(unreadable(std::move(place), "no `hamnosys` (or `names`) string"));
       continue;

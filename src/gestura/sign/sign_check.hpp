@@ -33,6 +33,7 @@ struct CheckReport {
   int parsed = 0;
   int synthesized = 0;
   int failed = 0;                     // not parsed, or parsed but synthesis failed
+  int clips = 0;                      // clip signs (keyframed motion, no notation): listed in notes, not parsed
   std::vector<std::string> failures;  // one line per failing sign: "file:line: gloss: reason"
   std::vector<std::string> descriptions;  // "file:line: gloss: <describe(sign)>" when asked for
   // What the lenient parser accepted although the standard does not (a group left open, a modifier

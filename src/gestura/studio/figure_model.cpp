@@ -9,6 +9,7 @@
 
 #include "gestura/core/error.hpp"
 #include "gestura/core/staged_file.hpp"
+#include "gestura/core/utf8.hpp"
 #include "gestura/io/bvh.hpp"
 
 namespace gestura::studio {
@@ -64,26 +65,52 @@ nlohmann::json dofs_json(const Skeleton& s, std::size_t j) {
   return o;
 }
 
+// Angles (degrees) and lengths in a figure file, as any value of a skeleton file (kBvhMaxMagnitude):
+// past float's range a number would become infinite and be saved as null, a file the editor
+// could not read back.
+constexpr double kMaxFigureNumber = kBvhMaxMagnitude;
+
+bool figure_number(const nlohmann::json& v) { return v.is_number() && std::abs(v.get<double>()) <= kMaxFigureNumber; }
+
 vec3 vec3_field(const nlohmann::json& o, const char* key, const std::string& where) {
   const auto it = o.find(key);
-  if (it == o.end() || !it->is_array() || it->size() != 3 || !(*it)[0].is_number() || !(*it)[1].is_number() || !(*it)[2].is_number())
-    throw Error(where + ": '" + key + "' must be three numbers");
+  if (it == o.end() || !it->is_array() || it->size() != 3 || !figure_number((*it)[0]) || !figure_number((*it)[1]) ||
+      !figure_number((*it)[2]))
+    throw Error(where + ": '" + key + "' must be three numbers of magnitude at most 1e7");
   return vec3((*it)[0].get<float>(), (*it)[1].get<float>(), (*it)[2].get<float>());
 }
 
 float number_field(const nlohmann::json& o, const char* key, const std::string& where) {
   const auto it = o.find(key);
-  if (it == o.end() || !it->is_number()) throw Error(where + ": '" + key + "' must be a number");
+  if (it == o.end() || !figure_number(*it)) throw Error(where + ": '" + key + "' must be a number of magnitude at most 1e7");
   return it->get<float>();
 }
 
-void apply_sidecar(Skeleton& s, const std::string& path) {
+// An optional text field (nlohmann's value() throws its own type_error for a value of another type).
+std::string text_field(const nlohmann::json& o, const char* key, const char* fallback, const std::string& where) {
+  const auto it = o.find(key);
+  if (it == o.end()) return fallback;
+  if (!it->is_string()) throw Error(where + ": '" + key + "' must be a string");
+  return it->get<std::string>();
+}
+
+std::string read_whole(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return;  // a plain BVH
+  if (!in) throw Error(path + ": cannot open the file");
   std::ostringstream text;
   text << in.rdbuf();
-  const nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
-  if (j.is_discarded() || !j.is_object() || !j.contains("joints") || !j["joints"].is_object())
+  if (in.bad()) throw Error(path + ": cannot read the file");
+  return text.str();
+}
+
+void apply_sidecar(Skeleton& s, std::string_view text, const std::string& path) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number past a double
+    throw Error(SourceLocation{path}, std::string("not a figure file: ") + e.what());
+  }
+  if (!j.is_object() || !j.contains("joints") || !j["joints"].is_object())
     throw Error(SourceLocation{path}, "not a figure file (a JSON object with \"joints\")");
   for (const auto& [name, o] : j["joints"].items()) {
     const std::string where = path + ": joint '" + name + "'";
@@ -91,10 +118,10 @@ void apply_sidecar(Skeleton& s, const std::string& path) {
     if (joint < 0) throw Error(where + " is not in the skeleton file");
     if (!o.is_object()) throw Error(where + " must be an object");
     JointDofs d;
-    const auto order = parse_rotation_order(o.value("order", std::string("XYZ")));
+    const auto order = parse_rotation_order(text_field(o, "order", "XYZ", where));
     if (!order) throw Error(where + ": 'order' must be one of XYZ XZY YXZ YZX ZXY ZYX");
     d.order = *order;
-    const std::string axes = o.value("axes", std::string());
+    const std::string axes = text_field(o, "axes", "", where);
     for (const char c : axes) {
       if (c < 'x' || c > 'z') throw Error(where + ": 'axes' may hold only x, y and z");
       d.axes |= static_cast<std::uint8_t>(1u << (c - 'x'));
@@ -118,8 +145,17 @@ std::string figure_sidecar_path(const std::string& bvh_path) {
   return std::filesystem::path(bvh_path).replace_extension(".figure.json").string();
 }
 
-void save_figure(const std::string& path, const Skeleton& skeleton) {
+FigureTexts write_figure(const Skeleton& skeleton, const std::string& bvh_file_name) {
   skeleton.validate();
+  // The sidecar is JSON, whose text is UTF-8: a name from a BVH in another encoding cannot be
+  // written there (the editor renames it; load refuses nothing so the figure can be repaired).
+  for (std::size_t j = 0; j < skeleton.size(); ++j) {
+    try {
+      utf8::validate(skeleton.names[j]);
+    } catch (const Error& e) {
+      throw Error("joint " + std::to_string(j) + "'s name is not UTF-8 text (" + e.what() + "): rename it before saving");
+    }
+  }
   const std::size_t n = skeleton.size();
   BvhFile bvh;
   bvh.skeleton = skeleton;
@@ -141,16 +177,21 @@ void save_figure(const std::string& path, const Skeleton& skeleton) {
     for (const int axis : axes_of(skeleton.dofs[j].order)) c.push(static_cast<BvhChannel>(static_cast<int>(BvhChannel::Xrotation) + axis));
     bvh.clip.rotations[j].add(0.0f, skeleton.rest_rotations[j]);
   }
-  nlohmann::json side{{"format", "gestura figure"}, {"version", 1}, {"skeleton", std::filesystem::path(path).filename().string()}};
+  nlohmann::json side{{"format", "gestura figure"}, {"version", 1}, {"skeleton", bvh_file_name}};
   nlohmann::json& joints = side["joints"] = nlohmann::json::object();
   for (std::size_t j = 0; j < n; ++j) joints[skeleton.names[j]] = dofs_json(skeleton, j);
-  const std::string text = write_bvh(bvh);
-  write_file_atomically(figure_sidecar_path(path), side.dump(1) + "\n");
-  write_file_atomically(path, text);
+  return FigureTexts{write_bvh(bvh), side.dump(1) + "\n"};
 }
 
-Skeleton load_figure(const std::string& path) {
-  BvhFile bvh = load_bvh(path);
+void save_figure(const std::string& path, const Skeleton& skeleton) {
+  const FigureTexts texts = write_figure(skeleton, std::filesystem::path(path).filename().string());
+  write_file_atomically(figure_sidecar_path(path), texts.sidecar);
+  write_file_atomically(path, texts.bvh);
+}
+
+Skeleton read_figure(std::string_view bvh_text, const std::string& bvh_source,
+                     std::optional<std::string_view> sidecar_text, const std::string& sidecar_source) {
+  BvhFile bvh = read_bvh(bvh_text, bvh_source);
   Skeleton s = bvh.skeleton;
   const std::size_t n = s.size();
   for (std::size_t j = 0; j < n; ++j) {
@@ -164,9 +205,21 @@ Skeleton load_figure(const std::string& path) {
     d.min_angle = vec3(-glm::pi<float>()), d.max_angle = vec3(glm::pi<float>());
     s.dofs[j] = d;
   }
-  apply_sidecar(s, figure_sidecar_path(path));
-  s.validate();
+  if (sidecar_text) apply_sidecar(s, *sidecar_text, sidecar_source);
+  try {
+    s.validate();
+  } catch (const Error& e) {
+    throw Error((sidecar_text ? sidecar_source : bvh_source) + ": " + e.what());
+  }
   return s;
+}
+
+Skeleton load_figure(const std::string& path) {
+  const std::string bvh = read_whole(path);
+  const std::string sidecar_path = figure_sidecar_path(path);
+  std::optional<std::string> sidecar;
+  if (std::filesystem::exists(sidecar_path)) sidecar = read_whole(sidecar_path);  // else a plain BVH
+  return read_figure(bvh, path, sidecar ? std::optional<std::string_view>(*sidecar) : std::nullopt, sidecar_path);
 }
 
 FigureEditor::FigureEditor(Skeleton skeleton) : skeleton_(std::move(skeleton)) {}

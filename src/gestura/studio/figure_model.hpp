@@ -11,6 +11,7 @@
 // present; a BVH from elsewhere loads with every axis free.
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gestura/skeleton/skeleton.hpp"
@@ -80,5 +81,17 @@ std::string figure_sidecar_path(const std::string& bvh_path);
 // Reads a skeleton file as FigureEditor::load does. Throws gestura::Error.
 Skeleton load_figure(const std::string& path);
 void save_figure(const std::string& path, const Skeleton& skeleton);
+
+// The same from and to text (what the two functions above read and write; also what the fuzz
+// target drives). `bvh_source` and `sidecar_source` name the texts in errors; without a sidecar
+// every axis with a rotation channel is free, in the file's rotation order.
+Skeleton read_figure(std::string_view bvh_text, const std::string& bvh_source,
+                     std::optional<std::string_view> sidecar_text, const std::string& sidecar_source);
+struct FigureTexts {
+  std::string bvh;      // the skeleton file
+  std::string sidecar;  // its .figure.json
+};
+// `bvh_file_name` is recorded in the sidecar ("skeleton"). Throws gestura::Error on an invalid skeleton.
+FigureTexts write_figure(const Skeleton& skeleton, const std::string& bvh_file_name);
 
 }  // namespace gestura::studio

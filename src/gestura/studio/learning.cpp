@@ -29,6 +29,30 @@ std::string names_of(const nlohmann::json& j) {
 
 }  // namespace
 
+Topic user_topic(std::span<const SignEntry> entries) {
+  Topic topic{kUserTopic, {}, {}};
+  for (const SignEntry& e : entries) {
+    LessonWord w{e.gloss, e.language, {}, {}, {}, e.variant, false};
+    for (const Keyword& k : e.keywords) w.keywords.push_back(k.word);
+    if (e.notation_kind == NotationKind::clip) {
+      w.clip_sign = true;
+      w.names = "(none: a clip sign)";
+      w.description = "A keyframed sign, made in the studio's timeline editor; `gestura say` plays it in sentences.";
+    } else if (e.notation_kind == NotationKind::hamnosys) {
+      try {
+        for (const sign::Symbol s : sign::symbols_from_unicode(e.notation))
+          w.names += (w.names.empty() ? "" : ",") + std::string(sign::symbol_name(s));
+      } catch (const Error&) {
+        continue;  // notation that does not decode is not a lesson
+      }
+    } else {
+      continue;
+    }
+    topic.words.push_back(std::move(w));
+  }
+  return topic;
+}
+
 std::vector<Topic> load_topics(const std::vector<std::string>& lexicon_files, const std::string& sentences_json) {
   std::vector<Topic> topics;
   std::map<std::string, std::size_t> index;

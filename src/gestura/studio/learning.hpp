@@ -4,14 +4,19 @@
 // quiz in which the avatar signs a word of the topic and the learner picks it among a few.
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
+
+#include "gestura/lexicon/sign_entry.hpp"
 
 namespace gestura::studio {
 
 struct LessonWord {
   std::string gloss, language, names, description;
   std::vector<std::string> keywords;
+  int variant = 1;
+  bool clip_sign = false;  // a keyframed sign (no notation): played from its recorded motion
 };
 
 struct Topic {
@@ -25,6 +30,11 @@ struct Topic {
 // they first appear; words without a category go to "other". Throws gestura::Error naming the file
 // and line for unreadable input.
 std::vector<Topic> load_topics(const std::vector<std::string>& lexicon_files, const std::string& sentences_json);
+// The name of the topic that holds the user's own signs.
+inline constexpr const char* kUserTopic = "your signs";
+// The user's lexicon as one topic, kUserTopic: its HamNoSys signs and its clip signs (keyframed in
+// the timeline editor) alike; SiGML entries are left out. Empty words when there are none.
+Topic user_topic(std::span<const SignEntry> entries);
 // data/learning/sentences.json beside the built-in lexicon's folder (empty when there is none).
 std::string default_sentences_file(const std::vector<std::string>& lexicon_files);
 

@@ -23,7 +23,7 @@ const std::map<std::string, Arity>& actions() {
       {"camera", {1, 1}},        {"time", {1, 1}},          {"play", {0, 0}},          {"pause", {0, 0}},
       {"wait", {1, 1}},          {"import", {1, 1}},        {"export", {1, 1}},        {"recover", {0, 0}},
       {"discard-recovery", {0, 0}}, {"screenshot", {1, 1}}, {"dump", {1, 1}},          {"kill", {0, 0}},
-      {"quit", {0, 0}},          {"mode", {1, 1}},          {"topic", {1, 1}},         {"word", {1, 1}},
+      {"quit", {0, 0}},          {"mode", {1, 1}},          {"topic", {1, 1, true}},         {"word", {1, 1}},
       {"sentence", {1, 1, true}}, {"quiz", {1, 1}},         {"answer", {1, 1}},        {"next-question", {0, 0}},
       {"views", {1, 1}},         {"speed", {1, 1}},         {"export-sign", {1, 1}},
       {"pose-joint", {1, 1}},    {"pose-angles", {3, 3}},   {"pose-hand", {2, 2}},     {"pose-mirror", {0, 0}},
@@ -34,7 +34,7 @@ const std::map<std::string, Arity>& actions() {
       {"timeline-say", {1, 1, true}}, {"timeline-sign", {0, 0}}, {"timeline-clear", {0, 0}}, {"key-pose", {0, 1}},
       {"key", {3, 3}},           {"move-key", {3, 3}},      {"move-keys-at", {2, 2}},  {"key-interp", {3, 6}},
       {"bar-duration", {2, 2}},  {"export-timeline", {1, 1}}, {"save-clip-sign", {1, 2}}, {"loop", {1, 1}},
-      {"timeline-zoom", {1, 1}}, {"strip-zoom", {1, 1}},
+      {"timeline-zoom", {1, 1}}, {"strip-zoom", {1, 1}}, {"where-key", {3, 3}}, {"wait-file", {1, 1}},
       // figure editor
       {"figure-joint", {1, 1}},  {"figure-rename", {1, 1}}, {"figure-add", {4, 4}},    {"figure-remove", {0, 0}},
       {"figure-copy", {0, 0}},   {"figure-mirror", {0, 0}}, {"figure-offset", {3, 3}}, {"figure-limits", {3, 3}},

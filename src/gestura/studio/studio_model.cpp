@@ -75,6 +75,16 @@ std::vector<BrowseRow> StudioModel::browse(const BrowseFilter& filter, std::size
   return rows;
 }
 
+std::vector<SignEntry> StudioModel::user_signs() {
+  if (!user_) return {};
+  try {
+    return user_->list();
+  } catch (const std::exception& e) {
+    status_ = std::string("cannot read the lexicon: ") + e.what();
+    return {};
+  }
+}
+
 std::optional<BrowseRow> StudioModel::find(const EntryKey& key) {
   try {
     if (user_)

@@ -50,6 +50,10 @@ class StudioModel {
   UndoStack& history() { return history_; }
 
   std::vector<BrowseRow> browse(const BrowseFilter& filter, std::size_t limit = 2000);
+  // The signs of the user's lexicon (empty when it could not be opened).
+  std::vector<SignEntry> user_signs();
+  // The built-in and user lexicons as one (what `gestura say` signs from).
+  LayeredLexicon& lexicon() { return layers_; }
   std::optional<BrowseRow> find(const EntryKey& key);
 
   // ---- edits (each one undoable) ----

@@ -1,8 +1,7 @@
 #include "gestura/studio/timeline_clip_sign.hpp"
 
-#include "gestura/compress/compress.hpp"
-#include "gestura/compress/decompress_clip.hpp"
 #include "gestura/core/error.hpp"
+#include "gestura/lexicon/clip_sign.hpp"
 #include "gestura/lexicon/lexicon.hpp"
 
 namespace gestura::studio {
@@ -13,7 +12,7 @@ SignEntry clip_sign_entry(const std::string& gloss, const std::string& language,
   e.gloss = gloss;
   e.language = language.empty() ? "ase" : language;
   e.notation_kind = NotationKind::clip;
-  e.clip = compress(clip, skeleton).bytes();
+  e.clip = encode_clip_sign(clip, skeleton);
   e.source = "gestura studio timeline";
   return e;
 }
@@ -24,8 +23,7 @@ void store_clip_sign(const std::string& db_path, const SignEntry& entry) {
 }
 
 Clip clip_of(const SignEntry& entry) {
-  if (entry.notation_kind != NotationKind::clip) throw Error("sign '" + entry.gloss + "' is not a clip sign");
-  return decompress_clip(CompressedClip::from_bytes(entry.clip, "clip sign '" + entry.gloss + "'"), entry.gloss);
+  return decode_clip_sign(entry);
 }
 
 }  // namespace gestura::studio

@@ -1,6 +1,7 @@
 #pragma once
 // A keyframed sign kept in the lexicon as a clip sign (notation_kind 'clip'): the timeline's baked
-// motion compressed as a .gcl (compress/compressed_clip.hpp) in the row's clip blob.
+// motion, joints as a .gcl and its face channels beside them (lexicon/clip_sign.hpp), in the row's
+// clip blob. The sentence layer plays it like any other sign (sentence/clip_sign_motion.hpp).
 #include <string>
 
 #include "gestura/anim/clip.hpp"
@@ -15,7 +16,8 @@ SignEntry clip_sign_entry(const std::string& gloss, const std::string& language,
 // Writes it into the lexicon at `db_path` in one transaction, replacing the same gloss, language
 // and variant. Throws gestura::Error (a locked or read-only database, a full disk) with nothing written.
 void store_clip_sign(const std::string& db_path, const SignEntry& entry);
-// The motion of a clip sign. Throws gestura::Error naming the gloss when the blob does not decode.
+// The motion of a clip sign, face channels included. Throws gestura::Error naming the gloss when
+// the blob does not decode.
 Clip clip_of(const SignEntry& entry);
 
 }  // namespace gestura::studio

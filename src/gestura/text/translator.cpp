@@ -583,8 +583,12 @@ class SentenceTranslator {
           return std::pair{*gloss, lemma == l ? std::string("a WordNet lemma") : "WordNet lemma " + quoted(lemma)};
       return std::nullopt;
     };
-    // A verb takes its WordNet lemma first (left → LEAVE, leaves → LEAVE, not LEFT or LEAF).
-    if (pos == english::PartOfSpeech::verb)
+    // A verb takes its WordNet lemma first (left → LEAVE, leaves → LEAVE, not LEFT or LEAF). A
+    // participle that is not its clause's verb ("I am tired", "she looks worried") is used as an
+    // adjective: a form the lexicon lists keeps its own sign (TIRED, not WHEEL by the lemma 'tire').
+    const bool adjectival = p && pos == english::PartOfSpeech::verb && p->role != english::Role::verb &&
+                            p->tag.ends_with(".v-d") && in_adjective_phrase(parse_.tree, p->tag);
+    if (pos == english::PartOfSpeech::verb && !adjectival)
       if (const auto found = by_wordnet()) return sign(w, found->first, quoted(w.text) + " → " + found->first + ": " + as + found->second);
     // A form the lexicon lists as written ("glasses", "hearing", "news", "oranges") keeps its own
     // sign; other forms are looked up by their lemma.
@@ -607,6 +611,22 @@ class SentenceTranslator {
             return sign(w, *gloss, quoted(w.text) + " → " + *gloss + ": " + as + "WordNet synonym " + quoted(other) +
                                        " (its most frequent sense)");
     fingerspell(w, "no sign in the lexicon");
+  }
+
+  // Whether the constituent that directly holds the word `tag` in a one-line tree is an ADJP
+  // ("(VP am.v (ADJP (ADVP very.e) tired.v-d))"), not a VP ("(VP tired.v-d and.v-fill left.v-d)").
+  static bool in_adjective_phrase(std::string_view tree, std::string_view tag) {
+    for (std::size_t at = tree.find(tag); at != std::string_view::npos; at = tree.find(tag, at + 1)) {
+      int depth = 0;
+      for (std::size_t k = at; k-- > 0;) {
+        if (tree[k] == ')') ++depth;
+        if (tree[k] == '(' && depth-- == 0) {
+          if (tree.substr(k + 1, 5) == "ADJP ") return true;
+          break;
+        }
+      }
+    }
+    return false;
   }
 
   bool sentence_initial_word(const Word& w) const { return first_word_ < w_.size() && &w == &w_[first_word_]; }

@@ -1,0 +1,43 @@
+#pragma once
+// A clip sign (a keyframed sign from the studio's timeline, lexicon/clip_sign.hpp) made ready for an
+// utterance like a notated sign's cached citation form (sign_motion_cache.hpp): its hands' joint
+// rotations sampled at the citation rate, and a plan read back from them by forward kinematics
+// (where each palm is and how it is turned), so the utterance reaches the clip's first posture and
+// leaves its last by the same transitions as any sign, on the one TwoHandTimeline. A hand the clip
+// does not move stays out of it (it rests, or waits low in front, as for a one-handed sign). Its
+// face channels are laid over the utterance's at the sign's time (add_clip_sign_face).
+#include <memory>
+#include <string_view>
+
+#include "gestura/anim/clip.hpp"
+#include "gestura/sentence/sign_motion_cache.hpp"
+
+namespace gestura {
+
+struct ClipSignMotion {
+  CitationMotion motion;  // time 0 at the clip's start; movement() = the clip's duration
+  Clip face;              // the clip's scalar channels only (visemes, expressions, brows)
+};
+
+// A hand counts as moved by the clip when one of its joints turns this far from the skeleton's rest.
+inline constexpr float kClipHandMovedDegrees = 3.0f;
+
+// Contract: `rig` is the avatar's the clip was made on. Throws gestura::Error naming `gloss` for a
+// clip whose joints are not the rig's skeleton's, or one that moves neither hand.
+std::unique_ptr<ClipSignMotion> clip_sign_motion(const Clip& clip, const SigningRig& rig, std::string_view gloss);
+
+// Where one clip sign sits in an utterance (as its CachedSignSpan): citation time
+// c = clamp((t − moving) · tempo, 0, duration) on [start, end].
+struct ClipSignFace {
+  const Clip* face = nullptr;
+  float start = 0.0f, moving = 0.0f, end = 0.0f, tempo = 1.0f;
+};
+
+// Seconds over which a clip sign's face fades in before its start and out after its end.
+inline constexpr float kClipFaceFade = 0.12f;
+
+// Adds the clip sign's face channels to `out`'s (added to what is there, kept in 0..1), keyed at
+// `fps` over the sign and its fades; keys of `out` elsewhere are kept.
+void add_clip_sign_face(const ClipSignFace& sign, float fps, Clip& out);
+
+}  // namespace gestura
