@@ -33,19 +33,19 @@
 
 namespace gestura {
 
-class CitationStore {
+class CitationStore final : public CitationKeeper {
  public:
   // Opens (or creates) the database at `path`. Never throws: what failed is in problem().
   CitationStore(const std::string& path, const SigningRig& rig);
-  ~CitationStore();
+  ~CitationStore() override;
   CitationStore(const CitationStore&) = delete;
   CitationStore& operator=(const CitationStore&) = delete;
 
   // The form (plan and motion) stored under `key` for this avatar and solver; empty when none is
   // (or it cannot be read whole).
-  std::unique_ptr<CitationMotion> load(std::string_view key);
+  std::unique_ptr<CitationMotion> load(std::string_view key) override;
   // Stores `motion` under `key`; skipped when the store cannot write.
-  void save(std::string_view key, const CitationMotion& motion);
+  void save(std::string_view key, const CitationMotion& motion) override;
 
   bool readable() const { return db_ != nullptr; }
   bool writable() const { return db_ != nullptr && writable_; }

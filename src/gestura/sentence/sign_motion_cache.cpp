@@ -5,7 +5,6 @@
 #include <cstring>
 
 #include "gestura/core/error.hpp"
-#include "gestura/sentence/citation_store.hpp"
 #include "gestura/sign/hand_solver.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/sign_performer.hpp"
@@ -47,7 +46,7 @@ std::string posture_key(Hand hand, const HandState& s) {
 // A form an earlier process solved (sentence/citation_store.hpp), kept under `key`; nullptr when
 // there is no store or it has none.
 template <class Map>
-const CitationMotion* from_store(CitationStore* store, std::mutex& mutex, Map& signs, const std::string& key) {
+const CitationMotion* from_store(CitationKeeper* store, std::mutex& mutex, Map& signs, const std::string& key) {
   if (!store) return nullptr;
   std::unique_ptr<CitationMotion> stored = store->load(key);
   if (!stored) return nullptr;
