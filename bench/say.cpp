@@ -4,9 +4,14 @@
 // fresh signer, so every sign is planned and solved by IK first (docs/benchmarks.md).
 #include <benchmark/benchmark.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <optional>
+#include <string>
 
 #include "gestura/lexicon/lexicon_files.hpp"
+#include "gestura/sentence/citation_store.hpp"
 #include "gestura/sentence/signer.hpp"
 #include "gestura/sign/sign_performer.hpp"
 #include "gestura/text/lexicon_inventory.hpp"
@@ -76,6 +81,36 @@ void BM_SaySentenceCold(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_SaySentenceCold)->Arg(1)->Arg(0)->ArgNames({"mouthing"})->Unit(benchmark::kMillisecond);
+
+// A second `gestura say` process: a new signer whose citation forms an earlier one kept in the
+// user lexicon database (sentence/citation_store.hpp). Opening the store is timed, building the
+// signer is not.
+void BM_SaySentenceColdStored(benchmark::State& state) {
+  gestura::SayOptions options;
+  options.mouthing = state.range(0) != 0;
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("gestura-bench-citations-" + std::to_string(::getpid()) + ".sqlite")).string();
+  {
+    gestura::Signer first(world().avatar, world().layers);
+    first.keep_citations_in(path);
+    first.say(kSentence, options);
+  }
+  std::optional<gestura::Signer> signer;
+  std::size_t loaded = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    signer.reset();
+    signer.emplace(world().avatar, world().layers);
+    state.ResumeTiming();
+    signer->keep_citations_in(path);
+    benchmark::DoNotOptimize(signer->say(kSentence, options).clip.rotations.data());
+    loaded = signer->store()->loaded();
+  }
+  signer.reset();
+  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path + suffix);
+  state.counters["signs_loaded"] = static_cast<double>(loaded);
+}
+BENCHMARK(BM_SaySentenceColdStored)->Arg(1)->Arg(0)->ArgNames({"mouthing"})->Unit(benchmark::kMillisecond);
 
 // The former motion step for comparison: the same utterance plan performed with IK every frame
 // (sign_performer's perform_plan), instead of stitching cached motion.

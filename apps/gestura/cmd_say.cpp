@@ -54,7 +54,9 @@ const Registration reg{{
     "TEXT '-' (or --file -) reads standard input. Without -o the gloss timeline is printed.\n" +
         std::string(app::kMotionOutputHelp) +
         "\nHere a .png is always a 4x4 contact sheet of the sentence; .glb/.gltf carry the face morph weights.\n"
-        "Only 'ase' (ASL) has a lexicon. At most 16 KiB of text and 300 glosses per call: split longer text.",
+        "Only 'ase' (ASL) has a lexicon. At most 16 KiB of text and 300 glosses per call: split longer text.\n"
+        "Each sign's joint motion, once solved, is kept in the user lexicon database for later runs\n"
+        "(GESTURA_CITATION_CACHE=off: solve every sign afresh).",
     prepare,
 }};
 

@@ -15,6 +15,7 @@
 #include "gestura/app/error.hpp"
 #include "gestura/app/input_file.hpp"
 #include "gestura/app/number.hpp"
+#include "gestura/app/workspace.hpp"
 #include "gestura/core/staged_file.hpp"
 #include "gestura/render/progress.hpp"
 
@@ -223,6 +224,7 @@ int main(int argc, char** argv) {
     if (!chosen) throw app::AppError(app::ErrorCategory::usage, "missing action");
     ProgressBar bar;
     app::RunContext context;
+    context.citation_store = app::user_citation_store();  // a second `gestura say` starts warm
     context.progress = [&bar](const app::ProgressUpdate& update) { bar(update); };
     return chosen->invocation.run(context);
   } catch (const CLI::CallForHelp&) {

@@ -115,6 +115,49 @@ TEST(EyeGazeAim, TheHeadTakesOnlyWhatIsBeyondTheEyes) {
   EXPECT_NEAR(angles(eyes_only, "l_eyeball_joint").x, skeleton().dofs[index("l_eyeball_joint")].max_angle[0], 1e-4f);
 }
 
+TEST(EyeGazeAim, ReadingOnlySomeJointsGivesTheSameAimAndKeepsTheBody) {
+  // The body moves (spine, neck, right arm keyed over a second); the eyes follow the right wrist
+  // and the head joins half the time. Told that gaze reads only the wrist, write_gaze computes a
+  // part of the body each frame: the result must be the same, bit for bit, and the body's tracks
+  // must come back untouched.
+  Clip body;
+  body.resize_joints(skeleton().size());
+  const char* moving[] = {"vl3", "vt6", "vc4", "skullbase", "r_shoulder", "r_elbow", "r_wrist", "l_shoulder"};
+  for (int k = 0; k < 8; ++k) {
+    QuatTrack& track = body.rotations[index(moving[k])];
+    for (int f = 0; f <= 10; ++f) {
+      const float a = 0.3f * std::sin(0.7f * static_cast<float>(f) + static_cast<float>(k));
+      track.add(0.1f * static_cast<float>(f), skeleton().rest_rotations[index(moving[k])] * glm::angleAxis(a, glm::normalize(vec3(1.0f, 0.5f * k, 0.3f))));
+    }
+  }
+  body.translations[0].add(0.0f, vec3(0.0f, 1.0f, 0.0f));
+  body.translations[0].add(1.0f, vec3(0.1f, 1.0f, 0.05f));
+  body.duration = 1.0f;
+  std::vector<float> times;
+  for (int f = 0; f <= 30; ++f) times.push_back(static_cast<float>(f) / 30.0f);
+  const std::size_t wrist = index("r_wrist");
+  auto gaze = [&](float t, std::span<const mat4> model) {
+    return GazeTarget{vec3(model[wrist][3]), 1.0f, t > 0.5f ? 0.8f : 0.0f};
+  };
+  Clip all = body, part = body;
+  write_gaze(skeleton(), times, gaze, all);
+  write_gaze(skeleton(), times, gaze, part, std::vector<int>{static_cast<int>(wrist)});
+  for (const char* name : {"l_eyeball_joint", "r_eyeball_joint", "vc4", "skullbase"}) {
+    const QuatTrack& a = all.rotations[index(name)];
+    const QuatTrack& b = part.rotations[index(name)];
+    ASSERT_EQ(a.times, b.times) << name;
+    ASSERT_EQ(a.values.size(), b.values.size()) << name;
+    for (std::size_t i = 0; i < a.values.size(); ++i) EXPECT_EQ(a.values[i], b.values[i]) << name << " key " << i;
+  }
+  EXPECT_EQ(part.rotations[index("vc4")].size(), times.size());  // the head joined
+  for (std::size_t j = 0; j < skeleton().size(); ++j) {
+    if (j == index("l_eyeball_joint") || j == index("r_eyeball_joint") || j == index("vc4") || j == index("skullbase")) continue;
+    EXPECT_EQ(part.rotations[j].values, body.rotations[j].values) << skeleton().names[j];
+    EXPECT_EQ(part.translations[j].values, body.translations[j].values) << skeleton().names[j];
+  }
+  EXPECT_THROW(write_gaze(skeleton(), times, gaze, part, std::vector<int>{9999}), Error);
+}
+
 TEST(EyeGazeAim, BadInputIsRefused) {
   Skeleton bare;
   bare.add_joint("humanoid_root", -1, vec3(0.0f));

@@ -27,6 +27,7 @@ struct RunContext {
   std::function<void(const ProgressUpdate&)> progress;  // may be empty
   std::stop_token stop;                                 // default: never stops
   Workspace* workspace = nullptr;                       // null: each run builds what it needs
+  std::string citation_store;  // for the run's own workspace: where solved signs are kept (app/workspace.hpp)
 
   void report(const std::string& stage, int done, int total) const {
     if (progress) progress({stage, done, total});

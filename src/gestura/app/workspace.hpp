@@ -3,6 +3,10 @@
 // plus the user's), and signers with their cache of performed signs. A long-lived adapter (the
 // server, the studio) keeps one Workspace for many requests; the CLI uses a fresh one per run.
 // Safe to share between threads: building is serialised, and what is built is never changed.
+//
+// Solved citation forms (sentence/citation_store.hpp) are kept on disk only when the workspace is
+// given a file for them: the CLI and the server pass user_citation_store(); a library user or a
+// test that passes nothing writes no file.
 #include <map>
 #include <memory>
 #include <mutex>
@@ -17,9 +21,17 @@
 
 namespace gestura::app {
 
+// Where the command line and the server keep solved citation forms between runs: the user lexicon
+// (default_user_lexicon_path()). Empty (solve in memory only) when GESTURA_CITATION_CACHE=off, or
+// when there is no user lexicon path (neither GESTURA_LEXICON nor HOME set).
+std::string user_citation_store();
+
 class Workspace {
  public:
-  Workspace();
+  // `citation_store`: the SQLite database where signers read the citation forms earlier runs
+  // solved and keep the ones they solve; empty: in memory only. A database that cannot be used
+  // (read-only, damaged, busy) only makes signs be solved again (sentence/citation_store.hpp).
+  explicit Workspace(std::string citation_store = {});
   ~Workspace();
   Workspace(const Workspace&) = delete;
   Workspace& operator=(const Workspace&) = delete;
@@ -36,6 +48,7 @@ class Workspace {
 
  private:
   std::mutex mutex_;
+  std::string citation_store_;
   std::map<std::string, std::unique_ptr<Avatar>> avatars_;
   std::map<std::string, std::unique_ptr<SigningRig>> rigs_;
   std::unique_ptr<DefaultLexicon> lexicon_;
@@ -50,7 +63,7 @@ class Workspace {
 class RunWorkspace {
  public:
   explicit RunWorkspace(const RunContext& context)
-      : own_(context.workspace ? nullptr : std::make_unique<Workspace>()), used_(context.workspace ? context.workspace : own_.get()) {}
+      : own_(context.workspace ? nullptr : std::make_unique<Workspace>(context.citation_store)), used_(context.workspace ? context.workspace : own_.get()) {}
   Workspace* operator->() const { return used_; }
   Workspace& operator*() const { return *used_; }
 

@@ -71,7 +71,8 @@ quat eye_rotation(const Skeleton& skeleton, int eye, std::span<const mat4> model
   return joint_rotation(skeleton, eye, angles);
 }
 
-void write_gaze(const Skeleton& skeleton, std::span<const float> times, const GazeAt& gaze, Clip& clip) {
+void write_gaze(const Skeleton& skeleton, std::span<const float> times, const GazeAt& gaze, Clip& clip,
+                std::span<const int> reads) {
   const std::array<int, 2> eyes{required_joint(skeleton, "l_eyeball_joint"), required_joint(skeleton, "r_eyeball_joint")};
   std::array<int, 2> head{skeleton.find("vc4"), skeleton.find("skullbase")};  // required once the head joins
   const std::array<float, 2> head_share{kNeckShare, 1.0f - kNeckShare};
@@ -79,38 +80,99 @@ void write_gaze(const Skeleton& skeleton, std::span<const float> times, const Ga
   if (clip.joint_count() != skeleton.size())
     throw Error("clip '" + clip.name + "' has tracks for " + std::to_string(clip.joint_count()) +
                 " joints, the skeleton has " + std::to_string(skeleton.size()));
+  for (int j : reads)
+    if (j < 0 || static_cast<std::size_t>(j) >= skeleton.size()) throw Error("eye gaze reads joint " + std::to_string(j) + ", which the skeleton lacks");
 
   // The body without the eyes' old keys: they must not steer their own aim.
   for (int e : eyes) clip.rotations[static_cast<std::size_t>(e)] = {};
-  const Pose rest = rest_pose(skeleton);
-  std::vector<mat4> bind(skeleton.size()), model(skeleton.size());
-  local_to_model(skeleton, rest, bind);
+
+  // The pose is computed for the joints the aim needs: the eyes, the head and what `gaze` reads,
+  // with their ancestors (a fifth of the body for the hands' gaze of a sentence); all of them
+  // when `reads` is empty. They form a skeleton of their own, in the same order, whose clip borrows
+  // the body clip's tracks (moved, given back below), so sampling and local_to_model run as they
+  // would on the whole body and give the same numbers.
+  const std::size_t n = skeleton.size();
+  std::vector<char> needed(n, reads.empty() ? 1 : 0);
+  for (int j : eyes) needed[static_cast<std::size_t>(j)] = 1;
+  for (int j : head)
+    if (j >= 0) needed[static_cast<std::size_t>(j)] = 1;
+  for (int j : reads) needed[static_cast<std::size_t>(j)] = 1;
+  for (std::size_t j = n; j-- > 0;)
+    if (needed[j] && skeleton.parents[j] >= 0) needed[static_cast<std::size_t>(skeleton.parents[j])] = 1;
+  std::vector<int> part;                // part joint → body joint
+  std::vector<int> index(n, -1);        // body joint → part joint
+  Skeleton sub;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!needed[j]) continue;
+    index[j] = static_cast<int>(part.size());
+    part.push_back(static_cast<int>(j));
+    const int parent = skeleton.parents[j];
+    sub.parents.push_back(static_cast<std::int16_t>(parent < 0 ? -1 : index[static_cast<std::size_t>(parent)]));
+    sub.rest_translations.push_back(skeleton.rest_translations[j]);
+    sub.rest_rotations.push_back(skeleton.rest_rotations[j]);
+    sub.rest_scales.push_back(skeleton.rest_scales[j]);
+    sub.dofs.push_back(skeleton.dofs[j]);
+  }
+  sub.names.resize(part.size());
+  const auto in_part = [&](int j) { return j < 0 ? -1 : index[static_cast<std::size_t>(j)]; };
+  const std::array<int, 2> part_eyes{in_part(eyes[0]), in_part(eyes[1])};
+
+  Clip body;
+  body.duration = clip.duration;
+  body.resize_joints(part.size());
+  // Lends the part's tracks to `body` and takes them back, also when `gaze` throws.
+  struct Borrowed {
+    Clip& clip;
+    Clip& body;
+    const std::vector<int>& part;
+    bool lent = false;
+    void swap() {
+      for (std::size_t k = 0; k < part.size(); ++k) {
+        const auto j = static_cast<std::size_t>(part[k]);
+        std::swap(body.rotations[k], clip.rotations[j]);
+        std::swap(body.translations[k], clip.translations[j]);
+        std::swap(body.scales[k], clip.scales[j]);
+      }
+      lent = !lent;
+    }
+    ~Borrowed() {
+      if (lent) swap();
+    }
+  } borrowed{clip, body, part};
+  borrowed.swap();
+
+  const Pose rest = rest_pose(sub);
+  std::vector<mat4> bind(part.size()), model(part.size()), seen(reads.empty() ? 0 : n);
+  local_to_model(sub, rest, bind);
 
   std::array<QuatTrack, 4> tracks;  // eyes, then vc4 and skullbase
   bool head_joins = false;
   Pose pose;
-  Sampler sampler(clip);
+  Sampler sampler(body);
   for (float t : times) {
     if (!tracks[0].empty() && t <= tracks[0].times.back()) continue;
     sampler.sample(t, WrapMode::Clamp, rest, pose);
-    local_to_model(skeleton, pose, model);
-    const GazeTarget target = gaze(t, model);
+    local_to_model(sub, pose, model);
+    if (!reads.empty())
+      for (std::size_t k = 0; k < part.size(); ++k) seen[static_cast<std::size_t>(part[k])] = model[k];
+    const GazeTarget target = gaze(t, reads.empty() ? std::span<const mat4>(model) : std::span<const mat4>(seen));
     const float eye_weight = std::clamp(target.eyes, 0.0f, 1.0f), head_weight = std::clamp(target.head, 0.0f, 1.0f);
     if (head_weight > 0.0f) {
       if (!head_joins) head = {required_joint(skeleton, "vc4"), required_joint(skeleton, "skullbase")};
       head_joins = true;
-      const vec3 between_eyes = 0.5f * (position_of(model, eyes[0]) + position_of(model, eyes[1]));
-      const vec3 d = glm::inverse(parent_turn(skeleton, eyes[0], model, bind)) * (target.point - between_eyes);
+      const vec3 between_eyes = 0.5f * (position_of(model, part_eyes[0]) + position_of(model, part_eyes[1]));
+      const vec3 d = glm::inverse(parent_turn(sub, part_eyes[0], model, bind)) * (target.point - between_eyes);
       const vec2 turn = head_weight * beyond_eyes(gaze_angles(d));
-      for (std::size_t i = 0; i < 2; ++i) turn_joint(skeleton, head[i], vec3(turn, 0.0f) * head_share[i], pose);
-      local_to_model(skeleton, pose, model);
+      for (std::size_t i = 0; i < 2; ++i) turn_joint(sub, in_part(head[i]), vec3(turn, 0.0f) * head_share[i], pose);
+      local_to_model(sub, pose, model);
     }
     for (std::size_t i = 0; i < 2; ++i)
-      tracks[i].add(t, eye_weight > 0.0f ? eye_rotation(skeleton, eyes[i], model, bind, target.point, eye_weight)
+      tracks[i].add(t, eye_weight > 0.0f ? eye_rotation(sub, part_eyes[i], model, bind, target.point, eye_weight)
                                          : skeleton.rest_rotations[static_cast<std::size_t>(eyes[i])]);
     for (std::size_t i = 0; i < 2; ++i)
-      if (head[i] >= 0) tracks[2 + i].add(t, pose.rotations[static_cast<std::size_t>(head[i])]);
+      if (head[i] >= 0) tracks[2 + i].add(t, pose.rotations[static_cast<std::size_t>(in_part(head[i]))]);
   }
+  borrowed.swap();  // given back
   const std::array<int, 4> joints{eyes[0], eyes[1], head[0], head[1]};
   for (std::size_t i = 0; i < (head_joins ? 4u : 2u); ++i) {
     tracks[i].interpolation = Interpolation::Slerp;

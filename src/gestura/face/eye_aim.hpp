@@ -55,6 +55,9 @@ using GazeAt = std::function<GazeTarget(float time, std::span<const mat4> model)
 // Sizes the clip's joint tracks to the skeleton when it has none. Throws gestura::Error when the
 // skeleton lacks the eye joints (or vc4/skullbase where the head joins) or the clip has tracks for
 // another skeleton.
-void write_gaze(const Skeleton& skeleton, std::span<const float> times, const GazeAt& gaze, Clip& clip);
+// `reads`: the joints whose model matrices `gaze` reads (the others in `model` are then left
+// unset, which spares computing the whole body each frame); empty: all.
+void write_gaze(const Skeleton& skeleton, std::span<const float> times, const GazeAt& gaze, Clip& clip,
+                std::span<const int> reads = {});
 
 }  // namespace gestura::face

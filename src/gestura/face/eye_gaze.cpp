@@ -1,6 +1,7 @@
 #include "gestura/face/eye_gaze.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -29,7 +30,7 @@ void write_eye_gaze(const Skeleton& skeleton, Clip& clip, float fps) {
   write_gaze(skeleton, times, [&](float t, std::span<const mat4> model) {
     const float w = sample_track(weights, t);
     return GazeTarget{0.5f * (vec3(model[wrist][3]) + vec3(model[knuckle][3])), w, w};
-  }, clip);
+  }, clip, std::array<int, 2>{static_cast<int>(wrist), static_cast<int>(knuckle)});
   clip.duration = std::max(clip.duration, end);
 }
 

@@ -204,6 +204,32 @@ std::size_t Lexicon::remove(std::string_view gloss, std::string_view language, s
 }
 
 std::vector<SignEntry> Lexicon::query(std::string_view where_and_order, const std::vector<std::string>& params) {
+  // Inside a transaction the answer may hold what a rollback takes back: not kept.
+  if (sqlite3_get_autocommit(db_.handle()) == 0) return query_database(where_and_order, params);
+  std::string key(where_and_order);
+  for (const std::string& p : params) key.append(1, '\x1f').append(p);
+  {
+    auto& version = db_.cached("PRAGMA data_version");
+    version.step();
+    const std::int64_t data_version = version.integer(0);
+    version.reset();
+    const std::int64_t changes = sqlite3_total_changes64(db_.handle());
+    if (data_version != memo_.data_version || changes != memo_.changes) {
+      memo_.results.clear();
+      memo_.data_version = data_version;
+      memo_.changes = changes;
+    }
+    if (auto hit = memo_.results.find(key); hit != memo_.results.end()) return hit->second;
+  }
+  std::vector<SignEntry> out = query_database(where_and_order, params);
+  // Bounded: a long-lived server asks many different questions.
+  constexpr std::size_t kMemoEntries = 4096;
+  if (memo_.results.size() >= kMemoEntries) memo_.results.clear();
+  memo_.results.emplace(std::move(key), out);
+  return out;
+}
+
+std::vector<SignEntry> Lexicon::query_database(std::string_view where_and_order, const std::vector<std::string>& params) {
   auto& stmt = db_.cached(std::string(kSignColumns) + std::string(where_and_order));
   for (std::size_t i = 0; i < params.size(); ++i) stmt.bind(static_cast<int>(i + 1), params[i]);
   std::vector<SignEntry> out;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "gestura/lexicon/sign_entry.hpp"
@@ -69,9 +70,18 @@ class Lexicon {
   explicit Lexicon(sqlite::Database db);
   void require_writable() const;
   std::vector<SignEntry> query(std::string_view where_and_order, const std::vector<std::string>& params);
+  std::vector<SignEntry> query_database(std::string_view where_and_order, const std::vector<std::string>& params);
   void load_keywords(SignEntry& entry);
 
   sqlite::Database db_;
+  // The results of recent queries, reused while nothing has been committed to the file since (by
+  // this connection or another: SQLite's data_version and this connection's change count), so a
+  // sentence's look-ups of a lexicon nobody is editing cost no SQL; an edit in the studio is seen
+  // by the next query as before.
+  struct Memo {
+    std::int64_t data_version = -1, changes = -1;
+    std::unordered_map<std::string, std::vector<SignEntry>> results;
+  } memo_;
 };
 
 }  // namespace gestura

@@ -43,6 +43,17 @@ std::string posture_key(Hand hand, const HandState& s) {
   return key;
 }
 
+// A form an earlier process solved (sentence/citation_store.hpp), kept under `key`; nullptr when
+// there is no store or it has none.
+template <class Map>
+const CitationMotion* from_store(CitationKeeper* store, std::mutex& mutex, Map& signs, const std::string& key) {
+  if (!store) return nullptr;
+  std::unique_ptr<CitationMotion> stored = store->load(key);
+  if (!stored) return nullptr;
+  std::lock_guard lock(mutex);
+  return signs.emplace(key, std::move(stored)).first->second.get();
+}
+
 }  // namespace
 
 std::vector<int> hand_motion_joints(const SigningRig& rig, Hand hand) {
@@ -115,6 +126,7 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation) {
     std::lock_guard lock(mutex_);
     if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
   }
+  if (const CitationMotion* kept = from_store(store_, mutex_, signs_, key)) return *kept;
   return perform_and_store(key, plan_citation(sign::parse_hamnosys_unicode(notation), *rig_, ScheduleOptions{1.0f, 0.0f, 0.0f}));
 }
 
@@ -124,6 +136,7 @@ const CitationMotion& SignMotionCache::sign(std::string_view notation, std::stri
     std::lock_guard lock(mutex_);
     if (auto it = signs_.find(key); it != signs_.end()) return *it->second;
   }
+  if (const CitationMotion* kept = from_store(store_, mutex_, signs_, key)) return *kept;
   return perform_and_store(std::move(key), change(plan_citation(sign::parse_hamnosys_unicode(notation), *rig_,
                                                                 ScheduleOptions{1.0f, 0.0f, 0.0f})));
 }
@@ -136,6 +149,7 @@ const CitationMotion& SignMotionCache::perform_and_store(std::string key, const 
   // hand lands does not depend on that start: the hand solver leaves an elbow that cannot make
   // the place and turn (sign/hand_solver.hpp).
   std::unique_ptr<CitationMotion> motion = perform_citation(citation);
+  if (store_) store_->save(key, *motion);
   std::lock_guard lock(mutex_);
   return *signs_.emplace(std::move(key), std::move(motion)).first->second;
 }

@@ -50,6 +50,16 @@ struct CitationMotion {
   void sample(Hand hand, float t, std::span<quat> out) const;
 };
 
+// Where citation forms solved by earlier processes are kept: asked before a sign is solved and
+// given what was solved (sentence/citation_store.hpp keeps them in SQLite). Implementations are
+// thread-safe and never throw: a form they cannot read is nullptr, one they cannot keep is dropped.
+class CitationKeeper {
+ public:
+  virtual ~CitationKeeper() = default;
+  virtual std::unique_ptr<CitationMotion> load(std::string_view key) = 0;
+  virtual void save(std::string_view key, const CitationMotion& motion) = 0;
+};
+
 class SignMotionCache {
  public:
   // Contract: `rig` outlives the cache.
@@ -78,6 +88,11 @@ class SignMotionCache {
   // transition between two given signs), so the first solution is reused.
   const HandJointPosture& posture_from(Hand hand, const HandState& state, std::span<const quat> seed);
 
+  // Citation forms are looked up in `store` before they are solved and given to it after (forms
+  // solved by an earlier process). Contract: `store` outlives the cache; call before the first
+  // sign(). nullptr: solve everything.
+  void persist_to(CitationKeeper* store) { store_ = store; }
+
   const SigningRig& rig() const { return *rig_; }
   const std::vector<int>& joints(Hand hand) const { return joints_[hand]; }
   std::size_t signs_stored() const;
@@ -92,6 +107,7 @@ class SignMotionCache {
   const CitationMotion& perform_and_store(std::string key, const SignPlan& citation);
 
   const SigningRig* rig_;
+  CitationKeeper* store_ = nullptr;
   ByHand<std::vector<int>> joints_;
   mutable std::mutex mutex_;
   mutable std::atomic<std::size_t> performances_{0};

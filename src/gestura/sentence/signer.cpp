@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <optional>
 
+#include "gestura/sentence/citation_store.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/face/eye_gaze.hpp"
 #include "gestura/face/face_channels.hpp"
@@ -168,6 +169,11 @@ Signer::Signer(const Avatar& avatar, LayeredLexicon& lexicon)
     : avatar_(&avatar), lexicon_(&lexicon), rig_(make_signing_rig(avatar)), cache_(std::make_unique<SignMotionCache>(rig_)) {}
 
 Signer::~Signer() = default;
+
+void Signer::keep_citations_in(const std::string& path) {
+  store_ = std::make_unique<CitationStore>(path, rig_);
+  cache_->persist_to(store_->readable() ? store_.get() : nullptr);
+}
 
 const ClipSignMotion& Signer::clip_sign(const SignEntry& entry) const {
   // Keyed by the stored bytes: a clip sign saved again under its gloss is a new motion.

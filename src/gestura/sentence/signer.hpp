@@ -28,6 +28,7 @@
 
 namespace gestura {
 
+class CitationStore;
 struct ClipSignMotion;
 
 struct SayOptions {
@@ -79,6 +80,12 @@ class Signer {
   // Safe to call from several threads.
   SentencePerformance say(std::string_view text, const SayOptions& options = {}) const;
 
+  // Keeps solved citation forms in the SQLite database at `path` (the user lexicon) and reads the
+  // ones an earlier process solved (sentence/citation_store.hpp). Never throws: a database that
+  // cannot be used leaves the signer as it was (store()->problem() says why). Call before say().
+  void keep_citations_in(const std::string& path);
+  const CitationStore* store() const { return store_.get(); }
+
   // Signs given by their notation (HamNoSys 4 Unicode), performed one after another on one two-hand
   // timeline as running signing: a SiGML document of several signs. `gloss` names each in the result.
   // Throws gestura::Error for none, more than kMaxSayGlosses, a notation that does not parse, a speed
@@ -98,6 +105,7 @@ class Signer {
   LayeredLexicon* lexicon_;
   SigningRig rig_;
   std::unique_ptr<SignMotionCache> cache_;
+  std::unique_ptr<CitationStore> store_;
   // Clip signs made ready for this rig, by their stored bytes.
   const ClipSignMotion& clip_sign(const SignEntry& entry) const;
   mutable std::mutex clip_mutex_;

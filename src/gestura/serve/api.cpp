@@ -140,7 +140,8 @@ Api::Api(ServeOptions options) : options_(std::move(options)) {
   }
   if (!options_.lexicon.empty()) setenv("GESTURA_LEXICON", options_.lexicon.c_str(), 1);  // the workspace's user lexicon
   // With a broker the workers render: this server needs no workspaces for jobs.
-  workspaces_ = std::make_unique<WorkspacePool>(options_.threads + (options_.broker.empty() ? options_.jobs : 0));
+  workspaces_ = std::make_unique<WorkspacePool>(options_.threads + (options_.broker.empty() ? options_.jobs : 0),
+                                                app::user_citation_store());
   if (options_.broker.empty()) {
     jobs_ = std::make_unique<LocalRenderJobs>((data_ / "jobs").string(), options_.jobs, static_cast<std::size_t>(options_.queue), *workspaces_);
   } else {

@@ -83,7 +83,7 @@ RenderWorker::RenderWorker(WorkerOptions options, Log log) : options_(std::move(
   if (ec || !fs::is_directory(options_.data))
     throw app::AppError(app::ErrorCategory::output, app::Place{"data", {}}, "cannot create folder " + options_.data + ": " + ec.message());
   if (!options_.lexicon.empty()) setenv("GESTURA_LEXICON", options_.lexicon.c_str(), 1);  // the workspace's user lexicon
-  workspace_ = std::make_unique<app::Workspace>();
+  workspace_ = std::make_unique<app::Workspace>(app::user_citation_store());
 }
 
 RenderWorker::~RenderWorker() = default;

@@ -2,9 +2,9 @@
 
 namespace gestura::serve {
 
-WorkspacePool::WorkspacePool(int size) {
+WorkspacePool::WorkspacePool(int size, const std::string& citation_store) {
   for (int i = 0; i < size; ++i) {
-    all_.push_back(std::make_unique<app::Workspace>());
+    all_.push_back(std::make_unique<app::Workspace>(citation_store));
     free_.push_back(all_.back().get());
   }
 }

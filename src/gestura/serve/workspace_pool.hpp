@@ -5,6 +5,7 @@
 #include <condition_variable>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include "gestura/app/workspace.hpp"
@@ -13,7 +14,8 @@ namespace gestura::serve {
 
 class WorkspacePool {
  public:
-  explicit WorkspacePool(int size);
+  // `citation_store`: where every workspace keeps solved signs (app/workspace.hpp); empty: memory only.
+  explicit WorkspacePool(int size, const std::string& citation_store = {});
 
   class Lease {
    public:
