@@ -75,9 +75,12 @@ JointRotations HostGaze::look_at(const SeatView& host, const vec3& point) const 
   return out;
 }
 
-HostStop stop_facing(const SeatView& seat, float distance) {
+HostStop stop_facing(const SeatView& seat, float distance, float aside) {
+  // Toward the room's middle, turned `aside` to the side further from the viewers (the page's camera
+  // looks from +Z): the host then never stands between the viewers and the signer's hands.
+  const float a = heading(seat.yaw + aside).z < heading(seat.yaw - aside).z ? seat.yaw + aside : seat.yaw - aside;
   HostStop stop;
-  stop.position = seat.position + heading(seat.yaw) * distance;
+  stop.position = seat.position + heading(a) * distance;
   stop.position.y = seat.position.y;
   stop.yaw = yaw_of(seat.position - stop.position);
   return stop;

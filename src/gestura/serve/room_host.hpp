@@ -61,9 +61,10 @@ struct HostStop {
   float yaw = 0.0f;
 };
 
-// The spot the host walks to when someone signs: `distance` in front of the seat (toward the
-// room's middle, which every seat faces), turned to face them.
-HostStop stop_facing(const SeatView& seat, float distance = 1.3f);
+// The spot the host walks to when someone signs: `distance` from the seat, toward the room's middle
+// (which every seat faces) turned `aside` away from the viewers' side (+Z), so that the host does
+// not stand between the page's camera and the signer; the host faces the signer.
+HostStop stop_facing(const SeatView& seat, float distance = 1.2f, float aside = deg(35.0f));
 
 // A walk of the host: the planned path (collision-free for the host's radius) and the body's
 // trajectory along it (the world's locomotion: turn, start, walk, slow down, turn to face).
