@@ -6,36 +6,16 @@
 // sentence, making its clip and broadcasting it), poses a second, errors by code, the server's
 // peak RSS and whether it still answers.
 //   node --experimental-websocket tools/room-load.mjs --gestura build/bin/gestura [--clients 40] [--seconds 30] [--capture 8] [--threads 2]
-import { spawn } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { parseFlags, quantile as q, startServer } from './load-common.mjs';
 
 if (typeof WebSocket === 'undefined') { console.error('run with node --experimental-websocket (node 20) or node ≥ 22'); process.exit(2); }
-const opt = { gestura: null, clients: 40, seconds: 30, capture: 8, threads: 2, every: 6 };
-const argv = process.argv.slice(2);
-for (let i = 0; i < argv.length; ++i) {
-  const key = argv[i].replace(/^--/, '');
-  if (!(key in opt) || i + 1 >= argv.length) { console.error(`unknown or incomplete flag ${argv[i]}`); process.exit(2); }
-  opt[key] = key === 'gestura' ? argv[++i] : Number(argv[++i]);
-}
-if (!opt.gestura) { console.error('usage: node --experimental-websocket tools/room-load.mjs --gestura path/to/gestura [--clients N] [--seconds S] [--capture K] [--threads T] [--every S]'); process.exit(2); }
+const opt = parseFlags({ clients: 40, seconds: 30, capture: 8, threads: 2, every: 6 },
+  'node --experimental-websocket tools/room-load.mjs --gestura path/to/gestura [--clients N] [--seconds S] [--capture K] [--threads T] [--every S]');
 if (!(opt.clients >= 1 && opt.clients <= 512 && opt.seconds >= 1 && opt.seconds <= 600)) { console.error('clients 1–512, seconds 1–600'); process.exit(2); }
 
 const sentences = ['Hello, how are you?', 'My name is Anna.', 'Thank you very much!', 'What time is it?', 'I like coffee.',
                    'Where is the school?', 'See you tomorrow.', 'My mother lives in a big house.'];
-const data = mkdtempSync(join(tmpdir(), 'gestura-room-load-'));
-const server = spawn(opt.gestura, ['serve', '--port', '0', '--data', data, '--threads', String(opt.threads), '--max-connections', '1000'],
-  { stdio: ['ignore', 'pipe', 'inherit'] });
-const url = await new Promise((resolve, reject) => {
-  let text = '';
-  server.stdout.on('data', (c) => { text += c; const m = text.match(/listening on (http:\/\/[^/\s]+)\//); if (m) resolve(m[1]); });
-  server.on('exit', (code) => reject(new Error(`server exited ${code}`)));
-});
-const peakRss = () => Number(readFileSync(`/proc/${server.pid}/status`, 'utf8').match(/VmHWM:\s+(\d+)/)[1]) / 1024;
-// Warm the signer (the first sentence builds the avatar), as a server that has run a while is.
-await fetch(`${url}/api/say`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: '{"text":"hello"}' });
-const rssWarm = peakRss();
+const { url, rssWarm, stop } = await startServer(opt, 'gestura-room-load-');
 
 // A landmarks frame: a person facing the camera, the right forearm swinging with `phase`.
 function frame(phase) {
@@ -92,12 +72,8 @@ function client(i) {
 const started = Date.now();
 await Promise.all(Array.from({ length: opt.clients }, (_, i) => client(i)));
 const seconds = (Date.now() - started) / 1000;
-const alive = await fetch(`${url}/health`).then((r) => r.status).catch(() => 'down');
-const rssPeak = peakRss();
-server.kill('SIGTERM');
-rmSync(data, { recursive: true, force: true });
+const { alive, rssPeak } = await stop();
 latencies.sort((a, b) => a - b);
-const q = (a, p) => (a.length ? a[Math.min(a.length - 1, Math.floor(p * a.length))] : NaN);
 console.log(`${opt.clients} room clients in ${rooms} rooms for ${seconds.toFixed(1)} s (${opt.capture} driving their avatar at 10 frames/s), --threads ${opt.threads}`);
 console.log(`messages: ${(received / seconds).toFixed(0)}/s from the server, ${(sent / seconds).toFixed(0)}/s to it`);
 console.log(`play latency (say → play at the others; signing included): p50 ${q(latencies, 0.5).toFixed(0)} ms, p99 ${q(latencies, 0.99).toFixed(0)} ms over ${latencies.length} deliveries (${plays} plays received)`);

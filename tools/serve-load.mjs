@@ -4,20 +4,10 @@
 // latency of the good requests, errors, the abusers' statuses, /health latency under load and the
 // server's peak RSS.
 //   node tools/serve-load.mjs --gestura build/bin/gestura [--clients 200] [--seconds 60] [--threads 2]
-import { spawn } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { connect } from 'node:net';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { parseFlags, quantile as q, startServer } from './load-common.mjs';
 
-const opt = { gestura: null, clients: 200, seconds: 60, threads: 2 };
-const argv = process.argv.slice(2);
-for (let i = 0; i < argv.length; ++i) {
-  const key = argv[i].replace(/^--/, '');
-  if (!(key in opt) || i + 1 >= argv.length) { console.error(`unknown or incomplete flag ${argv[i]}`); process.exit(2); }
-  opt[key] = key === 'gestura' ? argv[++i] : Number(argv[++i]);
-}
-if (!opt.gestura) { console.error('usage: node tools/serve-load.mjs --gestura path/to/gestura [--clients N] [--seconds S] [--threads T]'); process.exit(2); }
+const opt = parseFlags({ clients: 200, seconds: 60, threads: 2 }, 'node tools/serve-load.mjs --gestura path/to/gestura [--clients N] [--seconds S] [--threads T]');
 
 const sentences = [
   'Hello, how are you?', 'My name is Anna.', 'Where is the train station?', 'I like coffee in the morning.',
@@ -25,21 +15,7 @@ const sentences = [
   'Can you help me, please?', 'We live in a small house near the river.', 'What time is it?', 'My brother works at the hospital.',
 ];
 
-const data = mkdtempSync(join(tmpdir(), 'gestura-load-'));
-const server = spawn(opt.gestura, ['serve', '--port', '0', '--data', data, '--threads', String(opt.threads), '--max-connections', '1000'],
-  { stdio: ['ignore', 'pipe', 'inherit'] });
-const url = await new Promise((resolve, reject) => {
-  let text = '';
-  server.stdout.on('data', (c) => { text += c; const m = text.match(/listening on (http:\/\/[^/\s]+)\//); if (m) resolve(m[1]); });
-  server.on('exit', (code) => reject(new Error(`server exited ${code}`)));
-});
-const port = Number(new URL(url).port);
-server.on('exit', (code, signal) => { if (code !== 0 && signal !== 'SIGTERM') console.error(`gestura serve died: code ${code}, signal ${signal}`); });
-const peakRss = () => Number(readFileSync(`/proc/${server.pid}/status`, 'utf8').match(/VmHWM:\s+(\d+)/)[1]) / 1024;
-
-// Warm: the first request builds the avatar and signer.
-await fetch(`${url}/api/say`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: '{"text":"hello"}' });
-const rssWarm = peakRss();
+const { url, port, rssWarm, stop } = await startServer(opt);
 
 const latencies = [], statuses = new Map(), abuse = new Map(), health = [];
 let bytes = 0;
@@ -110,14 +86,10 @@ async function healthProbe() {
 const started = Date.now();
 await Promise.all([...Array(opt.clients).keys()].map(client).concat([slowClient(), slowClient(), slowClient(), abuser(), healthProbe()]));
 const seconds = (Date.now() - started) / 1000;
-const alive = await fetch(`${url}/health`).then((r) => r.status).catch(() => 'down');
-const rssPeak = peakRss();
-server.kill('SIGTERM');
-rmSync(data, { recursive: true, force: true });
+const { alive, rssPeak } = await stop();
 
 latencies.sort((a, b) => a - b);
 health.sort((a, b) => a - b);
-const q = (a, p) => (a.length ? a[Math.min(a.length - 1, Math.floor(p * a.length))] : NaN);
 const errors = [...statuses].filter(([s]) => s !== 200).reduce((n, [, c]) => n + c, 0);
 console.log(`clients ${opt.clients}, ${seconds.toFixed(0)} s, server threads ${opt.threads}`);
 console.log(`say: ${latencies.length} answered (${(latencies.length / seconds).toFixed(1)}/s), errors ${errors}`);

@@ -205,6 +205,7 @@ export class RoomView extends EventTarget {
         this.offset ??= m.time - performance.now() / 1000;
         for (const id of [...this.figures.keys()]) if (id !== 'host' && !m.participants.some((p) => p.id === id)) this.removeFigure(id);
         for (const p of m.participants) this.addFigure(p.id, p).then((f) => this.mark(f, p.connected));
+        this.drawSeats(m.seat_places ?? []);
         this.addFigure('host', { ...m.host, seat: -1 }).then(() => this.hostLook(m.host));
         for (const play of m.playing) this.play(play);
         for (const [id, rotations] of Object.entries(m.poses ?? {})) this.pose(id, rotations);
@@ -257,12 +258,53 @@ export class RoomView extends EventTarget {
     figure.poseUntil = this.serverNow() + 1.0;
   }
 
+  // The host's message: where it stands and where its head and eyes turn, or a walk (m.walk: the
+  // world's walk cycle as a clip whose root moves in world space, from m.walk.start).
   async hostLook(m) {
     const host = this.figures.get('host');
     if (!host) return;
     await host.ready;
     host.target = m.rotations ?? {};
     host.lookAt = m.look_at ?? null;
+    if (m.walk) return this.hostWalk(host, m.walk);
+    if (m.position && !host.walk) {
+      host.root.position.set(...m.position);
+      host.root.rotation.y = m.yaw ?? 0;
+    }
+  }
+
+  async hostWalk(host, w) {
+    const response = await fetch(this.server + w.url);
+    if (!response.ok) return;
+    const gltf = await new GLTFLoader().parseAsync(await response.arrayBuffer(), '');
+    if (host.walkAction) { host.walkAction.stop(); host.mixer.uncacheAction(host.walkAction.getClip()); }
+    host.walkAction = host.mixer.clipAction(bindClip(gltf.animations[0], host.morphMeshes));
+    host.walkAction.setLoop(THREE.LoopOnce, 1);
+    host.walkAction.clampWhenFinished = true;
+    host.walk = w;
+    this.drawPath(w.path);
+  }
+
+  // The seats' places on the floor (the host walks around them) and the host's planned path.
+  drawSeats(places) {
+    if (this.seatMarks) return;
+    this.seatMarks = new THREE.Group();
+    const material = new THREE.MeshStandardMaterial({ color: 0xb9c1cd });
+    for (const p of places) {
+      const mark = new THREE.Mesh(new THREE.RingGeometry(p.radius * 0.8, p.radius, 32), material);
+      mark.rotation.x = -Math.PI / 2;
+      mark.position.set(p.position[0], 0.005, p.position[2]);
+      this.seatMarks.add(mark);
+    }
+    this.scene.add(this.seatMarks);
+  }
+
+  drawPath(points) {
+    if (this.pathLine) this.scene.remove(this.pathLine);
+    if (!points?.length) return;
+    const geometry = new THREE.BufferGeometry().setFromPoints(points.map((p) => new THREE.Vector3(p[0], 0.01, p[2])));
+    this.pathLine = new THREE.Line(geometry, new THREE.LineBasicMaterial({ color: 0x3d6fb6 }));
+    this.scene.add(this.pathLine);
   }
 
   // World position of a joint of a participant's avatar ('host' for the host), metres, as the
@@ -288,6 +330,31 @@ export class RoomView extends EventTarget {
     const q = new THREE.Quaternion();
     for (const f of this.figures.values()) {
       if (!f.root) continue;
+      if (f.walk && f.walkAction) {
+        // The walk clip moves the root in world space: the figure stands at the origin meanwhile.
+        const t = now - f.walk.start;
+        if (t < 0) {
+          f.root.position.set(...f.walk.from.position);
+          f.root.rotation.y = f.walk.from.yaw;
+        } else if (t <= f.walk.duration) {
+          f.root.position.set(0, 0, 0);
+          f.root.rotation.y = 0;
+          if (!f.walkAction.isRunning()) f.walkAction.play();
+          f.walkAction.time = t;
+          f.mixer.update(0);
+          const hips = f.root.getObjectByName('humanoid_root');
+          if (hips && f.label) f.label.position.set(hips.position.x, 2.1, hips.position.z);  // the name above the walker
+          continue;  // the head follows the walk; the gaze comes on arrival
+        } else {
+          f.walkAction.stop();
+          f.mixer.update(0);
+          f.root.position.set(...f.walk.to.position);
+          f.root.rotation.y = f.walk.to.yaw;
+          f.walk = null;
+          f.label?.position.set(0, 2.1, 0);
+          if (this.pathLine) { this.scene.remove(this.pathLine); this.pathLine = null; }
+        }
+      }
       if (f.action && f.clip) {
         const t = now - f.clip.start;
         if (t >= 0 && t <= f.clip.duration + 0.5) {

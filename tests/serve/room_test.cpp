@@ -380,6 +380,90 @@ TEST(RoomHost, WatchesWhoeverSignsAndKeepsToThem) {
   EXPECT_EQ(serve::choose_host_look(host, seats, -1, 3.0f, state).seat, 1);
 }
 
+// The host walks (issue 17 item 4): its root follows a path planned on the room's floor among the
+// seats, comes nearer the signer, keeps its radius from every seat, and ends facing the signer.
+TEST(RoomHost, WalksAroundTheSeatsToFaceWhoeverSigns) {
+  std::vector<vec3> places;
+  for (int k = 0; k < 8; ++k) places.push_back(serve::seat_place(k).position);
+  serve::RoomWorld world(places);
+  const serve::Seat home = serve::seat_place(-1);
+  for (const int signer : {0, 5, 6}) {  // the seats beside the host, further round, the furthest on the left
+    const serve::Seat s = serve::seat_place(signer);
+    serve::SeatView seat;
+    seat.position = s.position;
+    seat.yaw = s.yaw;
+    const serve::HostStop to = serve::stop_facing(seat);
+    const std::optional<serve::HostWalkPlan> plan = world.plan({home.position, home.yaw}, to);
+    ASSERT_TRUE(plan) << signer;
+    const RootTrajectory& body = plan->body;
+    ASSERT_GT(body.size(), 30u);
+    float nearest = 1e9f;  // from the root's centre to any seat's centre, all along the walk
+    for (const vec3& p : body.positions)
+      for (const vec3& q : places) nearest = std::min(nearest, glm::length(vec2(p.x - q.x, p.z - q.z)));
+    for (const vec3& p : plan->path)
+      for (const vec3& q : places) nearest = std::min(nearest, glm::length(vec2(p.x - q.x, p.z - q.z)));
+    EXPECT_GE(nearest, serve::RoomWorld::kHostRadius + serve::RoomWorld::kSeatRadius - 0.01f) << signer;
+    const vec3 start = body.positions.front(), end = body.positions.back();
+    EXPECT_LT(glm::length(vec2(start.x - home.position.x, start.z - home.position.z)), 0.02f);
+    EXPECT_LT(glm::length(vec2(end.x - to.position.x, end.z - to.position.z)), 0.05f) << signer;
+    // 1.2 m from the signer, toward the middle: nearer than the host's place for every seat but its neighbours.
+    EXPECT_NEAR(glm::length(end - s.position), 1.2f, 0.05f) << signer;
+    EXPECT_GT(glm::dot(heading(s.yaw), glm::normalize(end - s.position)), std::cos(deg(36.0f))) << signer;
+    if (glm::length(start - s.position) > 1.5f) {
+      EXPECT_LT(glm::length(end - s.position), glm::length(start - s.position) - 0.3f) << signer;
+    }
+    EXPECT_GT(plan->length, 0.5f);
+    // Ends facing the signer (their seat within 5°), and the middle of the walk moved the root.
+    const vec3 to_signer = s.position - end;
+    EXPECT_LT(std::abs(angle_difference(body.yaws.back(), std::atan2(to_signer.x, to_signer.z))), deg(5.0f)) << signer;
+    EXPECT_GT(glm::length(body.position_at(body.duration() * 0.5f) - start), 0.2f);
+  }
+}
+
+// The rooms start the walk when someone signs and tell every client: the walk clip's url, when it
+// starts, where it goes; a late joiner sees it in the room's state.
+TEST(RoomHost, SomeoneSigningSendsTheHostWalkingToThem) {
+  serve::RoomServices services;
+  services.say = [](const std::string&, float, const std::string&) {
+    serve::RoomClip clip;
+    clip.glb = "glb";
+    clip.duration = 30.0;  // signing all through the test
+    clip.timeline = json{{"glosses", json::array()}};
+    return clip;
+  };
+  services.gaze = [](const serve::SeatView&, const vec3&) { return std::optional<serve::JointRotations>(serve::JointRotations{}); };
+  std::vector<float> walked;
+  services.walk = [&walked](const RootTrajectory& body) {
+    walked.push_back(body.duration());
+    return std::optional<std::string>("walk-glb");
+  };
+  serve::RoomLimits limits;
+  limits.lead = 0.0;  // the sentence starts at once
+  serve::Rooms rooms(services, limits);
+  std::vector<json> got;
+  const auto c = rooms.connect("walk", [&got](const std::string& text) { got.push_back(json::parse(text)); }, [] {});
+  ASSERT_TRUE(c);
+  rooms.receive(*c, R"({"type":"join","name":"Ana"})");
+  rooms.receive(*c, R"({"type":"say","text":"hello"})");
+  rooms.tick();
+  ASSERT_EQ(walked.size(), 1u);
+  EXPECT_GT(walked[0], 1.0f);
+  const auto walk = std::find_if(got.begin(), got.end(), [](const json& m) { return m["type"] == "host" && m.contains("walk"); });
+  ASSERT_NE(walk, got.end());
+  const json& w = (*walk)["walk"];
+  const serve::HostStop to = serve::stop_facing({serve::seat_place(0).position, serve::seat_place(0).yaw});
+  EXPECT_NEAR(w["to"]["position"][0].get<float>(), to.position.x, 1e-4);
+  EXPECT_NEAR(w["to"]["yaw"].get<float>(), to.yaw, 1e-4);
+  EXPECT_NEAR(w["duration"].get<double>(), walked[0], 1e-3);
+  EXPECT_GE(w["path"].size(), 2u);
+  EXPECT_EQ(rooms.clip("walk", w["clip"]).value_or(""), "walk-glb");
+  const json state = rooms.state("walk");
+  EXPECT_EQ(state["host"]["walk"]["clip"], w["clip"]);
+  EXPECT_EQ(state["seat_places"].size(), 8u);
+  rooms.tick();  // one walk at a time
+  EXPECT_EQ(walked.size(), 1u);
+}
+
 TEST(RoomSeats, StandOnAnArcFacingItsMiddle) {
   for (int k = 0; k < 8; ++k) {
     const serve::Seat s = serve::seat_place(k);

@@ -34,7 +34,9 @@ try {
   await page.keyboard.press('Enter');
   await page.waitForFunction(() => window.gestura.action && window.gestura.time > 0, { timeout: 60000 });
   const startMs = Date.now() - pressed;
-  console.log(`first motion ${startMs} ms after Enter; clip ${await page.evaluate(() => window.gestura.lastClipBytes)} bytes`);
+  const clipBytes = await page.evaluate(() => window.gestura.lastClipBytes);
+  console.log(`first motion ${startMs} ms after Enter (goal ≤ 1000 ms, printed, not checked: timing depends on the load); clip ${clipBytes} bytes`);
+  check(clipBytes > 0 && clipBytes <= 100 * 1024, `the sentence's clip ≤ 100 KB decoded (${(clipBytes / 1024).toFixed(1)} KB)`);
 
   // Sample the wrist while it signs, from where it is when the clip starts.
   const start = await page.evaluate(() => window.gestura.jointPosition('r_wrist'));

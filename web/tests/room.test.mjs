@@ -1,6 +1,6 @@
 // A shared room in headless chromium: two clients join one room with different looks, each types a
 // sentence, and each sees the other's avatar sign it (the other's right wrist, read from the page,
-// moves by more than 10 cm); the host turns toward the signer; a late joiner sees both avatars and
+// moves by more than 10 cm); the host walks to the signer and turns toward them; a late joiner sees both avatars and
 // the sentence still playing.
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
@@ -79,6 +79,13 @@ try {
   check(seenByB > 0.10, 'B sees A\'s avatar sign (wrist moves > 10 cm)');
   await b.page.waitForFunction((id) => window.gesturaRoom.figures.get('host')?.lookAt === id, { timeout: 30000, polling: 100 }, a.id)
     .then(() => check(true, 'the host looks at A while A signs'), () => check(false, 'the host looks at A while A signs'));
+  // It looks at A once it has walked there: its root stands away from its place, in front of A.
+  const walked = await b.page.evaluate(() => {
+    const r = window.gesturaRoom, p = r.jointPosition('host', 'humanoid_root'), home = r.welcome.host.position;
+    return Math.hypot(p[0] - home[0], p[2] - home[2]);
+  });
+  console.log(`the host's root is ${walked.toFixed(2)} m from its place`);
+  check(walked > 0.5, 'the host walked toward A (root > 0.5 m from its place)');
 
   // A late joiner while A still signs: sees both avatars and A's sentence playing.
   const c = await enter(late);

@@ -30,6 +30,8 @@
 #include "gestura/serve/request_json.hpp"
 #include "gestura/serve/static_files.hpp"
 #include "gestura/serve/random_hex.hpp"
+#include "gestura/world/walk.hpp"
+#include "gestura/world/walk_rig.hpp"
 
 #ifndef GESTURA_VERSION
 #define GESTURA_VERSION "0.1.0"
@@ -249,15 +251,26 @@ RoomServices Api::room_services() {
     clip.glb = clip_glb(avatar.skeleton, result.performance.clip, avatar.mesh, clip.timeline);
     return clip;
   };
-  services.gaze = [this](const vec3& point) -> std::optional<JointRotations> {
+  services.gaze = [this](const SeatView& host, const vec3& point) -> std::optional<JointRotations> {
     std::shared_ptr<const HostGaze> gaze;
     {
       std::lock_guard lock(host_mutex_);
       gaze = host_gaze_;
     }
     if (!gaze) return std::nullopt;
-    const Seat host = seat_place(-1);
-    return gaze->look_at(SeatView{host.position, host.yaw}, point);
+    return gaze->look_at(host, point);
+  };
+  services.walk = [this](const RootTrajectory& body) -> std::optional<std::string> {
+    {
+      std::lock_guard lock(host_mutex_);
+      if (!host_gaze_) return std::nullopt;  // the host's body is not built yet
+    }
+    // The world's walk cycle (world/walk.hpp) on the host's avatar, on the room's flat floor.
+    const WorkspacePool::Lease workspace = workspaces_->acquire();
+    const Avatar& avatar = workspace->avatar(app::AvatarChoice{});
+    const WalkRig rig = make_walk_rig(avatar);
+    const WalkMotion motion = synthesize_walk(rig, body, nullptr);
+    return clip_glb(avatar.skeleton, motion.clip, avatar.mesh, json{{"walk", true}, {"duration", body.duration()}});
   };
   services.prepare_host = [this] { host_gaze(); };
   services.capture = [this](const HolisticFrame& frame, const std::string& look) {

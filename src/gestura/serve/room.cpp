@@ -114,11 +114,42 @@ struct Rooms::Room {
   int arrived = -1;
   bool host_sent = false;
   json host_rotations = json::object();
+  // Where the host stands, where it goes (a seat it faces, or -1: its own place) and its walk there.
+  HostStop host_at;
+  int host_goal = -1;
+  double signer_seen = -1e9;  // when the host last watched someone signing
+  bool walk_pending = false;  // a walk is being planned and synthesised
+  struct Walk {
+    std::string clip;
+    double start = 0.0, end = 0.0;
+    HostStop from, to;
+    std::vector<vec3> path;
+  };
+  std::optional<Walk> walk;
 };
+
+namespace {
+
+json stop_json(const HostStop& s) { return {{"position", {s.position.x, s.position.y, s.position.z}}, {"yaw", s.yaw}}; }
+
+// A walk of the host as clients play it: the clip (its root moves in world space) from `start`
+// (server seconds), where it starts and ends, and the planned path.
+json walk_json(const std::string& room, const std::string& clip, double start, double end, const HostStop& from, const HostStop& to,
+               const std::vector<vec3>& path) {
+  json points = json::array();
+  for (const vec3& p : path) points.push_back({p.x, p.y, p.z});
+  return {{"clip", clip}, {"url", "/api/rooms/" + room + "/clips/" + clip}, {"start", start}, {"duration", end - start},
+          {"from", stop_json(from)}, {"to", stop_json(to)}, {"path", points}};
+}
+
+}  // namespace
 
 Rooms::Rooms(RoomServices services, RoomLimits limits)
     : services_(std::move(services)), limits_(limits), epoch_(std::chrono::steady_clock::now()), alive_(std::make_shared<bool>(true)) {
   if (!services_.post) services_.post = [](std::function<void()> f) { f(); };
+  std::vector<vec3> seats;
+  for (int k = 0; k < limits_.seats; ++k) seats.push_back(seat_place(k).position);
+  world_ = std::make_shared<RoomWorld>(seats);
 }
 
 Rooms::~Rooms() {
@@ -136,6 +167,8 @@ std::optional<std::uint64_t> Rooms::connect(const std::string& room, Send send, 
     if (static_cast<int>(rooms_.size()) >= limits_.max_rooms) return std::nullopt;
     it = rooms_.emplace(room, std::make_unique<Room>()).first;
     it->second->name = room;
+    const Seat home = seat_place(-1);
+    it->second->host_at = HostStop{home.position, home.yaw};
   }
   ++it->second->connections;
   auto c = std::make_unique<Connection>();
@@ -302,15 +335,20 @@ json Rooms::state_locked(const Room& room) const {
                          {"text", p->playing->text}, {"glosses", p->playing->glosses}});
     if (p->posed_until > t && !p->pose.is_null()) poses[p->id] = p->pose;
   }
-  const Seat host = seat_place(-1);
+  const HostStop& host = room.host_at;
   json host_json{{"name", "Host"}, {"look", "default"}, {"position", {host.position.x, host.position.y, host.position.z}}, {"yaw", host.yaw},
                  {"why", room.host.why}, {"rotations", room.host_rotations}};
+  host_json["walk"] = room.walk ? walk_json(room.name, room.walk->clip, room.walk->start, room.walk->end, room.walk->from, room.walk->to, room.walk->path)
+                                : json(nullptr);
   host_json["look_at"] = nullptr;
   if (room.host.seat >= 0)
     for (const auto& [id, p] : room.participants)
       if (p->seat == room.host.seat) host_json["look_at"] = p->id;
+  // The room's floor plan: where the seats stand (the host walks around them).
+  json seat_places = json::array();
+  for (const vec3& p : world_->seats()) seat_places.push_back({{"position", {p.x, p.y, p.z}}, {"radius", RoomWorld::kSeatRadius}});
   return {{"room", room.name}, {"participants", participants}, {"playing", playing}, {"poses", poses}, {"host", host_json},
-          {"seats", limits_.seats}, {"time", t}};
+          {"seats", limits_.seats}, {"seat_places", seat_places}, {"time", t}};
 }
 
 void Rooms::join(Connection& c, const json& message) {
@@ -542,6 +580,12 @@ void Rooms::tick_locked() {
 
 void Rooms::update_host(Room& room) {
   const double t = now();
+  if (room.walk && t >= room.walk->end) {
+    // Arrived: the host stands at the walk's end; its gaze is sent again from there.
+    room.host_at = room.walk->to;
+    room.walk.reset();
+    room.host_sent = false;
+  }
   std::vector<SeatView> seats(static_cast<std::size_t>(limits_.seats));
   for (int k = 0; k < limits_.seats; ++k) {
     const Seat s = seat_place(k);
@@ -554,14 +598,22 @@ void Rooms::update_host(Room& room) {
     v.present = true;
     v.signing = (p->playing && p->playing->start <= t && t < p->playing->end) || p->posed_until > t;
   }
-  const Seat host_seat = seat_place(-1);
   SeatView host;
-  host.position = host_seat.position;
-  host.yaw = host_seat.yaw;
+  host.position = room.host_at.position;
+  host.yaw = room.host_at.yaw;
   const HostLook look = choose_host_look(host, seats, room.arrived, static_cast<float>(t), room.host_state);
   room.arrived = -1;
+  // Where the host goes: in front of whoever it watches sign, and back to its place when nobody has
+  // signed for a while. One walk at a time; the next goal is chosen when it has arrived.
+  const bool signer = look.why == "signer" && look.seat >= 0;
+  if (signer) room.signer_seen = t;
+  int goal = room.host_goal;
+  if (signer) goal = look.seat;
+  else if (t - room.signer_seen > limits_.host_home_after) goal = -1;
+  if (goal != room.host_goal && !room.walk && !room.walk_pending && services_.walk) start_walk(room, goal);
+  if (room.walk || room.walk_pending) return;  // walking: the head follows the walk, the gaze comes on arrival
   if (look.seat == room.host.seat && look.why == room.host.why && room.host_sent) return;
-  const std::optional<JointRotations> rotations = services_.gaze ? services_.gaze(look.point) : std::nullopt;
+  const std::optional<JointRotations> rotations = services_.gaze ? services_.gaze(host, look.point) : std::nullopt;
   if (!rotations) {
     // The host's body is still being built: build it once, and look again on a later tick.
     if (!host_preparing_ && services_.prepare_host) {
@@ -582,7 +634,70 @@ void Rooms::update_host(Room& room) {
   json look_at = nullptr;
   for (const auto& [id, p] : room.participants)
     if (p->seat == room.host.seat) look_at = p->id;
-  broadcast(room, {{"type", "host"}, {"look_at", look_at}, {"why", room.host.why}, {"rotations", room.host_rotations}});
+  json message{{"type", "host"}, {"look_at", look_at}, {"why", room.host.why}, {"rotations", room.host_rotations}};
+  message.update(stop_json(room.host_at));
+  broadcast(room, std::move(message));
+}
+
+void Rooms::start_walk(Room& room, int goal) {
+  const int previous = room.host_goal;
+  room.host_goal = goal;
+  room.walk_pending = true;
+  const Seat home = seat_place(-1);
+  SeatView seat;
+  if (goal >= 0) seat.position = seat_place(goal).position, seat.yaw = seat_place(goal).yaw;
+  const HostStop from = room.host_at;
+  const HostStop to = goal < 0 ? HostStop{home.position, home.yaw} : stop_facing(seat);
+  std::weak_ptr<bool> alive = alive_;
+  defer([this, alive, world = world_, name = room.name, previous, from, to] {
+    std::optional<HostWalkPlan> plan;
+    std::optional<std::string> glb;
+    try {
+      if (glm::length(to.position - from.position) > 0.05f) plan = world->plan(from, to);
+      if (plan) glb = services_.walk(plan->body);
+    } catch (...) {
+      plan.reset();  // no walk: the host stays where it is and only turns its head
+    }
+    const auto still = alive.lock();
+    if (!still || !*still) return;
+    std::lock_guard lock(mutex_);
+    const auto r = rooms_.find(name);
+    if (r == rooms_.end()) return;
+    Room& room = *r->second;
+    room.walk_pending = false;
+    if (plan && !glb) {
+      // The host's body is not built yet: build it, and walk on a later tick.
+      room.host_goal = previous;
+      if (!host_preparing_ && services_.prepare_host) {
+        host_preparing_ = true;
+        defer([prepare = services_.prepare_host] {
+          try {
+            prepare();
+          } catch (...) {
+          }
+        });
+      }
+      return;
+    }
+    if (!plan) {
+      room.host_at.yaw = to.yaw;  // too near to walk, or no way there: turn where it stands
+      room.host_sent = false;
+      return;
+    }
+    const std::string clip_id = "c" + std::to_string(next_clip_++);
+    room.clips.emplace_back(clip_id, std::move(*glb));
+    while (static_cast<int>(room.clips.size()) > limits_.clips_kept) room.clips.pop_front();
+    Room::Walk walk;
+    walk.clip = clip_id;
+    walk.start = now() + limits_.lead;
+    walk.end = walk.start + plan->body.duration();
+    walk.from = from;
+    walk.to = to;
+    walk.path = plan->path;
+    room.walk = walk;
+    broadcast(room, {{"type", "host"}, {"walk", walk_json(room.name, walk.clip, walk.start, walk.end, from, to, walk.path)},
+                     {"look_at", nullptr}, {"why", "walk"}, {"rotations", json::object()}});
+  });
 }
 
 std::optional<std::string> Rooms::clip(const std::string& room, const std::string& id) const {

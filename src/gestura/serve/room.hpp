@@ -43,6 +43,7 @@ struct RoomLimits {
   double messages_per_second = 20.0;   // a connection's messages (join, say, ping …), with a burst of twice that
   double poses_per_second = 30.0;      // landmarks messages, with a burst of one second's worth
   double lead = 0.5;                   // seconds between a clip being ready and everyone starting it
+  double host_home_after = 6.0;        // seconds with nobody signing before the host walks back to its place
   int clips_kept = 16;                 // clips a room keeps for late joiners and slow fetchers
 };
 
@@ -63,10 +64,15 @@ struct RoomServices {
   // Fits the look's body to one frame of MediaPipe Holistic landmarks (a landmarks message, checked
   // already: landmarks_json.hpp); slow: call from Post only. Throws for a frame it cannot fit.
   std::function<JointRotations(const HolisticFrame& landmarks, const std::string& look)> capture;
-  // The host's head and eyes turned toward a point (world, metres); quick, never blocks: none while
-  // the host's body is not built yet. prepare_host builds it (slow: called through post, once).
-  std::function<std::optional<JointRotations>(const vec3& point)> gaze;
+  // The host's head and eyes turned toward a point (world, metres), the host standing at `host`;
+  // quick, never blocks: none while the host's body is not built yet. prepare_host builds it (slow:
+  // called through post, once).
+  std::function<std::optional<JointRotations>(const SeatView& host, const vec3& point)> gaze;
   std::function<void()> prepare_host;
+  // The world's walk cycle on the host's body along `body` (its root moving in world space), as the
+  // small clip .glb a player fetches; slow: call from Post only. None while the host's body is not
+  // built yet. Without it the host only turns its head.
+  std::function<std::optional<std::string>(const RootTrajectory& body)> walk;
   // Runs slow work elsewhere; the default runs it at once, on the caller's thread.
   std::function<void(std::function<void()>)> post;
 };
@@ -136,6 +142,7 @@ class Rooms {
   void broadcast(Room& room, nlohmann::json message, std::uint64_t except = 0);
   void send(Connection& c, nlohmann::json message);
   void update_host(Room& room);
+  void start_walk(Room& room, int goal);
   void remove_participant(Room& room, const std::string& id, const std::string& why);
   nlohmann::json state_locked(const Room& room) const;
   nlohmann::json participant_json(const Participant& p) const;
@@ -151,6 +158,7 @@ class Rooms {
   std::uint64_t next_connection_ = 1;
   std::uint64_t next_clip_ = 1;
   bool host_preparing_ = false;
+  std::shared_ptr<RoomWorld> world_;  // the floor and the seats the host walks among
   std::vector<std::function<void()>> deferred_;
   std::shared_ptr<bool> alive_;  // posted work checks it before touching the rooms
 };

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "gestura/world/character_motion.hpp"
+#include "gestura/world/locomotion.hpp"
+#include "gestura/world/scene_geometry.hpp"
 #include "gestura/world/sensors.hpp"
 
 namespace gestura::serve {
@@ -71,6 +73,63 @@ JointRotations HostGaze::look_at(const SeatView& host, const vec3& point) const 
     out.push_back({name, {q.x, q.y, q.z, q.w}});
   }
   return out;
+}
+
+HostStop stop_facing(const SeatView& seat, float distance, float aside) {
+  // Toward the room's middle, turned `aside` to the side further from the viewers (the page's camera
+  // looks from +Z): the host then never stands between the viewers and the signer's hands.
+  const float a = heading(seat.yaw + aside).z < heading(seat.yaw - aside).z ? seat.yaw + aside : seat.yaw - aside;
+  HostStop stop;
+  stop.position = seat.position + heading(a) * distance;
+  stop.position.y = seat.position.y;
+  stop.yaw = yaw_of(seat.position - stop.position);
+  return stop;
+}
+
+namespace {
+
+Environment room_environment(std::span<const vec3> seats) {
+  Scene scene;
+  scene.name = "room";
+  SceneObject floor;
+  floor.name = "floor";
+  floor.shape.kind = ShapeKind::Box;
+  floor.shape.size = vec3(8.0f, 0.1f, 8.0f);
+  floor.transform.position = vec3(0.0f, -0.05f, -0.6f);  // under the page's floor disc (radius 3.4 about z = -0.6)
+  scene.objects.push_back(floor);
+  for (std::size_t k = 0; k < seats.size(); ++k) {
+    SceneObject body;
+    body.name = "seat" + std::to_string(k);
+    body.shape.kind = ShapeKind::Cylinder;
+    body.shape.radius = RoomWorld::kSeatRadius;
+    body.shape.height = 1.8f;
+    body.shape.segments = 16;
+    body.transform.position = seats[k] + vec3(0.0f, 0.9f, 0.0f);
+    scene.objects.push_back(body);
+  }
+  validate(scene);
+  return build_environment(build_scene_geometry(scene));
+}
+
+}  // namespace
+
+RoomWorld::RoomWorld(std::span<const vec3> seats)
+    : seats_(seats.begin(), seats.end()), env_(room_environment(seats)), planner_(std::make_unique<PathPlanner>(env_)) {}
+
+std::optional<HostWalkPlan> RoomWorld::plan(const HostStop& from, const HostStop& to) {
+  PlannedPath path;
+  {
+    std::lock_guard lock(mutex_);
+    path = planner_->plan(PathRequest{from.position, to.position, kHostRadius});
+  }
+  if (path.status != PathStatus::Found || path.points.size() < 2) return std::nullopt;
+  HostWalkPlan plan;
+  plan.length = path.length;
+  LocomotionParams walking;
+  walking.speed = 1.0f;  // an unhurried host indoors
+  plan.body = follow_path(path.points, from.yaw, to.yaw, walking, 1.0f / 60.0f, 0.2f, &env_);
+  plan.path = std::move(path.points);
+  return plan;
 }
 
 }  // namespace gestura::serve
