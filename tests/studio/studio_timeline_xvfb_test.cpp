@@ -86,7 +86,10 @@ TEST(StudioTimelineUnderXvfb, RetimingAKeyMovesItInTheExportedBvhAndABarRetimesT
                             "wait 2\n"
                             "dump " + j + "dictionary.json\n"
                             "screenshot " + shots + "/studio-clip-sign.png\n"
-                            "mode timeline\n"
+                            "mode timeline\n"  // the clip sign picked in the dictionary is open here
+                            "time 0.8\n"
+                            "wait 2\n"
+                            "screenshot " + shots + "/studio-clip-sign-timeline.png\n"
                             "timeline-say hello my name is\n"  // the keys over an utterance, for the screenshot
                             "key l_elbow.x 0.6 -80\n"
                             "key-interp r_elbow.x 1 kb 0.5 0 0\n"

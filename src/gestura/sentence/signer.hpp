@@ -29,6 +29,7 @@
 namespace gestura {
 
 struct ClipSignMotion;
+struct GlossToken;
 
 struct SayOptions {
   float speed = 1.0f;        // global tempo 0.25–2
@@ -99,7 +100,8 @@ class Signer {
   SigningRig rig_;
   std::unique_ptr<SignMotionCache> cache_;
   // Clip signs made ready for this rig, by their stored bytes.
-  const ClipSignMotion& clip_sign(const SignEntry& entry) const;
+  // `placed`: the gloss as translated when it is made at places of the signing space.
+  const ClipSignMotion& clip_sign(const SignEntry& entry, const GlossToken* placed = nullptr) const;
   mutable std::mutex clip_mutex_;
   mutable std::unordered_map<std::string, std::unique_ptr<ClipSignMotion>> clip_signs_;
 };
