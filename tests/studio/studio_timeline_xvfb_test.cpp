@@ -156,7 +156,10 @@ TEST(StudioTimelineUnderXvfb, RetimingAKeyMovesItInTheExportedBvhAndABarRetimesT
   EXPECT_EQ("TESTWAVE", dictionary["timeline"]["clip_gloss"]);
   bool bar_found = false;
   for (const auto& b : dictionary["timeline"]["bars"])
-    if (b["label"] == "TESTWAVE") bar_found = true, EXPECT_NEAR(stored.duration, b["duration"].get<float>(), 0.05f);
+    if (b["label"] == "TESTWAVE") {
+      bar_found = true;
+      EXPECT_NEAR(stored.duration, b["duration"].get<float>(), 0.05f);
+    }
   EXPECT_TRUE(bar_found) << dictionary["timeline"].dump();
 
   // An output the exporter does not write is refused, naming why.
