@@ -523,11 +523,18 @@ bool Studio::play_clip_sign(const SignEntry& entry, bool reveal) {
 void Studio::open_row(const EntryKey& key) {
   const std::optional<BrowseRow> row = model_.find(key);
   if (row && row->entry.notation_kind == NotationKind::clip) {
-    // Not editable as notation: the dictionary shows it playing (the timeline editor makes them).
+    // Not editable as notation: the dictionary shows it playing, and it is opened in the timeline
+    // editor (its editor: F8), as the source motion of one bar, saved back under its gloss.
     if (play_clip_sign(row->entry, true)) {
       learn_word_ = nullptr;
       shown_clip_sign_ = row->entry.gloss;
       rendered_ = false;
+      const Clip& clip = *subject_.clip;
+      const std::vector<SourceSign> signs{{row->entry.gloss, 0.0f, clip.duration}};
+      timeline_->set_source(clip, signs, row->entry.gloss);
+      tl_view_.clip_gloss = row->entry.gloss;
+      tl_view_.time = 0.0f, tl_synced_time_ = -1.0f;
+      say(status() + "; opened in the timeline editor (F8)");
     }
     return;
   }
@@ -892,15 +899,14 @@ float Studio::flexion_at(float t, char side) {
 }
 
 void Studio::render_preview() {
-  const int width = std::max(16, static_cast<int>(preview_panel_.x * request_.preview_scale));
-  const int height = std::max(16, static_cast<int>(preview_panel_.y * request_.preview_scale));
   const bool moving = timeline_mode_ ? tl_view_.playing : controls_->playing && !posing_ && !figure_mode_;
+  // A playing preview renders fewer pixels (--playing-scale): the eye follows the motion, not the
+  // edges; once it stops, the still picture is drawn again at full size with antialiasing.
+  const float scale = request_.preview_scale * (moving ? request_.playing_scale : 1.0f);
+  const int width = std::max(16, static_cast<int>(preview_panel_.x * scale));
+  const int height = std::max(16, static_cast<int>(preview_panel_.y * scale));
   Renderer& renderer = moving ? *moving_renderer_ : renderer_;
-  if (width != preview_width_ || height != preview_height_) {
-    renderer_.resize(width, height);
-    moving_renderer_->resize(width, height);
-    preview_width_ = width, preview_height_ = height;
-  }
+  if (width != renderer.width() || height != renderer.height()) renderer.resize(width, height);
   const bool two = learning_ && two_views_;
   if (posing_ || figure_or_timeline()) {
     // The pose (sliders, IK drag), the timeline's pose at the playhead or the figure: drawn again
@@ -939,6 +945,7 @@ void Studio::render_preview() {
   if (same) return;
   rendered_moving_ = moving;
   shown_renderer_ = &renderer;
+  preview_width_ = width, preview_height_ = height;
   rendered_layout_ = two ? 1 + static_cast<int>(second_view_) : 0;
   rendered_ = true, rendered_clip_ = shown_clip_, rendered_time_ = controls_->time;
   rendered_view_ = view.camera.view, rendered_projection_ = view.camera.projection, rendered_size_ = glm::ivec2(width, height);
@@ -2178,7 +2185,8 @@ bool Studio::execute_timeline_or_figure(const ScriptStep& step) {
 nlohmann::json Studio::dump_timeline_and_figure() {
   nlohmann::json out;
   nlohmann::json t{{"active", timeline_mode_}, {"duration", timeline_->duration()}, {"time", tl_view_.time},
-                   {"title", timeline_->title()}, {"can_undo", timeline_->can_undo()}, {"speed", tl_view_.speed}};
+                   {"title", timeline_->title()}, {"can_undo", timeline_->can_undo()}, {"speed", tl_view_.speed},
+                   {"clip_gloss", tl_view_.clip_gloss}};
   auto& bars = t["bars"] = nlohmann::json::array();
   for (const TimelineBar& b : timeline_->bars()) bars.push_back({{"label", b.label}, {"kind", to_string(b.kind)}, {"duration", b.duration}});
   auto& channels = t["channels"] = nlohmann::json::object();

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "gestura/anim/sampler.hpp"
 #include "gestura/anim/track.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/lexicon/clip_sign.hpp"
@@ -176,6 +177,102 @@ TEST(ClipSign, AClipForAnotherSkeletonIsANoteAndTheWordIsSpelled) {
   for (const std::string& note : p.notes) noted = noted || note.find("ZOP: its clip cannot be played") != std::string::npos;
   EXPECT_TRUE(noted);
   EXPECT_GT(p.duration, 0.5f);  // fingerspelled instead
+}
+
+// A clip sign keyed on the right arm from the relaxed posture: the elbow turned `bend_at_start`
+// degrees more at 0, `bend_at_peak` at `peak` seconds, and back to the relaxed posture at `duration`.
+Clip arm_clip(const SigningRig& rig, float duration, float bend_at_start, float bend_at_peak, float peak) {
+  Clip clip;
+  clip.duration = duration;
+  clip.resize_joints(rig.skeleton().size());
+  const HandRig& arm = rig.hand(Hand::Right);
+  for (const int j : {arm.clavicle, arm.shoulder, arm.elbow, arm.wrist}) {
+    const quat q = rig.neutral.rotations[joint_slot(j)];
+    QuatTrack& track = clip.rotations[joint_slot(j)];
+    track.interpolation = Interpolation::Linear;
+    const auto bent = [&](float degrees) {
+      return j == arm.elbow ? glm::normalize(q * glm::angleAxis(glm::radians(degrees), vec3(1, 0, 0))) : q;
+    };
+    track.add(0.0f, bent(bend_at_start)), track.add(peak, bent(bend_at_peak)), track.add(duration, bent(0.0f));
+  }
+  return clip;
+}
+
+SignEntry clip_entry(const std::string& gloss, const std::string& word, const Clip& clip, const Skeleton& s) {
+  SignEntry e;
+  e.gloss = gloss;
+  e.language = "ase";
+  e.notation_kind = NotationKind::clip;
+  e.clip = encode_clip_sign(clip, s);
+  e.keywords = {Keyword{word, "eng", ""}};
+  return e;
+}
+
+TEST(ClipSign, ItsHeadKeysTurnTheHeadInASentence) {
+  World& w = world();
+  const Skeleton& s = w.avatar.skeleton;
+  const int skull = s.find("skullbase");
+  ASSERT_GE(skull, 0);
+  // ZONK: the elbow bends and the head turns 25° to the avatar's left at 0.4 s, and back.
+  Clip zonk = arm_clip(w.signer->rig(), kClipSeconds, 0.0f, kPeakBendDegrees, kPeakSeconds);
+  const quat rest = s.rest_rotations[joint_slot(skull)];
+  const quat turned = glm::normalize(rest * glm::angleAxis(glm::radians(25.0f), vec3(0, 1, 0)));
+  QuatTrack& head = zonk.rotations[joint_slot(skull)];
+  head.interpolation = Interpolation::Linear;
+  head.add(0.0f, rest), head.add(kPeakSeconds, turned), head.add(kClipSeconds, rest);
+  Lexicon user = Lexicon::in_memory();
+  user.add(clip_entry("ZONK", "zonk", zonk, s));
+  LayeredLexicon layers;
+  layers.push_layer(w.builtin);
+  layers.push_layer(user);
+  Signer signer(w.avatar, layers);
+  SayOptions options;
+  options.mouthing = false;
+  options.nonmanuals = false;
+  const SentencePerformance p = signer.say("hello zonk", options);
+  const PerformedGloss& hello = gloss_named(p, "HELLO");
+  const PerformedGloss& sign = gloss_named(p, "ZONK");
+  const float tempo = 1.0f / kPhraseFinalSlowing;
+  const QuatTrack& performed = p.clip.rotations[joint_slot(skull)];
+  ASSERT_FALSE(performed.empty());
+  // At the clip's peak the head is turned as keyed; during HELLO it is not.
+  EXPECT_LT(degrees_between(sample_track(performed, sign.start + kPeakSeconds / tempo), turned), 2.0f);
+  EXPECT_LT(degrees_between(sample_track(performed, 0.5f * (hello.start + hello.end)), rest), 1.0f);
+}
+
+TEST(ClipSign, AnAgreementVerbRecordedAsAClipRunsBetweenItsPlaces) {
+  World& w = world();
+  const Skeleton& s = w.avatar.skeleton;
+  const SigningRig& rig = w.signer->rig();
+  // GIVE recorded as a clip: the hand goes out as the bent elbow opens (a path with a direction).
+  Lexicon user = Lexicon::in_memory();
+  user.add(clip_entry("GIVE", "give", arm_clip(rig, 0.6f, 70.0f, 35.0f, 0.3f), s));
+  LayeredLexicon layers;
+  layers.push_layer(w.builtin);
+  layers.push_layer(user);
+  Signer signer(w.avatar, layers);
+  const auto palm = [&](const Clip& clip, float t) {
+    Pose pose;
+    sample_clip(clip, t, WrapMode::Clamp, rig.rest, pose);
+    std::vector<mat4> model(s.size());
+    local_to_model(s, pose, model);
+    return 0.5f * (vec3(model[joint_slot(s.find("r_wrist"))][3]) + vec3(model[joint_slot(s.find("r_middle1"))][3]));
+  };
+  const SentencePerformance mine = signer.say("I give you the book.");
+  const SentencePerformance yours = signer.say("You give me the book.");
+  for (const std::string& note : mine.notes) EXPECT_EQ(note.find("GIVE"), std::string::npos) << note;
+  const PerformedGloss& out = gloss_named(mine, "GIVE:1→2");
+  const PerformedGloss& in = gloss_named(yours, "GIVE:2→1");
+  const vec3 away = palm(mine.clip, out.end) - palm(mine.clip, out.start);
+  const vec3 toward = palm(yours.clip, in.end) - palm(yours.clip, in.start);
+  // The same recording runs out toward the addressee in one and in toward the signer in the other.
+  EXPECT_GT(away.z, 0.05f) << away.x << " " << away.y << " " << away.z;
+  EXPECT_LT(toward.z, -0.05f) << toward.x << " " << toward.y << " " << toward.z;
+  // The fingers keep the recording (they were never keyed: the relaxed hand's).
+  const int index = s.find("r_index2");
+  EXPECT_LT(degrees_between(sample_track(mine.clip.rotations[joint_slot(index)], 0.5f * (out.start + out.end)),
+                            sample_track(yours.clip.rotations[joint_slot(index)], 0.5f * (in.start + in.end))),
+            3.0f);
 }
 
 }  // namespace

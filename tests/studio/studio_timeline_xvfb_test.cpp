@@ -86,7 +86,10 @@ TEST(StudioTimelineUnderXvfb, RetimingAKeyMovesItInTheExportedBvhAndABarRetimesT
                             "wait 2\n"
                             "dump " + j + "dictionary.json\n"
                             "screenshot " + shots + "/studio-clip-sign.png\n"
-                            "mode timeline\n"
+                            "mode timeline\n"  // the clip sign picked in the dictionary is open here
+                            "time 0.8\n"
+                            "wait 2\n"
+                            "screenshot " + shots + "/studio-clip-sign-timeline.png\n"
                             "timeline-say hello my name is\n"  // the keys over an utterance, for the screenshot
                             "key l_elbow.x 0.6 -80\n"
                             "key-interp r_elbow.x 1 kb 0.5 0 0\n"
@@ -147,6 +150,17 @@ TEST(StudioTimelineUnderXvfb, RetimingAKeyMovesItInTheExportedBvhAndABarRetimesT
   EXPECT_GT(sentence["learning"]["glosses"][1]["end"].get<float>() - sentence["learning"]["glosses"][1]["start"].get<float>(), 1.9f);
   EXPECT_EQ("TESTWAVE", dictionary["clip_sign_shown"]);
   EXPECT_NE(std::string::npos, dictionary["status"].get<std::string>().find("clip sign TESTWAVE")) << dictionary["status"];
+  // Picked in the dictionary, the clip sign is opened in the timeline editor: its motion the source,
+  // one bar as long as the clip, saved back under its gloss.
+  EXPECT_EQ("TESTWAVE", dictionary["timeline"]["title"]);
+  EXPECT_EQ("TESTWAVE", dictionary["timeline"]["clip_gloss"]);
+  bool bar_found = false;
+  for (const auto& b : dictionary["timeline"]["bars"])
+    if (b["label"] == "TESTWAVE") {
+      bar_found = true;
+      EXPECT_NEAR(stored.duration, b["duration"].get<float>(), 0.05f);
+    }
+  EXPECT_TRUE(bar_found) << dictionary["timeline"].dump();
 
   // An output the exporter does not write is refused, naming why.
   EXPECT_NE(std::string::npos, bad["status"].get<std::string>().find("not exported")) << bad["status"];

@@ -20,6 +20,7 @@ struct StudioRequest {
   int frames = 0;          // 0: run until closed (or the script ends with quit)
   ImageSize size{1280, 800};
   float preview_scale = 1.0f;  // the 3D preview renders at this fraction of its panel's pixels
+  float playing_scale = 0.5f;  // ... and at this fraction of that while it plays (full again when it stops)
   std::string frame_log;   // one line per frame: frame time, preview time, synthesis
   AvatarChoice avatar;
 
@@ -31,6 +32,7 @@ struct StudioRequest {
     visit(self.frames, FieldInfo{.name = "frames", .help = "quit after this many frames (0: when closed)", .value = "N", .min = 0, .max = 1000000});
     visit(self.size, FieldInfo{.name = "size", .help = "window size", .value = "WxH"});
     visit(self.preview_scale, FieldInfo{.name = "preview_scale", .help = "render the 3D preview at this fraction of its panel (faster on a CPU)", .value = "X", .min = 0.25, .max = 1});
+    visit(self.playing_scale, FieldInfo{.name = "playing_scale", .help = "while the preview plays, render it at this fraction of --preview-scale (full again when it stops)", .value = "X", .min = 0.25, .max = 1});
     visit(self.frame_log, FieldInfo{.name = "frame_log", .help = "write each frame's timings (ms) to FILE and a summary to stderr", .value = "FILE"});
     AvatarChoice::fields(self.avatar, visit);
   }

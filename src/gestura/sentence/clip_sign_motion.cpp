@@ -7,6 +7,7 @@
 #include "gestura/anim/track.hpp"
 #include "gestura/core/error.hpp"
 #include "gestura/sign/hand_geometry.hpp"
+#include "gestura/sign/hand_timeline.hpp"
 #include "gestura/sign/two_hand_timeline.hpp"
 
 namespace gestura {
@@ -119,12 +120,88 @@ std::unique_ptr<ClipSignMotion> clip_sign_motion(const Clip& clip, const Signing
       timeline.segments.push_back(std::move(seg));
     }
   }
+  // The head, neck and torso: joints outside both hands' chains that the clip turns from rest.
+  out->body.resize_joints(s.size());
+  out->body.duration = duration;
+  std::vector<bool> in_hands(s.size(), false);
+  for (Hand hand : kBothHands)
+    for (const int j : hand_motion_joints(rig, hand)) in_hands[joint_slot(j)] = true;
+  const float body_radians = glm::radians(kClipBodyMovedDegrees);
+  for (std::size_t slot = 0; slot < s.size(); ++slot) {
+    const QuatTrack& track = clip.rotations[slot];
+    if (in_hands[slot] || track.empty()) continue;
+    const bool turned = std::any_of(track.values.begin(), track.values.end(),
+                                    [&](const quat& q) { return angle_between(q, s.rest_rotations[slot]) > body_radians; });
+    if (turned) out->body.rotations[slot] = track;
+  }
   for (std::size_t c = 0; c < clip.channels.size() && c < clip.channel_names.size(); ++c) {
     out->face.channel_names.push_back(clip.channel_names[c]);
     out->face.channels.push_back(clip.channels[c]);
   }
   out->face.duration = duration;
   return out;
+}
+
+std::unique_ptr<ClipSignMotion> clip_sign_in_space(const ClipSignMotion& recorded, const SignPlan& placed,
+                                                   const SignMotionCache& cache) {
+  auto out = std::make_unique<ClipSignMotion>(recorded);
+  CitationMotion& m = out->motion;
+  m.plan = placed;
+  const SigningRig& rig = cache.rig();
+  for (Hand hand : kBothHands) {
+    const HandTimeline& timeline = placed.hand(hand);
+    if (timeline.segments.empty()) continue;  // a hand the clip does not move
+    const std::size_t n = m.joints[hand], arm = rig.hand(hand).arm.joints.size();
+    std::vector<quat>& samples = m.samples[hand];
+    std::vector<quat> seed(n);
+    for (int f = 0; f < m.frames; ++f) {
+      quat* row = &samples[static_cast<std::size_t>(f) * n];
+      // Seeded by the recorded posture, its arm by the frame solved before (one arm configuration
+      // throughout).
+      seed.assign(row, row + n);
+      if (f > 0) std::copy_n(row - n, arm, seed.begin());
+      const float t = std::min(static_cast<float>(f) / m.rate, m.movement());
+      const HandJointPosture solved = cache.solve_from(hand, sample_hand(timeline, t), seed);
+      for (std::size_t j = 0; j < arm; ++j) {
+        row[j] = solved[j];
+        if (f > 0 && glm::dot(row[j], row[j - n]) < 0.0f) row[j] = -row[j];
+      }
+    }
+  }
+  return out;
+}
+
+void add_clip_sign_body(const ClipSignFace& sign, const Skeleton& skeleton, float fps, Clip& out) {
+  if (!sign.body) return;
+  const float a = sign.start - kClipFaceFade, b = sign.end + kClipFaceFade;
+  const float step = 1.0f / std::clamp(fps, 1.0f, 240.0f);
+  auto ease = [](float x) { return x * x * (3.0f - 2.0f * x); };
+  out.resize_joints(std::max(out.joint_count(), skeleton.size()));
+  for (std::size_t slot = 0; slot < sign.body->rotations.size() && slot < skeleton.size(); ++slot) {
+    const QuatTrack& mine = sign.body->rotations[slot];
+    if (mine.empty()) continue;
+    const quat rest = skeleton.rest_rotations[slot];
+    const QuatTrack base = out.rotations[slot];  // a copy: rebuilt below
+    QuatTrack merged;
+    merged.interpolation = base.empty() ? Interpolation::Slerp : base.interpolation;
+    for (std::size_t k = 0; k < base.times.size() && base.times[k] < a; ++k) merged.add(base.times[k], base.values[k]);
+    std::uint32_t cursor = 0;
+    for (float t = std::max(0.0f, a);; t = std::min(t + step, b)) {
+      const float weight = t < sign.start ? ease(std::clamp((t - a) / kClipFaceFade, 0.0f, 1.0f))
+                           : t > sign.end ? ease(std::clamp((b - t) / kClipFaceFade, 0.0f, 1.0f))
+                                          : 1.0f;
+      const float citation = std::clamp((t - sign.moving) * sign.tempo, 0.0f, sign.body->duration);
+      const quat below = base.empty() ? rest : glm::normalize(sample_track(base, t));
+      // The clip's turn from rest, in the joint's own frame, laid over what the utterance does.
+      const quat turn = glm::normalize(glm::inverse(rest) * glm::normalize(sample_track(mine, citation, &cursor)));
+      merged.add(t, glm::normalize(below * glm::slerp(quat(1, 0, 0, 0), turn, weight)));
+      if (t >= b) break;
+    }
+    for (std::size_t k = 0; k < base.times.size(); ++k)
+      if (base.times[k] > b) merged.add(base.times[k], base.values[k]);
+    make_continuous(merged);
+    out.rotations[slot] = std::move(merged);
+  }
 }
 
 void add_clip_sign_face(const ClipSignFace& sign, float fps, Clip& out) {

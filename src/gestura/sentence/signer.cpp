@@ -175,14 +175,22 @@ void Signer::keep_citations_in(const std::string& path) {
   cache_->persist_to(store_->readable() ? store_.get() : nullptr);
 }
 
-const ClipSignMotion& Signer::clip_sign(const SignEntry& entry) const {
-  // Keyed by the stored bytes: a clip sign saved again under its gloss is a new motion.
+const ClipSignMotion& Signer::clip_sign(const SignEntry& entry, const GlossToken* placed) const {
+  // Keyed by the stored bytes (a clip sign saved again under its gloss is a new motion) and the
+  // places it is made at.
   std::string key(entry.clip.begin(), entry.clip.end());
+  if (placed) key += "\x1f" + space_key(*placed);
   {
     std::lock_guard lock(clip_mutex_);
     if (auto it = clip_signs_.find(key); it != clip_signs_.end()) return *it->second;
   }
-  std::unique_ptr<ClipSignMotion> motion = clip_sign_motion(decode_clip_sign(entry), rig_, entry.gloss);
+  std::unique_ptr<ClipSignMotion> motion;
+  if (placed) {
+    const ClipSignMotion& recorded = clip_sign(entry);
+    motion = clip_sign_in_space(recorded, in_space(recorded.motion.plan, rig_, *placed), *cache_);
+  } else {
+    motion = clip_sign_motion(decode_clip_sign(entry), rig_, entry.gloss);
+  }
   std::lock_guard lock(clip_mutex_);
   return *clip_signs_.emplace(std::move(key), std::move(motion)).first->second;
 }
@@ -237,12 +245,12 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
     const std::optional<SignEntry> entry = lexicon_->find(placed ? placed->sign() : gloss, options.lang);
     if (!entry) return std::nullopt;
     if (entry->notation_kind == NotationKind::clip) {
-      // A keyframed sign plays its recorded motion (not placed in space: a recording has one place).
+      // A keyframed sign plays its recorded motion, moved to its places in space as a notated one is.
       try {
-        const ClipSignMotion& clip = clip_sign(*entry);
+        const ClipSignMotion& clip = clip_sign(*entry, placed && uses_space(*placed) ? placed : nullptr);
         const std::array<float, 2> span = builder.add_recorded_sign(clip.motion, phrase_final, extra_hold);
         const CachedSignSpan& placed_span = builder.spans().back();
-        clip_faces.push_back({&clip.face, placed_span.start, placed_span.moving, placed_span.end, placed_span.tempo});
+        clip_faces.push_back({&clip.face, &clip.body, placed_span.start, placed_span.moving, placed_span.end, placed_span.tempo});
         return span;
       } catch (const Error& e) {
         out.notes.push_back(gloss + ": its clip cannot be played (" + e.what() + ")");
@@ -378,6 +386,8 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
   for (const ClipSignFace& face : clip_faces) add_clip_sign_face(face, options.fps, out.clip);
   write_gaze_with_role_shift(shifts, rig_, out.clip, options.fps);
   face::write_jaw_from_channel(skeleton, out.clip);
+  // The clip signs' head and torso keys over the nods, role shifts and gaze of the utterance.
+  for (const ClipSignFace& body : clip_faces) add_clip_sign_body(body, skeleton, options.fps, out.clip);
   out.clip.duration = std::max(out.clip.duration, out.clip.end_time());
   out.duration = out.clip.duration;
   return out;

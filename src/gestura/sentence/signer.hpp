@@ -30,6 +30,7 @@ namespace gestura {
 
 class CitationStore;
 struct ClipSignMotion;
+struct GlossToken;
 
 struct SayOptions {
   float speed = 1.0f;        // global tempo 0.25–2
@@ -107,7 +108,8 @@ class Signer {
   std::unique_ptr<SignMotionCache> cache_;
   std::unique_ptr<CitationStore> store_;
   // Clip signs made ready for this rig, by their stored bytes.
-  const ClipSignMotion& clip_sign(const SignEntry& entry) const;
+  // `placed`: the gloss as translated when it is made at places of the signing space.
+  const ClipSignMotion& clip_sign(const SignEntry& entry, const GlossToken* placed = nullptr) const;
   mutable std::mutex clip_mutex_;
   mutable std::unordered_map<std::string, std::unique_ptr<ClipSignMotion>> clip_signs_;
 };
