@@ -54,6 +54,7 @@ const HeadSculpt* find_head(const ImplicitBody& body) {
 // hair's shell ends 4 mm below the line, rounded over 2 mm. A bob's curtain is exempt: its line is
 // taken on the scalp under it, well above its hanging edge.
 constexpr float kLooseHairBelowLine = 0.006f;
+constexpr int kLipSmoothingRounds = 10;  // Taubin rounds on the lip vertices (smooth_lips)
 bool loose_hair_reaches(HairStyle style, const vec3& p, float k) {
   return style == HairStyle::Bob || hair_field(p, k, style) < kLooseHairBelowLine * k;
 }
@@ -184,6 +185,41 @@ void unfold(Mesh& mesh) {
   }
 }
 
+// The lips are cut from a coarse sampling of a sharply curved field (the slit, the rolled
+// vermilion, the corners): their vertices keep facets and spikes a few millimetres wide that read as
+// jagged lips in close-ups. Taubin's smoothing (a shrinking and an inflating Laplacian step in
+// turn, so the lips keep their volume) on the lip vertices only; the skin and the mouth's lining
+// around them stay where they are, so the lips stay joined to the face.
+void smooth_lips(Mesh& mesh) {
+  const auto lips = static_cast<std::uint8_t>(MaterialId::Lips);
+  std::vector<std::vector<std::uint32_t>> ring(mesh.vertex_count());
+  for (std::size_t f = 0; f + 2 < mesh.indices.size(); f += 3)
+    for (std::size_t e = 0; e < 3; ++e) {
+      const std::uint32_t a = mesh.indices[f + e], b = mesh.indices[f + (e + 1) % 3];
+      if (mesh.materials[a] == lips || mesh.materials[b] == lips) ring[a].push_back(b), ring[b].push_back(a);
+    }
+  // The lips' meeting line (vertices beside the mouth's lining) stays: it is where the lips touch
+  // and where the sites between them are found.
+  const auto lining = static_cast<std::uint8_t>(MaterialId::Mouth);
+  std::vector<std::uint32_t> moving;
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v)
+    if (mesh.materials[v] == lips && !ring[v].empty() &&
+        std::none_of(ring[v].begin(), ring[v].end(), [&](std::uint32_t u) { return mesh.materials[u] == lining; }))
+      moving.push_back(v);
+  std::vector<vec3> next(moving.size());
+  for (int step = 0; step < 2 * kLipSmoothingRounds; ++step) {
+    const float weight = step % 2 == 0 ? 0.50f : -0.53f;
+    for (std::size_t i = 0; i < moving.size(); ++i) {
+      const std::uint32_t v = moving[i];
+      vec3 centre(0.0f);
+      for (std::uint32_t u : ring[v]) centre += mesh.positions[u];
+      centre /= static_cast<float>(ring[v].size());
+      next[i] = mesh.positions[v] + weight * (centre - mesh.positions[v]);
+    }
+    for (std::size_t i = 0; i < moving.size(); ++i) mesh.positions[moving[i]] = next[i];
+  }
+}
+
 // Polygonises with all detail boxes; a body so heavy that a box cannot be isolated (the shoulders
 // reach the neck cut, the hips the hand box) loses that box's extra detail rather than failing.
 Polygonization polygonize_with_detail(const ImplicitBody& body, PolygonizeOptions options) {
@@ -256,6 +292,8 @@ Avatar build_avatar(const AvatarParams& params, const AvatarOptions& options) {
   turn_jaw(avatar.skeleton, -proportions::kBindJawOpenDegrees, mesh);
   mesh.normals = surface_normals(build_avatar_volume(avatar.skeleton, params, 0.0f), mesh);
   turn_jaw(avatar.skeleton, -proportions::kLipPressDegrees, mesh);
+  unfold(mesh);
+  smooth_lips(mesh);
   unfold(mesh);
   append_mesh(mesh, build_face_parts(avatar.skeleton, k));
   mesh.material_colors = material_colors(params.colors);
