@@ -14,7 +14,7 @@ FUZZ_SECONDS ?= 60
 SANITIZER_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
                  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
 
-.PHONY: run test build build-cli deps bench bench-studio bench-anchors legibility coverage serve load load-rooms test-capture clean fuzz fuzz-smoke test-asan
+.PHONY: run test build build-cli deps bench start-dependence bench-studio bench-anchors legibility coverage serve load load-rooms test-capture clean fuzz fuzz-smoke test-asan
 
 deps:
 	@scripts/setup-deps.sh
@@ -53,6 +53,12 @@ bench: deps
 	@cmake --preset $(PRESET) >/dev/null
 	@cmake --build --preset $(PRESET) -j $(JOBS) --target gestura-bench
 	@$(BIN)/gestura-bench $(ARGS)
+
+# Whether where a sign's hands land depends on where they came from (docs/say.md); ~20 s on 2 cores.
+start-dependence: deps
+	@cmake --preset $(PRESET) >/dev/null
+	@cmake --build --preset $(PRESET) -j $(JOBS) --target gestura-start-dependence
+	@$(BIN)/gestura-start-dependence data/lexicon/ase.jsonl $(ARGS)
 
 # How many content words of everyday English sentences the ASL lexicon signs (docs/asl-lexicon.md).
 coverage: build-cli
