@@ -114,6 +114,27 @@ TEST(FollowFraming, TightensOnHandsAtTheFaceAndGlides) {
   EXPECT_LT(largest_step, 0.03f) << "metres per frame: no jumps";
 }
 
+// The follow camera glides at every tempo and on signs that move far: a camera that steps more than
+// 3 cm in one frame at 30 fps (0.9 m/s) reads as a cut, not a glide. Slow tempos hold longest, so
+// there the camera has time to zoom all the way in, and it used to do it in half a second (5 cm a frame).
+TEST(FollowFraming, NeverJumpsAtAnyTempo) {
+  for (const char* text : {"mother", "my mother lives in a big house"})
+    for (float speed : {0.5f, 0.7f, 2.0f}) {
+      const Clip clip = said(text, speed);
+      const FramingBox box = framing_box(avatar().mesh, avatar().skeleton, &clip);
+      const int frames = static_cast<int>(clip.duration * 30.0f) + 1;
+      const std::vector<FramingBox> follow = follow_framing(box, avatar().skeleton, clip, 30.0f, frames);
+      float largest_step = 0.0f;
+      vec3 previous = preset_camera(CameraPreset::Follow, follow[0], 16.0f / 9.0f).eye;
+      for (const FramingBox& b : follow) {
+        const vec3 eye = preset_camera(CameraPreset::Follow, b, 16.0f / 9.0f).eye;
+        largest_step = std::max(largest_step, glm::distance(eye, previous));
+        previous = eye;
+      }
+      EXPECT_LT(largest_step, 0.03f) << text << " at speed " << speed << ": metres per frame";
+    }
+}
+
 TEST(Occluders, ArmsAndHandsGetCapsulesOfTheirThickness) {
   const OccluderSet set = find_occluders(avatar().skeleton, avatar().mesh);
   ASSERT_EQ(set.capsules.size(), 10u);
