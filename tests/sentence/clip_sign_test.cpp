@@ -246,7 +246,10 @@ TEST(ClipSign, AnAgreementVerbRecordedAsAClipRunsBetweenItsPlaces) {
   const SigningRig& rig = w.signer->rig();
   // GIVE recorded as a clip: the hand goes out as the bent elbow opens (a path with a direction).
   Lexicon user = Lexicon::in_memory();
-  user.add(clip_entry("GIVE", "give", arm_clip(rig, 0.6f, 70.0f, 35.0f, 0.3f), s));
+  // Agreement is the entry's field: the user's recording says it agrees as the built-in GIVE does.
+  SignEntry give = clip_entry("GIVE", "give", arm_clip(rig, 0.6f, 70.0f, 35.0f, 0.3f), s);
+  give.agreement = Agreement::forward;
+  user.add(give);
   LayeredLexicon layers;
   layers.push_layer(w.builtin);
   layers.push_layer(user);
