@@ -13,6 +13,7 @@
 #include "gestura/sign/hamnosys_parser.hpp"
 #include "gestura/sign/hamnosys_symbol.hpp"
 #include "lexicon/temp_dir.hpp"
+#include "support/hamnosys_text.hpp"
 #include "support/signing_avatar.hpp"
 #include "support/small_tmpfs.hpp"
 
@@ -22,20 +23,7 @@ namespace {
 
 const test::SigningAvatar& fx() { return test::signing_avatar(); }
 
-// HamNoSys names → the Unicode notation the lexicon stores.
-std::string unicode(const std::string& names) {
-  std::string out;
-  std::size_t start = 0;
-  while (start <= names.size()) {
-    const std::size_t comma = std::min(names.find(',', start), names.size());
-    const char32_t cp = sign::symbol_info(*sign::symbol_from_name(names.substr(start, comma - start))).codepoint;
-    out += static_cast<char>(0xE0 | (cp >> 12));
-    out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (cp & 0x3F));
-    start = comma + 1;
-  }
-  return out;
-}
+std::string unicode(const std::string& names) { return test::hamnosys_text(names); }
 
 // MOTHER at the chin; the same sign at the forehead is FATHER.
 const std::string kMother = unicode("hamfinger2345,hamthumboutmod,hamextfingeru,hampalml,hamchin,hamtouch,hammoveo,hamsmallmod,hamrepeatfromstart");
