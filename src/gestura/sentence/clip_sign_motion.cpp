@@ -171,11 +171,18 @@ std::unique_ptr<ClipSignMotion> clip_sign_in_space(const ClipSignMotion& recorde
   return out;
 }
 
+// How much of a clip sign's channels is laid over the utterance at time t: all of it between start
+// and end, easing in and out over kClipFaceFade on either side.
+static float clip_fade(float t, float start, float end) {
+  auto ease = [](float x) { return x * x * (3.0f - 2.0f * x); };
+  if (t < start) return ease(std::clamp((t - (start - kClipFaceFade)) / kClipFaceFade, 0.0f, 1.0f));
+  if (t > end) return ease(std::clamp((end + kClipFaceFade - t) / kClipFaceFade, 0.0f, 1.0f));
+  return 1.0f;
+}
 void add_clip_sign_body(const ClipSignFace& sign, const Skeleton& skeleton, float fps, Clip& out) {
   if (!sign.body) return;
   const float a = sign.start - kClipFaceFade, b = sign.end + kClipFaceFade;
   const float step = 1.0f / std::clamp(fps, 1.0f, 240.0f);
-  auto ease = [](float x) { return x * x * (3.0f - 2.0f * x); };
   out.resize_joints(std::max(out.joint_count(), skeleton.size()));
   for (std::size_t slot = 0; slot < sign.body->rotations.size() && slot < skeleton.size(); ++slot) {
     const QuatTrack& mine = sign.body->rotations[slot];
@@ -187,9 +194,7 @@ void add_clip_sign_body(const ClipSignFace& sign, const Skeleton& skeleton, floa
     for (std::size_t k = 0; k < base.times.size() && base.times[k] < a; ++k) merged.add(base.times[k], base.values[k]);
     std::uint32_t cursor = 0;
     for (float t = std::max(0.0f, a);; t = std::min(t + step, b)) {
-      const float weight = t < sign.start ? ease(std::clamp((t - a) / kClipFaceFade, 0.0f, 1.0f))
-                           : t > sign.end ? ease(std::clamp((b - t) / kClipFaceFade, 0.0f, 1.0f))
-                                          : 1.0f;
+      const float weight = clip_fade(t, sign.start, sign.end);
       const float citation = std::clamp((t - sign.moving) * sign.tempo, 0.0f, sign.body->duration);
       const quat below = base.empty() ? rest : glm::normalize(sample_track(base, t));
       // The clip's turn from rest, in the joint's own frame, laid over what the utterance does.
@@ -208,7 +213,6 @@ void add_clip_sign_face(const ClipSignFace& sign, float fps, Clip& out) {
   if (!sign.face) return;
   const float a = sign.start - kClipFaceFade, b = sign.end + kClipFaceFade;
   const float step = 1.0f / std::clamp(fps, 1.0f, 240.0f);
-  auto ease = [](float x) { return x * x * (3.0f - 2.0f * x); };
   for (std::size_t c = 0; c < sign.face->channels.size(); ++c) {
     const FloatTrack& mine = sign.face->channels[c];
     if (mine.empty()) continue;
@@ -217,9 +221,7 @@ void add_clip_sign_face(const ClipSignFace& sign, float fps, Clip& out) {
     for (std::size_t k = 0; k < base.times.size() && base.times[k] < a; ++k) merged.add(base.times[k], base.values[k]);
     std::uint32_t cursor = 0;
     for (float t = std::max(0.0f, a);; t = std::min(t + step, b)) {
-      const float weight = t < sign.start ? ease(std::clamp((t - a) / kClipFaceFade, 0.0f, 1.0f))
-                           : t > sign.end ? ease(std::clamp((b - t) / kClipFaceFade, 0.0f, 1.0f))
-                                          : 1.0f;
+      const float weight = clip_fade(t, sign.start, sign.end);
       const float citation = std::clamp((t - sign.moving) * sign.tempo, 0.0f, sign.face->duration);
       const float below = base.empty() ? 0.0f : sample_track(base, t);
       merged.add(t, std::clamp(below + weight * sample_track(mine, citation, &cursor), 0.0f, 1.0f));

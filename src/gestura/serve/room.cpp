@@ -616,16 +616,7 @@ void Rooms::update_host(Room& room) {
   const std::optional<JointRotations> rotations = services_.gaze ? services_.gaze(host, look.point) : std::nullopt;
   if (!rotations) {
     // The host's body is still being built: build it once, and look again on a later tick.
-    if (!host_preparing_ && services_.prepare_host) {
-      host_preparing_ = true;
-      defer([prepare = services_.prepare_host] {
-        try {
-          prepare();
-        } catch (...) {
-          // no host body: the host keeps looking ahead
-        }
-      });
-    }
+    prepare_host_once();
     return;
   }
   room.host = look;
@@ -637,6 +628,20 @@ void Rooms::update_host(Room& room) {
   json message{{"type", "host"}, {"look_at", look_at}, {"why", room.host.why}, {"rotations", room.host_rotations}};
   message.update(stop_json(room.host_at));
   broadcast(room, std::move(message));
+}
+
+// Builds the host's body once, off the rooms' lock (mutex_ held by the caller); until it exists the
+// host keeps looking ahead and does not walk.
+void Rooms::prepare_host_once() {
+  if (host_preparing_ || !services_.prepare_host) return;
+  host_preparing_ = true;
+  defer([prepare = services_.prepare_host] {
+    try {
+      prepare();
+    } catch (...) {
+      // no host body: the host keeps looking ahead
+    }
+  });
 }
 
 void Rooms::start_walk(Room& room, int goal) {
@@ -668,15 +673,7 @@ void Rooms::start_walk(Room& room, int goal) {
     if (plan && !glb) {
       // The host's body is not built yet: build it, and walk on a later tick.
       room.host_goal = previous;
-      if (!host_preparing_ && services_.prepare_host) {
-        host_preparing_ = true;
-        defer([prepare = services_.prepare_host] {
-          try {
-            prepare();
-          } catch (...) {
-          }
-        });
-      }
+      prepare_host_once();
       return;
     }
     if (!plan) {

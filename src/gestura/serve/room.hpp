@@ -142,6 +142,7 @@ class Rooms {
   void broadcast(Room& room, nlohmann::json message, std::uint64_t except = 0);
   void send(Connection& c, nlohmann::json message);
   void update_host(Room& room);
+  void prepare_host_once();
   void start_walk(Room& room, int goal);
   void remove_participant(Room& room, const std::string& id, const std::string& why);
   nlohmann::json state_locked(const Room& room) const;
