@@ -436,9 +436,20 @@ void Studio::import_file(const std::string& path) {
   request.db = setup_.user_db;
   // SiGML does not name its sign language: its signs are taken to be in the draft's.
   request.lang = model_.draft().language.empty() ? "ase" : model_.draft().language;
+  // Signs that cannot be stored (notation that does not parse, a missing field) are skipped and
+  // reported with their line; the good ones are stored in one transaction.
+  request.skip_bad = true;
   try {
     const app::LexiconChangeResult r = app::run(request);
-    say("imported " + std::to_string(r.count) + " signs from " + path + " into " + r.path);
+    std::string text = "imported " + std::to_string(r.count) + " signs from " + path + " into " + r.path;
+    if (!r.bad_lines.empty()) {
+      text += "; skipped " + std::to_string(r.bad_lines.size()) + ":";
+      for (std::size_t i = 0; i < r.bad_lines.size() && i < 3; ++i)
+        text += " " + r.bad_lines[i].where.to_string() + ": " + r.bad_lines[i].message + (i + 1 < r.bad_lines.size() ? ";" : "");
+      if (r.bad_lines.size() > 3) text += " ...";
+      for (const app::Notice& n : r.bad_lines) std::fprintf(stderr, "gestura studio: import: %s\n", n.text().c_str());
+    }
+    say(text);
     refresh_browse();
   } catch (const std::exception& e) {
     say("import failed, nothing imported: " + app::classify(e).message + " " + app::classify(e).place.source.to_string());
@@ -629,6 +640,7 @@ void Studio::play_word(const LessonWord& word, bool reveal) {
   d.gloss = word.gloss;
   d.language = word.language;
   d.names = word.names;
+  d.nonmanuals = word.nonmanuals;
   const SignPreview p = preview_sign(d, *rig_);
   if (!p.clip) {
     say("cannot perform " + word.gloss + ": " + (p.error ? p.error->message : std::string("no clip")));

@@ -9,6 +9,7 @@
 #include "gestura/core/error.hpp"
 #include "gestura/lexicon/lexicon.hpp"
 #include "gestura/lexicon/lexicon_files.hpp"
+#include "gestura/studio/learning.hpp"
 #include "gestura/studio/sign_preview.hpp"
 #include "gestura/studio/studio_model.hpp"
 #include "lexicon/temp_dir.hpp"
@@ -132,6 +133,14 @@ TEST(StudioNonManual, AnImportedSigmlSignOpensWithItsTiersAndAGesturalOneSaysWhy
   } catch (const Error& e) {
     EXPECT_NE(std::string::npos, std::string(e.what()).find("gestural")) << e.what();
   }
+}
+
+TEST(StudioNonManual, ASigmlSignOfTheUserIsALessonWordWithItsTiers) {
+  const SignEntry e = to_entry(brows_draft());
+  const Topic topic = user_topic(std::span(&e, 1));
+  ASSERT_EQ(1u, topic.words.size());
+  EXPECT_EQ(brows_draft().names, topic.words[0].names);
+  EXPECT_EQ(brows_draft().nonmanuals, topic.words[0].nonmanuals);
 }
 
 TEST(StudioNonManual, ThePreviewPerformsTheTiers) {

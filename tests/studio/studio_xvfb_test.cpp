@@ -112,6 +112,11 @@ TEST(StudioUnderXvfb, ANonManualTierMovesThePreviewsFaceAndHeadIsSavedAsSigmlAnd
   if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
   TempDir dir;
   const std::string db = dir.file("user.sqlite"), shots = shot_dir(dir), j = dir.file("");
+  std::ofstream(j + "mixed.sigml") << "<sigml>\n"
+                                      "<hns_sign gloss=\"TESTMOUTH\"><hamnosys_nonmanual><hnm_mouthpicture picture=\"hUs\"/></hamnosys_nonmanual>\n"
+                                      "<hamnosys_manual><hamflathand/><hamextfingeru/><hampalml/><hamchest/></hamnosys_manual></hns_sign>\n"
+                                      "<hns_sign gloss=\"TESTBROKEN\"><hamnosys_manual><hamextfingeru/><hamparend/></hamnosys_manual></hns_sign>\n"
+                                      "</sigml>\n";
   const auto r = run_studio(dir, db, "nonmanual.txt",
                             "new\n"
                             "set gloss TESTNM\n"
@@ -142,6 +147,8 @@ TEST(StudioUnderXvfb, ANonManualTierMovesThePreviewsFaceAndHeadIsSavedAsSigmlAnd
                             "open TESTNM\n"
                             "wait 1\n"
                             "dump " + j + "imported.json\n"
+                            "import " + j + "mixed.sigml\n"  // one good sign, one whose notation does not parse
+                            "dump " + j + "mixed.json\n"
                             "quit\n");
   ASSERT_EQ(0, r.status) << r.output;
   const auto plain = read_json_file(j + "plain.json"), nm = read_json_file(j + "nm.json"), saved = read_json_file(j + "saved.json"),
@@ -185,6 +192,19 @@ TEST(StudioUnderXvfb, ANonManualTierMovesThePreviewsFaceAndHeadIsSavedAsSigmlAnd
   EXPECT_EQ("sigml", imported["db_kind"]) << imported["status"];
   EXPECT_EQ(2u, imported["draft"]["nonmanuals"].size()) << imported["status"];
   EXPECT_EQ("hamflathand,hamextfingeru,hampalml,hamchest", imported["draft"]["names"]);
+
+  // A file with a sign that does not parse: the good one is stored, the bad one skipped with its line.
+  const auto mixed = read_json_file(j + "mixed.json");
+  ASSERT_TRUE(mixed.is_object());
+  const std::string status = mixed["status"];
+  EXPECT_NE(std::string::npos, status.find("imported 1 signs")) << status;
+  EXPECT_NE(std::string::npos, status.find("skipped 1")) << status;
+  EXPECT_NE(std::string::npos, status.find("mixed.sigml:4")) << status;
+  {
+    Lexicon lex = Lexicon::open(db);
+    EXPECT_TRUE(lex.find("TESTMOUTH", "ase", 1).has_value());
+    EXPECT_FALSE(lex.find("TESTBROKEN", "ase", 1).has_value());
+  }
 
   const auto image = gestura::test::read_png(shots + "/studio-nonmanual.png", 3);
   ASSERT_TRUE(image.loaded());
