@@ -202,6 +202,7 @@ void BM_R1_Readback(benchmark::State& state) {
 }
 BENCHMARK(BM_R1_Readback)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+
 const char* kExtensions[] = {"mp4", "webm", "gif"};
 
 // Encoding alone: the same pre-rendered frames fed to the encoder (colour conversion included).
