@@ -81,9 +81,11 @@ std::vector<std::string_view> split(std::string_view text, char by) {
 
 class SentenceTranslator {
  public:
-  SentenceTranslator(std::vector<Word> words, english::ParsedSentence parse, bool question, SignInventory& inventory,
-                     std::vector<WordNote>& notes)
-      : w_(std::move(words)), parse_(std::move(parse)), question_(question), inventory_(inventory), notes_(notes) {
+  // initial_name: the capitalised word opening the sentence is a given name (opens_with_given_name).
+  SentenceTranslator(std::vector<Word> words, english::ParsedSentence parse, bool question, bool initial_name,
+                     SignInventory& inventory, std::vector<WordNote>& notes)
+      : w_(std::move(words)), parse_(std::move(parse)), question_(question), initial_name_(initial_name),
+        inventory_(inventory), notes_(notes) {
     while (first_word_ < w_.size() && w_[first_word_].kind != TokenKind::word &&
            w_[first_word_].kind != TokenKind::number)
       ++first_word_;
@@ -560,13 +562,13 @@ class SentenceTranslator {
       return;
     }
     ++i_;
-    const bool looks_like_name = w.capitalized && !all_caps_ && l != "i" && !sentence_initial_word(w);
+    const bool initial = sentence_initial_word(w);
+    const bool looks_like_name = w.capitalized && !all_caps_ && l != "i" && (!initial || initial_name_);
     const auto candidates = lemma_candidates(l);
-    // A capitalised word that link-grammar's dictionary reads as a given name here ("Bill.m",
-    // "Rose.f") is a person's name, even when the same word as a noun has a sign (bill, rose, mark).
+    // A capitalised given name is a person's name, even when the same word as a noun has a sign
+    // (bill, rose, mark): see given_name().
     if (looks_like_name)
-      if (const english::ParsedWord* named = parsed(i_ - 1); named && is_given_name_tag(named->tag))
-        return fingerspell(w, "name (capitalized), a given name to link-grammar (" + named->tag + ")");
+      if (const auto why = given_name(i_ - 1)) return fingerspell(w, "name (capitalized), " + *why);
     if (looks_like_name) {
       // A capitalised word with a sign of its own (a place, a holiday, "Sundays") is signed.
       if (!inventory_.open_vocabulary())
@@ -639,20 +641,35 @@ class SentenceTranslator {
     return false;
   }
 
-  // Link-grammar marks the given names of its dictionary by sex: "John.m", "Mary.f", "Bill.m".
+  // Why capitalised word k (not opening its sentence, or opening it with initial_name_ set) is a
+  // given name, or nothing. Link-grammar's tag in this parse ("Bill.m", "Rose.f", "Pat.b") or its
+  // given-name lists when the parse took another reading ("Ask Mark" parses Mark.c, the currency;
+  // a place, Jordan.l, stays a place). Not after an article ("the Park"), and not a word whose
+  // most frequent WordNet sense is itself capitalised (God, Easter, German, Sunday): that thing's sign.
+  std::optional<std::string> given_name(std::size_t k) const {
+    const Word& w = w_[k];
+    const english::ParsedWord* p = parsed(k);
+    const bool tagged = p && is_given_name_tag(p->tag);
+    const bool listed = !tagged && english::is_given_name(w.text) && !(p && p->tag.ends_with(".l"));
+    if (!tagged && !listed) return std::nullopt;
+    if (k > 0 && w_[k - 1].kind == TokenKind::word &&
+        (w_[k - 1].lower == "the" || w_[k - 1].lower == "a" || w_[k - 1].lower == "an"))
+      return std::nullopt;
+    if (wordnet::first_sense_is_proper(w.lower)) return std::nullopt;
+    return tagged ? "a given name to link-grammar (" + p->tag + ")"
+                  : "in link-grammar's list of given names (the parse read " + (p ? p->tag : std::string("nothing")) + ")";
+  }
+
+  // Link-grammar marks the given names of its dictionary by sex: "John.m", "Mary.f", "Pat.b" (both).
   static bool is_given_name_tag(std::string_view tag) {
     const auto dot = tag.rfind('.');
-    return dot != std::string_view::npos && dot > 0 && (tag.substr(dot) == ".m" || tag.substr(dot) == ".f");
+    return dot != std::string_view::npos && dot > 0 &&
+           (tag.substr(dot) == ".m" || tag.substr(dot) == ".f" || tag.substr(dot) == ".b");
   }
 
   // Whether the word before index k is a form of "be" or a linking verb (seem, feel, look, get, become).
   bool after_linking_verb(std::size_t k) const {
-    if (k == 0) return false;
-    static constexpr std::array kLinking{"am",    "is",     "are",    "was",   "were",  "be",    "been",   "being",
-                                         "seem",  "seems",  "seemed", "feel",  "feels", "felt",  "look",   "looks",
-                                         "looked", "get",   "gets",   "got",   "become", "became", "becomes"};
-    const std::string& before = w_[k - 1].lower;
-    return std::any_of(kLinking.begin(), kLinking.end(), [&](const char* v) { return before == v; });
+    return k > 0 && english::is_linking_verb(w_[k - 1].lower);
   }
 
   // WordNet has the form itself as an adjective (tired, worried, closed) and the lexicon signs it.
@@ -673,6 +690,7 @@ class SentenceTranslator {
   english::ParsedSentence parse_;
   std::size_t first_word_ = 0;  // index of the first word or number
   bool question_;
+  bool initial_name_;
   SignInventory& inventory_;
   std::vector<WordNote>& notes_;
   std::vector<Item> items_;
@@ -726,6 +744,7 @@ english::ParsedSentence parse_words(const std::vector<Word>& words, std::string_
   out.tree = std::move(parsed.tree);
   out.roles = std::move(parsed.roles);
   out.clauses = parsed.clauses;
+  out.cost = parsed.cost;
   out.words.resize(words.size());
   // The parser's word indices (participle) → this sentence's word indices.
   for (auto& w : parsed.words)
@@ -743,6 +762,50 @@ english::ParsedSentence parse_words(const std::vector<Word>& words, std::string_
     }
   }
   return out;
+}
+
+// Whether the capitalised word opening a sentence is a given name rather than the common word
+// written with a capital because it opens the sentence ("Bill paid." vs "Hope is important.").
+// Link-grammar reads any capitalised word of its name lists as a name there (Bill.m, Hope.f), so its
+// tag alone does not decide. The test is the parse of the same words with that word in lower case:
+// a singular count noun cannot be a bare subject in English ("rose bought flowers." has no complete
+// linkage, "bill paid." only a costlier one), while a mass or abstract noun can ("hope is important."). A word whose most frequent WordNet sense
+// is itself capitalised (Easter, Sunday) is that thing, not a name.
+bool opens_with_given_name(const std::vector<Word>& words, const english::ParsedSentence& parse,
+                           std::string_view terminator) {
+  std::size_t first = 0;
+  while (first < words.size() && words[first].kind != TokenKind::word && words[first].kind != TokenKind::number) ++first;
+  if (!parse.parsed || first >= words.size() || first >= parse.words.size()) return false;
+  const Word& w = words[first];
+  if (w.kind != TokenKind::word || !w.capitalized || w.lower == "i" || w.text == utf8::upper(w.text)) return false;
+  const std::string& tag = parse.words[first].tag;
+  const auto dot = tag.rfind('.');
+  const bool name_tag = dot != std::string::npos && dot > 0 && (tag.substr(dot) == ".m" || tag.substr(dot) == ".f" ||
+                                                                 tag.substr(dot) == ".b");
+  if (!name_tag || wordnet::first_sense_is_proper(w.lower)) return false;
+  std::vector<Word> lowered = words;
+  lowered[first].text = w.lower;
+  const english::ParsedSentence common = parse_words(lowered, terminator);
+  // The common word must be read as a noun, and as usual English: link-grammar links a bare count
+  // noun only at a cost, which the name reading does not pay.
+  if (!common.parsed || first >= common.words.size() || common.words[first].pos != english::PartOfSpeech::noun ||
+      common.cost > parse.cost)
+    return true;
+  // Link-grammar's reading as a mass noun (summer.n-u, art.n-u) is the common word.
+  if (common.words[first].tag.ends_with("-u")) return false;
+  // Link-grammar lets many count nouns go bare ("bill paid." parses). WordNet's first noun sense tells
+  // a thing one counts (a document, a plant, an artifact, a place) from a feeling, a time, a
+  // substance or an idea, which English leaves bare ("Hope is important.", "Summer is hot."). A bare
+  // countable thing that does something ("Bill paid.") is a person's name; one that only is something
+  // ("Bill is due today.", "Art is fun.") keeps the noun.
+  static constexpr std::array kCounted{"noun.artifact", "noun.communication", "noun.plant", "noun.animal",
+                                       "noun.object",   "noun.body",          "noun.location", "noun.possession"};
+  const std::string kind = wordnet::first_noun_sense_class(w.lower);
+  if (std::none_of(kCounted.begin(), kCounted.end(), [&](const char* c) { return kind == c; })) return false;
+  for (std::size_t k = first + 1; k < words.size() && k < parse.words.size(); ++k)
+    if (parse.words[k].pos == english::PartOfSpeech::verb)
+      return !english::is_linking_verb(words[k].lower);
+  return false;
 }
 
 // Reorders one clause: time expressions, the rest, moved negation, wh-words. Returns where the
@@ -807,7 +870,8 @@ Translation translate_to_gloss(std::string_view english, SignInventory& inventor
     }
     std::string parse_text = parse.tree;
     if (!parse.roles.empty()) parse_text += "; " + parse.roles;
-    SentenceTranslator translator(std::move(words), std::move(parse), question, inventory, out.notes);
+    const bool initial_name = opens_with_given_name(words, parse, terminator);
+    SentenceTranslator translator(std::move(words), std::move(parse), question, initial_name, inventory, out.notes);
     std::vector<Item> items = translator.run();
     while (!items.empty() && items.back().role == Role::pause) items.pop_back();
 
