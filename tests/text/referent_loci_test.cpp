@@ -87,7 +87,7 @@ TEST(ReferentLoci, ReportedSpeechAfterTellTakesTheTeller) {
 
 TEST(ReferentLoci, HerIsTheRecipientOfAThingAndThePossessorOfAPerson) {
   EXPECT_EQ(gloss("I gave her money.").text(), "IX-1 GIVE:1→3a IX-3a MONEY");
-  EXPECT_EQ(gloss("She sent her mother a letter.").text(), "IX-3a SEND:3a→3b POSS-3a MOTHER IX-3b LETTER");
+  EXPECT_EQ(gloss("She sent her mother a letter.").text(), "IX-3a POSS-3a MOTHER IX-3b SEND:3a→3b LETTER");
   EXPECT_EQ(gloss("I need to tell her something.").text(), "IX-1 MUST TELL:1→3a IX-3a SOMETHING");
 }
 
@@ -191,6 +191,8 @@ TEST(ReferentLoci, AnObjectNamedAfterTheVerbIsSetUpBeforeTheVerbMovesThere) {
   // follows the verb phrase.
   EXPECT_EQ(gloss("Give Rose the keys.").text(), "FS-ROSE IX-3a GIVE:2→3a KEY") << gloss("Give Rose the keys.").text();
   EXPECT_EQ(gloss("The teacher did not help the boy.").text(), "TEACHER IX-3a BOY IX-3b HELP:3a→3b NOT");
+  // A possessive goes with its noun; "her" before adjectives and a person is the possessive.
+  EXPECT_EQ(gloss("The mother helped her little son.").text(), "MOTHER IX-3a POSS-3a SMALL SON IX-3b HELP:3a→3b");
   // A pronoun object already has its place: the order stays.
   EXPECT_EQ(gloss("She gave him the book.").text(), "IX-3a GIVE:3a→3b IX-3b BOOK");
   // Every place the verb uses is set up by a gloss before it.

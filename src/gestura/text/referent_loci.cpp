@@ -360,14 +360,15 @@ class Placer {
   // TEACHER IX-3a BOY IX-3b HELP:3a→3b. The verb's movement shows who does what to whom, which is
   // why ASL allows the object before an agreement verb (Fischer 1975; Liddell 2003: a verb is directed
   // at a place the discourse has already given). The words between the verb and the object
-  // (LITTLE in "helped the little boy") go with the object. Not done across a pause, a role-shift or
-  // marker boundary, or over another person's mention.
+  // (LITTLE in "helped the little boy", POSS-3a in "helped her son") go with the object. Not done
+  // across a pause, a role-shift or marker boundary, or over another person named or pointed at.
   void introduce_objects_first() {
     for (const LateObject& late : late_objects_) {
       const std::size_t verb = late.verb, object = late.object;
       bool movable = object < t_.glosses.size();
       for (std::size_t k = verb + 1; k < object && movable; ++k)
-        movable = t_.glosses[k].kind != GlossKind::pause && !(mentions_[k].referent >= 0 || mentions_[k].locus);
+        movable = t_.glosses[k].kind != GlossKind::pause &&
+                  (mentions_[k].possessive || !(mentions_[k].referent >= 0 || mentions_[k].locus));
       const auto inside = [&](std::size_t boundary) { return boundary > verb && boundary <= object; };
       for (const Marker& m : t_.markers) movable = movable && !inside(m.first) && !inside(m.last);
       for (const RoleShift& r : t_.role_shifts) movable = movable && !inside(r.first) && !inside(r.last);

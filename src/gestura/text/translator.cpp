@@ -535,10 +535,13 @@ class SentenceTranslator {
       // it makes it possessive ("her dog").
       // Right after an agreement verb and before a thing it is the recipient ("gave her money"), before
       // a person the possessive ("sent her mother a letter").
-      const Word* next = at(i_ + 1);
+      // The noun the possessive would go with: past adjectives ("her little son").
+      std::size_t head = i_ + 1;
+      while (head + 1 < w_.size() && parsed(head) && parsed(head)->pos == english::PartOfSpeech::adjective) ++head;
+      const Word* noun = at(head);
       const bool object = (parsed(i_) && parsed(i_)->role == english::Role::object) ||
-                          (!items_.empty() && inventory_.agreement_of(items_.back().token.gloss) != Agreement::none && next &&
-                           !wordnet::names_a_person(next->lower));
+                          (!items_.empty() && inventory_.agreement_of(items_.back().token.gloss) != Agreement::none && noun &&
+                           !wordnet::names_a_person(noun->lower));
       const bool possessive = !object && next_is_content_word();
       const std::string gloss = possessive ? "POSS-3" : "IX-3";
       const std::string reason = "'her' → " + gloss + (possessive ? ": possessive pronoun" : ": pronoun (pointing)");
