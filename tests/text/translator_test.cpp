@@ -342,6 +342,23 @@ TEST(TranslatorParse, AParticipleUsedAsAnAdjectiveKeepsItsOwnSign) {
   EXPECT_EQ(text("The book was given to me.").find("GIVE") != std::string::npos, true) << text("The book was given to me.");
 }
 
+// ASL has no passive: the agent of a by-phrase is signed before the verb (DOOR LOCK TEACHER would read
+// as the door locking the teacher); a state the lexicon signs as an adjective keeps its order.
+TEST(TranslatorParse, APassivesAgentIsSignedBeforeItsVerb) {
+  WordListInventory v = vocabulary();
+  for (const char* word : {"door", "lock", "surprised", "gift"})
+    v.add(word, [&] {
+      std::string g(word);
+      for (char& c : g) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      return g;
+    }());
+  EXPECT_EQ(translate_to_gloss("The door was locked by the teacher.", v).text(), "DOOR TEACHER LOCK");
+  EXPECT_EQ(translate_to_gloss("The door was locked by my father.", v).text(), "DOOR POSS-1 FATHER LOCK");
+  EXPECT_EQ(translate_to_gloss("I was surprised by the gift.", v).text(), "IX-1 SURPRISED GIFT");
+  // "by" that is no passive's stays a place word (dropped as a preposition), in order.
+  EXPECT_EQ(translate_to_gloss("I live by the school.", v).text(), "IX-1 LIVE SCHOOL");
+}
+
 // A capitalised word that link-grammar reads as a given name is a name, even when the noun has a
 // sign: "Bill" in "John told Bill he won" is a person, fingerspelled and placed, not BILL (money).
 TEST(TranslatorParse, AGivenNameIsANameNotTheNoun) {

@@ -108,6 +108,7 @@ std::string_view link_type(std::string_view label) {
 struct Link {
   std::string type;
   int left, right;  // link-grammar word indices
+  bool passive = false;  // a Pv link: passive 'be' → its participle
 };
 
 // How much a linkage is to be trusted: link-grammar's own cost, plus a penalty for a 'do' that
@@ -133,7 +134,8 @@ std::vector<Link> links_of(Linkage linkage) {
   for (int k = 0; k < n; ++k)
     links.push_back(Link{std::string(link_type(linkage_get_link_label(linkage, k))),
                          static_cast<int>(linkage_get_link_lword(linkage, k)),
-                         static_cast<int>(linkage_get_link_rword(linkage, k))});
+                         static_cast<int>(linkage_get_link_rword(linkage, k)),
+                         std::string_view(linkage_get_link_label(linkage, k)).starts_with("Pv")});
   return links;
 }
 
@@ -317,6 +319,7 @@ ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const 
     } else if (t == "P") {
       // Pg (is going), Pv (was taken): 'be' is an auxiliary here, not the copula.
       left->auxiliary_be = true;
+      if (l.passive) right->passive_participle = true;
     }
   }
 

@@ -27,6 +27,7 @@ struct ParsedWord {
   bool perfect = false;     // 'have' linked to a participle by PP (have eaten)
   int participle = -1;      // perfect 'have': the input index of its participle
   bool auxiliary_be = false;  // 'be' linked to -ing/participle by Pg/Pv (is going, was taken)
+  bool passive_participle = false;  // the participle of a passive: 'be' links to it by Pv (was taken)
   bool modal = false;       // can, will, must... linked to a verb by I
 };
 

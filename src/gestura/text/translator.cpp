@@ -25,7 +25,8 @@ struct Word {
   bool capitalized;
 };
 
-enum class Role { plain, time, wh, negation_moved, negation_in_place, pause };
+// passive_verb: the participle of a passive; agent: the signs of its by-phrase, which go before it.
+enum class Role { plain, time, wh, negation_moved, negation_in_place, pause, passive_verb, agent };
 
 struct Item {
   GlossToken token;
@@ -115,7 +116,11 @@ class SentenceTranslator {
   }
 
   void note(const Word& w, std::string reason) { notes_.push_back(WordNote{w.text, w.begin, w.end, std::move(reason)}); }
-  void emit(GlossToken token, Role role) { items_.push_back(Item{std::move(token), role}); }
+  void emit(GlossToken token, Role role) {
+    if (role == Role::pause) by_agent_ = false;
+    if (role == Role::plain && by_agent_) role = Role::agent;
+    items_.push_back(Item{std::move(token), role});
+  }
   void drop(const Word& w, std::string_view why) { note(w, quoted(w.text) + " dropped: " + std::string(why)); }
 
   void step() {
@@ -516,6 +521,13 @@ class SentenceTranslator {
       ++i_;
       return;
     }
+    // "by" after a passive participle names the one who acts: "The door was locked by the teacher."
+    if (l == "by" && passive_seen_) {
+      by_agent_ = true;
+      drop(w, "'by' of a passive: its agent is signed before the verb, as the one who acts (parse: Pv link)");
+      ++i_;
+      return;
+    }
     if (const auto why = english::dropped(l); why != english::DropReason::none) {
       drop(w, english::describe(why));
       ++i_;
@@ -686,7 +698,12 @@ class SentenceTranslator {
 
   void sign(const Word& w, const std::string& gloss, std::string reason) {
     note(w, reason);
-    emit(make(gloss, GlossKind::sign, w, std::move(reason)), Role::plain);
+    const std::size_t k = static_cast<std::size_t>(&w - w_.data());
+    // A form the lexicon signs as written and WordNet lists as an adjective (surprised, scared,
+    // tired) is a state; its "by" names a cause, and the order stays.
+    const bool passive = !by_agent_ && parsed(k) && parsed(k)->passive_participle && !adjective_form_with_sign(w.lower);
+    if (passive) passive_seen_ = true;
+    emit(make(gloss, GlossKind::sign, w, std::move(reason)), passive ? Role::passive_verb : Role::plain);
   }
 
   std::vector<Word> w_;
@@ -700,6 +717,8 @@ class SentenceTranslator {
   std::size_t i_ = 0;
   bool all_caps_ = false;
   bool has_wh_ = false;
+  bool passive_seen_ = false;  // a passive participle has been signed in this sentence
+  bool by_agent_ = false;      // inside the by-phrase of a passive, until a pause
 };
 
 // Words of one sentence, contractions expanded.
@@ -831,6 +850,14 @@ std::size_t reorder_clause(std::vector<Item>& clause, bool wh_question) {
     return item.token.gloss.rfind("IX-", 0) == 0 || item.token.gloss == "WE";
   };
   if (negation_seen && negation_start + 1 < rest.size() && is_subject(rest[negation_start])) ++negation_start;
+  // A passive's agent ("by the teacher") goes before its verb: ASL has no passive, and DOOR LOCK
+  // TEACHER would read as the door locking the teacher; DOOR TEACHER LOCK keeps the door as the
+  // topic and the teacher as the one who acts.
+  if (const auto verb = std::find_if(rest.begin(), rest.end(), [](const Item& x) { return x.role == Role::passive_verb; });
+      verb != rest.end()) {
+    const auto agent_first = std::stable_partition(verb + 1, rest.end(), [](const Item& x) { return x.role == Role::agent; });
+    if (agent_first != verb + 1) std::rotate(verb, verb + 1, agent_first);
+  }
   clause.clear();
   for (auto* part : {&time, &rest, &negation, &wh})
     for (Item& item : *part) clause.push_back(std::move(item));
