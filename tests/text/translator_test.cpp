@@ -395,6 +395,11 @@ TEST(TranslatorParse, ASentenceOpeningGivenNameIsANameWhenTheNounCannotStandTher
   EXPECT_EQ(translate_to_gloss("Hope is important.", v).text(), "HOPE IMPORTANT");
   EXPECT_EQ(translate_to_gloss("Summer is hot.", v).text(), "SUMMER HOT");
   EXPECT_EQ(translate_to_gloss("Love is important.", v).text(), "LOVE IMPORTANT");
+  // A word that is a noun for a person (Mom) is signed as that noun, wherever it stands.
+  v.add("mom", "MOTHER");
+  EXPECT_EQ(translate_to_gloss("Mom went home.", v).text(), "MOTHER GO HOME");
+  EXPECT_EQ(translate_to_gloss("I called Mom.", v).text().find("FS-"), std::string::npos)
+      << translate_to_gloss("I called Mom.", v).text();
   EXPECT_EQ(translate_to_gloss("Bill is due today.", v).text().find("FS-"), std::string::npos)
       << translate_to_gloss("Bill is due today.", v).text();
   // Inside a sentence: a name from link-grammar's lists even where the parse read another word

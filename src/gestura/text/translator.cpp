@@ -670,7 +670,9 @@ class SentenceTranslator {
     if (k > 0 && w_[k - 1].kind == TokenKind::word &&
         (w_[k - 1].lower == "the" || w_[k - 1].lower == "a" || w_[k - 1].lower == "an"))
       return std::nullopt;
-    if (wordnet::first_sense_is_proper(w.lower)) return std::nullopt;
+    // A word that is itself a noun for a person (Mom, Dad, Grandma) is signed as that noun: the
+    // sign names the same person.
+    if (wordnet::first_sense_is_proper(w.lower) || wordnet::names_a_person(w.lower)) return std::nullopt;
     return tagged ? "a given name to link-grammar (" + p->tag + ")"
                   : "in link-grammar's list of given names (the parse read " + (p ? p->tag : std::string("nothing")) + ")";
   }
@@ -804,7 +806,7 @@ bool opens_with_given_name(const std::vector<Word>& words, const english::Parsed
   const auto dot = tag.rfind('.');
   const bool name_tag = dot != std::string::npos && dot > 0 && (tag.substr(dot) == ".m" || tag.substr(dot) == ".f" ||
                                                                  tag.substr(dot) == ".b");
-  if (!name_tag || wordnet::first_sense_is_proper(w.lower)) return false;
+  if (!name_tag || wordnet::first_sense_is_proper(w.lower) || wordnet::names_a_person(w.lower)) return false;
   std::vector<Word> lowered = words;
   lowered[first].text = w.lower;
   const english::ParsedSentence common = parse_words(lowered, terminator);
