@@ -205,6 +205,24 @@ TEST(ProsodyRate, EverySignIsHeldLongEnoughToBeSeen) {
   for (const PerformedGloss* g : signed_glosses(p)) EXPECT_GE(g->end - g->start, 0.3f - 1e-4f) << g->gloss;
 }
 
+TEST(ProsodyRate, CirclesAndRepeatsAreNotSqueezedBelowReadability) {
+  // LIBRARY (an L hand circling once) lasted 0.35 s inside a sentence, its circle 0.25 s; MUST
+  // (a hooked X bending down twice) 0.13 s a stroke.
+  const SentencePerformance p = say("Where is the library? I need to go there today.");
+  bool library = false, must = false;
+  for (const PerformedGloss* g : signed_glosses(p)) {
+    if (g->gloss == "LIBRARY") {
+      library = true;
+      EXPECT_GE(g->end - g->start, 0.38f);
+    }
+    if (g->gloss == "MUST") {
+      must = true;
+      EXPECT_GE(g->end - g->start, 0.40f - 1e-3f);  // two cycles of ≥ 0.15 s and the holds
+    }
+  }
+  EXPECT_TRUE(library && must);
+}
+
 TEST(ProsodyRate, PhraseFinalSignIsLongerThanTheSameSignInside) {
   const SentencePerformance inside_performance = say("My car is new, I like it.");
   const SentencePerformance final_performance = say("I like my new car.");

@@ -47,5 +47,31 @@ TEST(ProsodyTiming, QuestionHoldIsAddedToTheFinalHold) {
   EXPECT_NEAR(question.final_hold - plain.final_hold, 0.3f, 1e-5f);
 }
 
+// A circle (citation model 0.52 s = 0.96 planner s) was played in 0.25 s; it keeps ≥ 55 % of its
+// model time. A straight movement (0.63 planner s) keeps its plain compression.
+TEST(ProsodyTiming, OneMovementIsNotCompressedBelowItsShare) {
+  const float circle = 0.96f, straight = 0.63f;
+  const SignTiming plain_circle = running_sign_timing(circle, false, 0.0f, 1.0f);
+  const SignTiming read_circle = running_sign_timing(circle, false, 0.0f, 1.0f, circle);
+  EXPECT_LT(plain_circle.movement, 0.26f);
+  EXPECT_GE(read_circle.movement, 0.28f);
+  EXPECT_NEAR(running_sign_timing(straight, false, 0.0f, 1.0f, straight).movement,
+              running_sign_timing(straight, false, 0.0f, 1.0f).movement, 1e-6f);
+  // At twice the speed, half as long; at the end of a phrase, slowed like the rest.
+  EXPECT_NEAR(running_sign_timing(circle, false, 0.0f, 2.0f, circle).movement, 0.5f * read_circle.movement, 1e-5f);
+  EXPECT_GT(running_sign_timing(circle, true, 0.0f, 1.0f, circle).movement, read_circle.movement);
+}
+
+// A repeated movement: each cycle at least 0.15 s (MUST's two strokes took 0.13 s each); the repeats
+// are still faster than their citation time.
+TEST(ProsodyTiming, EachCycleOfARepetitionLastsLongEnoughToBeSeen) {
+  const float must = 1.63f, once = 0.63f;  // planner seconds: one stroke and its repeat
+  const SignTiming t = running_sign_timing(must, false, 0.0f, 1.0f, once, 1);
+  EXPECT_GE(t.movement, 2 * 0.15f - 1e-6f);
+  EXPECT_LT(t.movement, must / 2.0f);
+  const SignTiming three = running_sign_timing(must, false, 0.0f, 1.0f, once, 3);
+  EXPECT_GE(three.movement, 4 * 0.15f - 1e-6f);
+}
+
 }  // namespace
 }  // namespace gestura

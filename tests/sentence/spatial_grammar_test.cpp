@@ -113,6 +113,23 @@ TEST(SpatialGrammar, SheGaveHimTheBookPointsAtTwoPlacesAndGiveRunsBetweenThem) {
   EXPECT_GT(glm::dot(end - start, glm::normalize(pb - pa)), 0.15f);
 }
 
+TEST(SpatialGrammar, TheBoysPlaceIsPointedAtBeforeHelpMovesThere) {
+  // "The teacher helped the boy.": BOY's index points at 3b before HELP starts, and HELP's hand
+  // then moves from the teacher's place toward it.
+  const SentencePerformance p = say("The teacher helped the boy.");
+  const PerformedGloss& boy = gloss(p, "IX-3b");
+  const PerformedGloss& help = gloss(p, "HELP:3a→3b");
+  EXPECT_LE(boy.end, help.start + 1e-4f);
+  const float boy_t = 0.5f * (boy.start + boy.end);
+  const vec3 boy_dir = index_direction(p.clip, boy_t);
+  const vec3 tip = at(model_at(p.clip, boy_t), "r_index_tip");
+  EXPECT_LE(degrees_between(boy_dir, flat(locus_point(rig(), Locus{3, 1}, 0.9f) - tip)), 20.0f);
+  const vec3 pa = locus_point(rig(), Locus{3, 0}), pb = locus_point(rig(), Locus{3, 1});
+  const vec3 start = palm(p.clip, help.start), end = palm(p.clip, help.end);
+  EXPECT_GT(glm::dot(end - start, glm::normalize(pb - pa)), 0.10f);
+  EXPECT_LT(glm::distance(end, pb), glm::distance(end, pa));
+}
+
 TEST(SpatialGrammar, PossessivesFaceTheirPlacesWithThePalm) {
   // POSS is a flat hand, fingers up: its palm, not its fingers, turns to the owner's place.
   const SentencePerformance p = say("He took her dog and his cat.");

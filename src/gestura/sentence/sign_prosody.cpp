@@ -4,12 +4,18 @@
 
 namespace gestura {
 
-SignTiming running_sign_timing(float citation_movement, bool phrase_final, float extra_hold, float speed) {
+SignTiming running_sign_timing(float citation_movement, bool phrase_final, float extra_hold, float speed,
+                               float citation_once, int repeats) {
   SignTiming t;
   t.tempo = speed * kRunningTempo / (phrase_final ? kPhraseFinalSlowing : 1.0f);
   const float effective = std::min(citation_movement, kLongMovementSeconds) +
                           0.5f * std::max(0.0f, citation_movement - kLongMovementSeconds);
   t.movement = effective / t.tempo;
+  // Readable: not below a share of one movement's citation time, slowed at the end of a phrase too.
+  const float slowing = phrase_final ? kPhraseFinalSlowing : 1.0f;
+  t.movement = std::max(t.movement, kMinRunningShare * std::min(citation_once, citation_movement) * slowing / speed);
+  if (repeats > 0 && citation_movement > 0.0f)
+    t.movement = std::max(t.movement, kMinRepeatCycleSeconds * static_cast<float>(1 + repeats) * slowing / speed);
   // One uniform time scale for the whole movement (the plan's segments and the cached motion are
   // both mapped with it), so a long movement is played faster rather than cut.
   if (citation_movement > 0.0f) t.tempo = citation_movement / t.movement;

@@ -21,6 +21,15 @@ inline constexpr float kRunningTempo = 3.2f;
 // Citation movement beyond this many seconds (repetitions, long paths) is compressed twice as much:
 // running signing reduces repeated and long movements more than short ones.
 inline constexpr float kLongMovementSeconds = 0.6f;
+// Running signing compresses a sign's movement, and long or repeated movement more, but never
+// below this share of the citation time of one of its movements (planner seconds; 0.55 of the
+// citation model's seconds): LIBRARY's circle played in 0.25 s was a blur. A circle then takes
+// ≥ 0.29 s, while a straight movement keeps its compressed 0.19 s and repeats stay fast (docs/say.md).
+inline constexpr float kMinRunningShare = 0.30f;
+// And each cycle of a repeated movement (the stroke and its return) lasts at least this long in
+// running signing, about a fluent fingerspelled letter (6/s): at the compression above, MUST's two
+// strokes took 0.13 s each, faster than viewers resolve.
+inline constexpr float kMinRepeatCycleSeconds = 0.15f;
 // Transitions between signs (movement epenthesis, movement_timing.hpp's transition_duration) are
 // sped up likewise.
 inline constexpr float kTransitionTempo = 3.0f;
@@ -44,8 +53,12 @@ struct SignTiming {
 // Timing of one sign in running signing. `citation_movement`: seconds from the first posture to the
 // end of the movement in citation form (the planner's plan at speed 1 without holds); `extra_hold`:
 // seconds added to the final hold (a yes/no question's last sign); `speed`: global tempo.
-// Contract: citation_movement >= 0, extra_hold >= 0, speed in [0.25, 2].
-SignTiming running_sign_timing(float citation_movement, bool phrase_final, float extra_hold, float speed);
+// `citation_once`: the citation seconds of one of the sign's movements (their mean, repetitions
+// left out): the movement lasts at least kMinRunningShare of it.
+// `repeats`: how many times the movement is repeated (each cycle at least kMinRepeatCycleSeconds).
+// Contract: citation_movement >= 0, extra_hold >= 0, speed in [0.25, 2], 0 <= citation_once, repeats >= 0.
+SignTiming running_sign_timing(float citation_movement, bool phrase_final, float extra_hold, float speed,
+                               float citation_once = 0.0f, int repeats = 0);
 
 // Timing of a recorded sign (a clip sign keyframed in the studio): its author timed it, holds
 // included, so it keeps its own pace — divided by the global speed, and slowed at the end of a

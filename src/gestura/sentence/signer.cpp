@@ -63,8 +63,11 @@ class UtteranceBuilder {
   // `modelled`: the citation movement's seconds from the notation (sign/citation_timing.hpp), in the
   // planner's seconds; the sign then lasts what the model says and its planned motion is played at
   // the tempo that fits it.
-  std::array<float, 2> add_sign(const CitationMotion& motion, bool phrase_final, float extra_hold, float modelled) {
-    SignTiming timing = running_sign_timing(modelled, phrase_final, extra_hold, speed_);
+  // `once`: the citation seconds of one of the sign's movements (their mean, no repeats), planner
+  // seconds; `repeats`: how often the movement is repeated.
+  std::array<float, 2> add_sign(const CitationMotion& motion, bool phrase_final, float extra_hold, float modelled,
+                                float once, int repeats) {
+    SignTiming timing = running_sign_timing(modelled, phrase_final, extra_hold, speed_, once, repeats);
     if (motion.movement() > 0.0f && timing.movement > 0.0f) timing.tempo = motion.movement() / timing.movement;
     else timing = running_sign_timing(motion.movement(), phrase_final, extra_hold, speed_);
     return place_sign(motion, timing);
@@ -263,12 +266,15 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
       return std::nullopt;
     }
     try {
-      const float modelled = kPlannedPerModelSecond * citation_timing(sign::parse_hamnosys_unicode(entry->notation)).moving();
+      const CitationTiming model = citation_timing(sign::parse_hamnosys_unicode(entry->notation));
+      const float modelled = kPlannedPerModelSecond * model.moving();
+      const float once = model.movements > 0 ? kPlannedPerModelSecond * model.movement / static_cast<float>(model.movements) : 0.0f;
       if (placed && uses_space(*placed))
         return builder.add_sign(cache_->sign(entry->notation, space_key(*placed),
                                              [&](const SignPlan& citation) { return in_space(citation, rig_, *placed); }),
-                                phrase_final, extra_hold, modelled);
-      return builder.add_sign(cache_->sign(entry->notation), phrase_final, extra_hold, modelled);
+                                phrase_final, extra_hold, modelled, once, static_cast<int>(model.repeats.size()));
+      return builder.add_sign(cache_->sign(entry->notation), phrase_final, extra_hold, modelled, once,
+                              static_cast<int>(model.repeats.size()));
     } catch (const Error& e) {
       out.notes.push_back(gloss + ": its notation cannot be performed (" + e.what() + ")");
       return std::nullopt;
@@ -405,8 +411,12 @@ SentencePerformance Signer::sign_sequence(std::span<const NotatedSign> signs, co
   UtteranceBuilder builder(rig_, options.speed);
   float first_start = -1.0f, last_end = 0.0f;
   for (std::size_t i = 0; i < signs.size(); ++i) {
-    const float modelled = kPlannedPerModelSecond * citation_timing(sign::parse_hamnosys_unicode(signs[i].notation)).moving();
-    const std::array<float, 2> span = builder.add_sign(cache_->sign(signs[i].notation), i + 1 == signs.size(), 0.0f, modelled);
+    const CitationTiming model = citation_timing(sign::parse_hamnosys_unicode(signs[i].notation));
+    const float modelled = kPlannedPerModelSecond * model.moving();
+    const float once = model.movements > 0 ? kPlannedPerModelSecond * model.movement / static_cast<float>(model.movements) : 0.0f;
+    const std::array<float, 2> span =
+        builder.add_sign(cache_->sign(signs[i].notation), i + 1 == signs.size(), 0.0f, modelled, once,
+                         static_cast<int>(model.repeats.size()));
     if (first_start < 0.0f) first_start = span[0];
     last_end = span[1];
     out.glosses.push_back({signs[i].gloss, signs[i].gloss, span[0], span[1]});

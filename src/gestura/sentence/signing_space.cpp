@@ -120,6 +120,19 @@ SignPlan carried(const SignPlan& citation, vec3 s, vec3 e, vec3 f, vec3 t, float
   }
   const quat turn = yaw(angle);
   const quat hand_turn = yaw(angle * turn_share);
+  const vec3 path = e - s;
+  if (glm::length(chord) <= 0.02f && glm::length(path) > 0.02f && glm::length(goal) > 0.02f) {
+    // A path with no horizontal run (HELP rises, the base hand lifting the fist): the hands carry
+    // the path as it is and travel from f to t as they go along it — a shear, so each part of the
+    // movement is as far along the way to t as it is along its own path. Both hands go together.
+    const vec3 along = path / glm::dot(path, path);
+    const auto sheared = [&](vec3 v) { return v + glm::dot(v, along) * goal; };
+    for (auto* hand : {&out.right, &out.left}) {
+      each_state(*hand, [&](HandState& h) { h.position = f + sheared(h.position - s); });
+      map_paths(*hand, sheared, quat(1.0f, 0.0f, 0.0f, 0.0f));
+    }
+    return out;
+  }
   const auto stretched = [&](vec3 v) { return v + (stretch - 1.0f) * glm::dot(v, axis) * axis; };
   each_state(out.right, [&](HandState& h) { h.position = f + turn * stretched(h.position - s); h.orientation = hand_turn * h.orientation; });
   map_paths(out.right, [&](vec3 v) { return turn * stretched(v); }, turn);

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <link-grammar/link-includes.h>
 
@@ -106,6 +108,7 @@ std::string_view link_type(std::string_view label) {
 struct Link {
   std::string type;
   int left, right;  // link-grammar word indices
+  bool passive = false;  // a Pv link: passive 'be' → its participle
 };
 
 // How much a linkage is to be trusted: link-grammar's own cost, plus a penalty for a 'do' that
@@ -131,7 +134,8 @@ std::vector<Link> links_of(Linkage linkage) {
   for (int k = 0; k < n; ++k)
     links.push_back(Link{std::string(link_type(linkage_get_link_label(linkage, k))),
                          static_cast<int>(linkage_get_link_lword(linkage, k)),
-                         static_cast<int>(linkage_get_link_rword(linkage, k))});
+                         static_cast<int>(linkage_get_link_rword(linkage, k)),
+                         std::string_view(linkage_get_link_label(linkage, k)).starts_with("Pv")});
   return links;
 }
 
@@ -154,6 +158,30 @@ std::string_view to_string(PartOfSpeech pos) {
 }
 
 bool parser_available() { return parser().dictionary != nullptr; }
+
+bool is_given_name(std::string_view word) {
+  // Read once from link-grammar's data directory (the same search path its dictionary uses).
+  static const std::unordered_set<std::string> names = [] {
+    std::unordered_set<std::string> out;
+    for (const char* file : {"en/words/entities.given-male.sing", "en/words/entities.given-female.sing",
+                             "en/words/entities.given-bisex.sing"}) {
+      FILE* f = linkgrammar_open_data_file(file);
+      if (!f) continue;
+      char buffer[256];
+      while (std::fscanf(f, "%255s", buffer) == 1) {
+        std::string_view entry(buffer);
+        if (entry.starts_with('%')) {  // a comment runs to the end of its line
+          for (int c; (c = std::fgetc(f)) != EOF && c != '\n';) {}
+          continue;
+        }
+        if (const auto dot = entry.rfind('.'); dot != std::string_view::npos && dot > 0) out.emplace(entry.substr(0, dot));
+      }
+      std::fclose(f);
+    }
+    return out;
+  }();
+  return names.contains(std::string(word));
+}
 
 namespace {
 ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const std::string> words,
@@ -220,6 +248,7 @@ ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const 
     return out;
   }
   out.parsed = true;
+  out.cost = linkage_disjunct_cost(linkage);
 
   // Link-grammar words → input words (the walls and split-off parts map to none or to their word).
   const int n = static_cast<int>(linkage_get_num_words(linkage));
@@ -293,6 +322,7 @@ ParsedSentence parse_locked(Parser& p, const std::string& text, std::span<const 
     } else if (t == "P") {
       // Pg (is going), Pv (was taken): 'be' is an auxiliary here, not the copula.
       left->auxiliary_be = true;
+      if (l.passive) right->passive_participle = true;
     }
   }
 

@@ -27,6 +27,7 @@ struct ParsedWord {
   bool perfect = false;     // 'have' linked to a participle by PP (have eaten)
   int participle = -1;      // perfect 'have': the input index of its participle
   bool auxiliary_be = false;  // 'be' linked to -ing/participle by Pg/Pv (is going, was taken)
+  bool passive_participle = false;  // the participle of a passive: 'be' links to it by Pv (was taken)
   bool modal = false;       // can, will, must... linked to a verb by I
 };
 
@@ -39,6 +40,7 @@ struct ParsedSentence {
   std::string tree;               // constituent tree on one line: (S (NP my head) (VP hurts))
   std::string roles;              // "subject 'head' → verb 'hurts'; verb 'gave' → object 'book'"
   std::size_t clauses = 0;        // S and SBAR constituents in the tree
+  double cost = 0;                // link-grammar's disjunct cost of the linkage taken (higher: less usual)
 };
 
 // Parses the words of one sentence (as written; punctuation may be given as words of its own).
@@ -47,5 +49,11 @@ ParsedSentence parse_sentence(std::span<const std::string> words);
 // Whether the parser can be used here (its English dictionary found); false also when disabled with
 // GESTURA_NO_PARSER=1 (rule tables only, e.g. to compare).
 bool parser_available();
+
+// Whether link-grammar's English dictionary lists `word` (as written, with its capital) among given
+// names: its word lists entities.given-{male,female,bisex}.sing (John, Mary, Bill, Mark, Rose, Frank).
+// The parser's tag for a word in context may be another reading (Mark.c, the currency); this is the
+// list itself. False when the lists are not found.
+bool is_given_name(std::string_view word);
 
 }  // namespace gestura::english

@@ -199,4 +199,11 @@ const std::vector<const Phrase*>& phrases_starting_with(std::string_view first_w
   return it == index.end() ? kNone : it->second;
 }
 
+bool is_linking_verb(std::string_view word) {
+  static constexpr std::array kLinking{"am",    "is",     "are",    "was",   "were",  "be",    "been",   "being",
+                                       "seem",  "seems",  "seemed", "feel",  "feels", "felt",  "look",   "looks",
+                                       "looked", "get",   "gets",   "got",   "become", "became", "becomes"};
+  return std::any_of(kLinking.begin(), kLinking.end(), [&](const char* v) { return word == v; });
+}
+
 }  // namespace gestura::english

@@ -26,6 +26,8 @@ std::optional<std::string_view> pronoun_gloss(std::string_view word);
 bool is_wh_word(std::string_view word);
 bool is_auxiliary_do(std::string_view word);   // do, does, did
 bool is_auxiliary(std::string_view word);      // do-support, be, have, modals: question-initial words
+// A form of "be" or a linking verb (seem, feel, look, get, become): what follows describes the subject.
+bool is_linking_verb(std::string_view word);
 
 // Time adverbs that open an ASL sentence: yesterday → YESTERDAY, monday → MONDAY, …
 std::optional<std::string_view> time_gloss(std::string_view word);

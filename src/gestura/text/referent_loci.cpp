@@ -119,6 +119,7 @@ class Placer {
     }
     for (const Sentence& sentence : t_.sentences) agree(sentence);
     role_shifts();
+    introduce_objects_first();
     insert_indices();
   }
 
@@ -330,6 +331,11 @@ class Placer {
       const bool content_before = std::any_of(t_.glosses.begin() + static_cast<std::ptrdiff_t>(near_start),
                                               t_.glosses.begin() + static_cast<std::ptrdiff_t>(i),
                                               [](const GlossToken& x) { return x.kind != GlossKind::pause; });
+      // A subject that is no person ("Art helps children") has no place to start from: citation start.
+      const bool thing_subject = !subject && std::any_of(mentions_.begin() + static_cast<std::ptrdiff_t>(near_start),
+                                                         mentions_.begin() + static_cast<std::ptrdiff_t>(i),
+                                                         [](const Mention& m) { return m.role == english::Role::subject; });
+      if (thing_subject) continue;
       Locus from = subject ? place_of(*subject) : content_before ? Locus{1, 0} : Locus{2, 0};
       Locus to = place_of(*object);
       if (!from || !to || from == to) continue;
@@ -342,6 +348,47 @@ class Placer {
                      (backward ? " (a backwards verb: from the object to the subject)" : ""));
       for (std::size_t k : {subject.value_or(i), *object})
         if (k != i && mentions_[k].referent >= 0) referents_[static_cast<std::size_t>(mentions_[k].referent)].needs_index = true;
+      // A person first named after the verb has no place yet when the verb moves there.
+      const int named = mentions_[*object].referent;
+      if (*object > i && named >= 0 && referents_[static_cast<std::size_t>(named)].introduced == *object)
+        late_objects_.push_back(LateObject{i, *object});
+    }
+  }
+
+  // A signer sets a referent up before a verb is directed at its place: the object named after an
+  // agreement verb ("The teacher helped the boy.") is signed, with its index, before the verb —
+  // TEACHER IX-3a BOY IX-3b HELP:3a→3b. The verb's movement shows who does what to whom, which is
+  // why ASL allows the object before an agreement verb (Fischer 1975; Liddell 2003: a verb is directed
+  // at a place the discourse has already given). The words between the verb and the object
+  // (LITTLE in "helped the little boy", POSS-3a in "helped her son") go with the object. Not done
+  // across a pause, a role-shift or marker boundary, or over another person named or pointed at.
+  void introduce_objects_first() {
+    for (const LateObject& late : late_objects_) {
+      const std::size_t verb = late.verb, object = late.object;
+      bool movable = object < t_.glosses.size();
+      for (std::size_t k = verb + 1; k < object && movable; ++k)
+        movable = t_.glosses[k].kind != GlossKind::pause &&
+                  (mentions_[k].possessive || !(mentions_[k].referent >= 0 || mentions_[k].locus));
+      const auto inside = [&](std::size_t boundary) { return boundary > verb && boundary <= object; };
+      for (const Marker& m : t_.markers) movable = movable && !inside(m.first) && !inside(m.last);
+      for (const RoleShift& r : t_.role_shifts) movable = movable && !inside(r.first) && !inside(r.last);
+      if (!movable) continue;
+      // Rotate [verb, object] left by one: the verb goes after the object.
+      std::rotate(t_.glosses.begin() + static_cast<std::ptrdiff_t>(verb),
+                  t_.glosses.begin() + static_cast<std::ptrdiff_t>(verb) + 1,
+                  t_.glosses.begin() + static_cast<std::ptrdiff_t>(object) + 1);
+      std::rotate(mentions_.begin() + static_cast<std::ptrdiff_t>(verb),
+                  mentions_.begin() + static_cast<std::ptrdiff_t>(verb) + 1,
+                  mentions_.begin() + static_cast<std::ptrdiff_t>(object) + 1);
+      const auto moved = [&](std::size_t k) { return k == verb ? object : k > verb && k <= object ? k - 1 : k; };
+      for (Referent& r : referents_)
+        if (r.introduced != std::string::npos) r.introduced = moved(r.introduced);
+      for (LateObject& other : late_objects_) {
+        if (&other == &late) continue;
+        other.verb = moved(other.verb);
+        other.object = moved(other.object);
+      }
+      explain(t_.glosses[object], "; signed after its object, which is set up first");
     }
   }
 
@@ -465,6 +512,10 @@ class Placer {
   std::vector<Referent> referents_;
   std::unordered_map<std::string, int> by_key_;  // a noun's or name's gloss → its referent
   std::vector<std::size_t> sentence_index_;      // each gloss's sentence
+  struct LateObject {
+    std::size_t verb, object;  // gloss indices: an agreement verb and the person first named after it
+  };
+  std::vector<LateObject> late_objects_;
   int next_locus_ = 0;
   static constexpr std::size_t kWindow = 32;
   static constexpr std::size_t kReach = 24;

@@ -25,7 +25,8 @@ struct Word {
   bool capitalized;
 };
 
-enum class Role { plain, time, wh, negation_moved, negation_in_place, pause };
+// passive_verb: the participle of a passive; agent: the signs of its by-phrase, which go before it.
+enum class Role { plain, time, wh, negation_moved, negation_in_place, pause, passive_verb, agent };
 
 struct Item {
   GlossToken token;
@@ -81,9 +82,11 @@ std::vector<std::string_view> split(std::string_view text, char by) {
 
 class SentenceTranslator {
  public:
-  SentenceTranslator(std::vector<Word> words, english::ParsedSentence parse, bool question, SignInventory& inventory,
-                     std::vector<WordNote>& notes)
-      : w_(std::move(words)), parse_(std::move(parse)), question_(question), inventory_(inventory), notes_(notes) {
+  // initial_name: the capitalised word opening the sentence is a given name (opens_with_given_name).
+  SentenceTranslator(std::vector<Word> words, english::ParsedSentence parse, bool question, bool initial_name,
+                     SignInventory& inventory, std::vector<WordNote>& notes)
+      : w_(std::move(words)), parse_(std::move(parse)), question_(question), initial_name_(initial_name),
+        inventory_(inventory), notes_(notes) {
     while (first_word_ < w_.size() && w_[first_word_].kind != TokenKind::word &&
            w_[first_word_].kind != TokenKind::number)
       ++first_word_;
@@ -113,7 +116,11 @@ class SentenceTranslator {
   }
 
   void note(const Word& w, std::string reason) { notes_.push_back(WordNote{w.text, w.begin, w.end, std::move(reason)}); }
-  void emit(GlossToken token, Role role) { items_.push_back(Item{std::move(token), role}); }
+  void emit(GlossToken token, Role role) {
+    if (role == Role::pause) by_agent_ = false;
+    if (role == Role::plain && by_agent_) role = Role::agent;
+    items_.push_back(Item{std::move(token), role});
+  }
   void drop(const Word& w, std::string_view why) { note(w, quoted(w.text) + " dropped: " + std::string(why)); }
 
   void step() {
@@ -514,6 +521,13 @@ class SentenceTranslator {
       ++i_;
       return;
     }
+    // "by" after a passive participle names the one who acts: "The door was locked by the teacher."
+    if (l == "by" && passive_seen_) {
+      by_agent_ = true;
+      drop(w, "'by' of a passive: its agent is signed before the verb, as the one who acts (parse: Pv link)");
+      ++i_;
+      return;
+    }
     if (const auto why = english::dropped(l); why != english::DropReason::none) {
       drop(w, english::describe(why));
       ++i_;
@@ -533,10 +547,13 @@ class SentenceTranslator {
       // it makes it possessive ("her dog").
       // Right after an agreement verb and before a thing it is the recipient ("gave her money"), before
       // a person the possessive ("sent her mother a letter").
-      const Word* next = at(i_ + 1);
+      // The noun the possessive would go with: past adjectives ("her little son").
+      std::size_t head = i_ + 1;
+      while (head + 1 < w_.size() && parsed(head) && parsed(head)->pos == english::PartOfSpeech::adjective) ++head;
+      const Word* noun = at(head);
       const bool object = (parsed(i_) && parsed(i_)->role == english::Role::object) ||
-                          (!items_.empty() && inventory_.agreement_of(items_.back().token.gloss) != Agreement::none && next &&
-                           !wordnet::names_a_person(next->lower));
+                          (!items_.empty() && inventory_.agreement_of(items_.back().token.gloss) != Agreement::none && noun &&
+                           !wordnet::names_a_person(noun->lower));
       const bool possessive = !object && next_is_content_word();
       const std::string gloss = possessive ? "POSS-3" : "IX-3";
       const std::string reason = "'her' → " + gloss + (possessive ? ": possessive pronoun" : ": pronoun (pointing)");
@@ -560,13 +577,13 @@ class SentenceTranslator {
       return;
     }
     ++i_;
-    const bool looks_like_name = w.capitalized && !all_caps_ && l != "i" && !sentence_initial_word(w);
+    const bool initial = sentence_initial_word(w);
+    const bool looks_like_name = w.capitalized && !all_caps_ && l != "i" && (!initial || initial_name_);
     const auto candidates = lemma_candidates(l);
-    // A capitalised word that link-grammar's dictionary reads as a given name here ("Bill.m",
-    // "Rose.f") is a person's name, even when the same word as a noun has a sign (bill, rose, mark).
+    // A capitalised given name is a person's name, even when the same word as a noun has a sign
+    // (bill, rose, mark): see given_name().
     if (looks_like_name)
-      if (const english::ParsedWord* named = parsed(i_ - 1); named && is_given_name_tag(named->tag))
-        return fingerspell(w, "name (capitalized), a given name to link-grammar (" + named->tag + ")");
+      if (const auto why = given_name(i_ - 1)) return fingerspell(w, "name (capitalized), " + *why);
     if (looks_like_name) {
       // A capitalised word with a sign of its own (a place, a holiday, "Sundays") is signed.
       if (!inventory_.open_vocabulary())
@@ -639,20 +656,37 @@ class SentenceTranslator {
     return false;
   }
 
-  // Link-grammar marks the given names of its dictionary by sex: "John.m", "Mary.f", "Bill.m".
+  // Why capitalised word k (not opening its sentence, or opening it with initial_name_ set) is a
+  // given name, or nothing. Link-grammar's tag in this parse ("Bill.m", "Rose.f", "Pat.b") or its
+  // given-name lists when the parse took another reading ("Ask Mark" parses Mark.c, the currency;
+  // a place, Jordan.l, stays a place). Not after an article ("the Park"), and not a word whose
+  // most frequent WordNet sense is itself capitalised (God, Easter, German, Sunday): that thing's sign.
+  std::optional<std::string> given_name(std::size_t k) const {
+    const Word& w = w_[k];
+    const english::ParsedWord* p = parsed(k);
+    const bool tagged = p && is_given_name_tag(p->tag);
+    const bool listed = !tagged && english::is_given_name(w.text) && !(p && p->tag.ends_with(".l"));
+    if (!tagged && !listed) return std::nullopt;
+    if (k > 0 && w_[k - 1].kind == TokenKind::word &&
+        (w_[k - 1].lower == "the" || w_[k - 1].lower == "a" || w_[k - 1].lower == "an"))
+      return std::nullopt;
+    // A word that is itself a noun for a person (Mom, Dad, Grandma) is signed as that noun: the
+    // sign names the same person.
+    if (wordnet::first_sense_is_proper(w.lower) || wordnet::names_a_person(w.lower)) return std::nullopt;
+    return tagged ? "a given name to link-grammar (" + p->tag + ")"
+                  : "in link-grammar's list of given names (the parse read " + (p ? p->tag : std::string("nothing")) + ")";
+  }
+
+  // Link-grammar marks the given names of its dictionary by sex: "John.m", "Mary.f", "Pat.b" (both).
   static bool is_given_name_tag(std::string_view tag) {
     const auto dot = tag.rfind('.');
-    return dot != std::string_view::npos && dot > 0 && (tag.substr(dot) == ".m" || tag.substr(dot) == ".f");
+    return dot != std::string_view::npos && dot > 0 &&
+           (tag.substr(dot) == ".m" || tag.substr(dot) == ".f" || tag.substr(dot) == ".b");
   }
 
   // Whether the word before index k is a form of "be" or a linking verb (seem, feel, look, get, become).
   bool after_linking_verb(std::size_t k) const {
-    if (k == 0) return false;
-    static constexpr std::array kLinking{"am",    "is",     "are",    "was",   "were",  "be",    "been",   "being",
-                                         "seem",  "seems",  "seemed", "feel",  "feels", "felt",  "look",   "looks",
-                                         "looked", "get",   "gets",   "got",   "become", "became", "becomes"};
-    const std::string& before = w_[k - 1].lower;
-    return std::any_of(kLinking.begin(), kLinking.end(), [&](const char* v) { return before == v; });
+    return k > 0 && english::is_linking_verb(w_[k - 1].lower);
   }
 
   // WordNet has the form itself as an adjective (tired, worried, closed) and the lexicon signs it.
@@ -666,19 +700,27 @@ class SentenceTranslator {
 
   void sign(const Word& w, const std::string& gloss, std::string reason) {
     note(w, reason);
-    emit(make(gloss, GlossKind::sign, w, std::move(reason)), Role::plain);
+    const std::size_t k = static_cast<std::size_t>(&w - w_.data());
+    // A form the lexicon signs as written and WordNet lists as an adjective (surprised, scared,
+    // tired) is a state; its "by" names a cause, and the order stays.
+    const bool passive = !by_agent_ && parsed(k) && parsed(k)->passive_participle && !adjective_form_with_sign(w.lower);
+    if (passive) passive_seen_ = true;
+    emit(make(gloss, GlossKind::sign, w, std::move(reason)), passive ? Role::passive_verb : Role::plain);
   }
 
   std::vector<Word> w_;
   english::ParsedSentence parse_;
   std::size_t first_word_ = 0;  // index of the first word or number
   bool question_;
+  bool initial_name_;
   SignInventory& inventory_;
   std::vector<WordNote>& notes_;
   std::vector<Item> items_;
   std::size_t i_ = 0;
   bool all_caps_ = false;
   bool has_wh_ = false;
+  bool passive_seen_ = false;  // a passive participle has been signed in this sentence
+  bool by_agent_ = false;      // inside the by-phrase of a passive, until a pause
 };
 
 // Words of one sentence, contractions expanded.
@@ -726,6 +768,7 @@ english::ParsedSentence parse_words(const std::vector<Word>& words, std::string_
   out.tree = std::move(parsed.tree);
   out.roles = std::move(parsed.roles);
   out.clauses = parsed.clauses;
+  out.cost = parsed.cost;
   out.words.resize(words.size());
   // The parser's word indices (participle) → this sentence's word indices.
   for (auto& w : parsed.words)
@@ -743,6 +786,50 @@ english::ParsedSentence parse_words(const std::vector<Word>& words, std::string_
     }
   }
   return out;
+}
+
+// Whether the capitalised word opening a sentence is a given name rather than the common word
+// written with a capital because it opens the sentence ("Bill paid." vs "Hope is important.").
+// Link-grammar reads any capitalised word of its name lists as a name there (Bill.m, Hope.f), so its
+// tag alone does not decide. The test is the parse of the same words with that word in lower case:
+// a singular count noun cannot be a bare subject in English ("rose bought flowers." has no complete
+// linkage, "bill paid." only a costlier one), while a mass or abstract noun can ("hope is important."). A word whose most frequent WordNet sense
+// is itself capitalised (Easter, Sunday) is that thing, not a name.
+bool opens_with_given_name(const std::vector<Word>& words, const english::ParsedSentence& parse,
+                           std::string_view terminator) {
+  std::size_t first = 0;
+  while (first < words.size() && words[first].kind != TokenKind::word && words[first].kind != TokenKind::number) ++first;
+  if (!parse.parsed || first >= words.size() || first >= parse.words.size()) return false;
+  const Word& w = words[first];
+  if (w.kind != TokenKind::word || !w.capitalized || w.lower == "i" || w.text == utf8::upper(w.text)) return false;
+  const std::string& tag = parse.words[first].tag;
+  const auto dot = tag.rfind('.');
+  const bool name_tag = dot != std::string::npos && dot > 0 && (tag.substr(dot) == ".m" || tag.substr(dot) == ".f" ||
+                                                                 tag.substr(dot) == ".b");
+  if (!name_tag || wordnet::first_sense_is_proper(w.lower) || wordnet::names_a_person(w.lower)) return false;
+  std::vector<Word> lowered = words;
+  lowered[first].text = w.lower;
+  const english::ParsedSentence common = parse_words(lowered, terminator);
+  // The common word must be read as a noun, and as usual English: link-grammar links a bare count
+  // noun only at a cost, which the name reading does not pay.
+  if (!common.parsed || first >= common.words.size() || common.words[first].pos != english::PartOfSpeech::noun ||
+      common.cost > parse.cost)
+    return true;
+  // Link-grammar's reading as a mass noun (summer.n-u, art.n-u) is the common word.
+  if (common.words[first].tag.ends_with("-u")) return false;
+  // Link-grammar lets many count nouns go bare ("bill paid." parses). WordNet's first noun sense tells
+  // a thing one counts (a document, a plant, an artifact, a place) from a feeling, a time, a
+  // substance or an idea, which English leaves bare ("Hope is important.", "Summer is hot."). A bare
+  // countable thing that does something ("Bill paid.") is a person's name; one that only is something
+  // ("Bill is due today.", "Art is fun.") keeps the noun.
+  static constexpr std::array kCounted{"noun.artifact", "noun.communication", "noun.plant", "noun.animal",
+                                       "noun.object",   "noun.body",          "noun.location", "noun.possession"};
+  const std::string kind = wordnet::first_noun_sense_class(w.lower);
+  if (std::none_of(kCounted.begin(), kCounted.end(), [&](const char* c) { return kind == c; })) return false;
+  for (std::size_t k = first + 1; k < words.size() && k < parse.words.size(); ++k)
+    if (parse.words[k].pos == english::PartOfSpeech::verb)
+      return !english::is_linking_verb(words[k].lower);
+  return false;
 }
 
 // Reorders one clause: time expressions, the rest, moved negation, wh-words. Returns where the
@@ -765,6 +852,14 @@ std::size_t reorder_clause(std::vector<Item>& clause, bool wh_question) {
     return item.token.gloss.rfind("IX-", 0) == 0 || item.token.gloss == "WE";
   };
   if (negation_seen && negation_start + 1 < rest.size() && is_subject(rest[negation_start])) ++negation_start;
+  // A passive's agent ("by the teacher") goes before its verb: ASL has no passive, and DOOR LOCK
+  // TEACHER would read as the door locking the teacher; DOOR TEACHER LOCK keeps the door as the
+  // topic and the teacher as the one who acts.
+  if (const auto verb = std::find_if(rest.begin(), rest.end(), [](const Item& x) { return x.role == Role::passive_verb; });
+      verb != rest.end()) {
+    const auto agent_first = std::stable_partition(verb + 1, rest.end(), [](const Item& x) { return x.role == Role::agent; });
+    if (agent_first != verb + 1) std::rotate(verb, verb + 1, agent_first);
+  }
   clause.clear();
   for (auto* part : {&time, &rest, &negation, &wh})
     for (Item& item : *part) clause.push_back(std::move(item));
@@ -807,7 +902,8 @@ Translation translate_to_gloss(std::string_view english, SignInventory& inventor
     }
     std::string parse_text = parse.tree;
     if (!parse.roles.empty()) parse_text += "; " + parse.roles;
-    SentenceTranslator translator(std::move(words), std::move(parse), question, inventory, out.notes);
+    const bool initial_name = opens_with_given_name(words, parse, terminator);
+    SentenceTranslator translator(std::move(words), std::move(parse), question, initial_name, inventory, out.notes);
     std::vector<Item> items = translator.run();
     while (!items.empty() && items.back().role == Role::pause) items.pop_back();
 

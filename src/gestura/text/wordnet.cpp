@@ -166,4 +166,45 @@ bool names_a_person(std::string_view lemma) {
   return person;
 }
 
+bool first_sense_is_proper(std::string_view word) {
+  char buffer[kMaxWord];
+  if (!to_buffer(word, buffer)) return false;
+  for (char* c = buffer; *c; ++c) *c = static_cast<char>(std::tolower(static_cast<unsigned char>(*c)));
+  std::lock_guard lock(wordnet_mutex());
+  if (!ready_locked()) return false;
+  const std::string key = std::string("C") + buffer;
+  if (const auto* hit = cached(key)) return !hit->empty();
+  bool proper = false;
+  if (IndexPtr index = index_lookup(buffer, NOUN)) {
+    // Senses are in frequency order; an untagged first sense (Frank, the Germanic people) is no evidence.
+    if (index->tagged_cnt > 0 && index->off_cnt > 0)
+      if (SynsetPtr s = read_synset(NOUN, index->offset[0], buffer)) {
+        for (int i = 0; i < s->wcount; ++i)
+          if (from_wordnet(s->words[i]) == buffer) proper = std::isupper(static_cast<unsigned char>(s->words[i][0])) != 0;
+        free_synset(s);
+      }
+    free_index(index);
+  }
+  remember(key, proper ? std::vector<std::string>{"proper"} : std::vector<std::string>{});
+  return proper;
+}
+
+std::string first_noun_sense_class(std::string_view word) {
+  char buffer[kMaxWord];
+  if (!to_buffer(word, buffer)) return {};
+  for (char* c = buffer; *c; ++c) *c = static_cast<char>(std::tolower(static_cast<unsigned char>(*c)));
+  std::lock_guard lock(wordnet_mutex());
+  if (!ready_locked()) return {};
+  const std::string key = std::string("F") + buffer;
+  if (const auto* hit = cached(key)) return hit->empty() ? std::string() : hit->front();
+  std::string out;
+  if (SynsetPtr first = findtheinfo_ds(buffer, NOUN, SYNS, 1)) {
+    constexpr int kLexicographerFiles = 45;  // WordNet 3.0's lexnames: adj.all (0) … verb.weather (44)
+    if (first->fnum >= 0 && first->fnum < kLexicographerFiles && lexfiles[first->fnum]) out = lexfiles[first->fnum];
+    free_syns(first);
+  }
+  remember(key, out.empty() ? std::vector<std::string>{} : std::vector<std::string>{out});
+  return out;
+}
+
 }  // namespace gestura::wordnet

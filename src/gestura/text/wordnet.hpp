@@ -28,4 +28,13 @@ std::vector<std::string> synonyms(std::string_view lemma, english::PartOfSpeech 
 // in space. False for unknown words and without the database.
 bool names_a_person(std::string_view lemma);
 
+// Whether the most frequent noun sense of `word` (a sense seen in WordNet's tagged texts) names one
+// thing written with a capital: God, Easter, Sunday, China, German — so a capitalised "Easter" is
+// the holiday, while "Bill", "Rose" or "Mark", whose first senses are common nouns, may be names.
+bool first_sense_is_proper(std::string_view word);
+
+// WordNet's lexicographer file of the most frequent noun sense of `word`: "noun.plant" (rose),
+// "noun.communication" (bill), "noun.feeling" (hope), "noun.time" (summer); empty when unknown.
+std::string first_noun_sense_class(std::string_view word);
+
 }  // namespace gestura::wordnet
