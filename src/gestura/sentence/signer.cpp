@@ -18,6 +18,7 @@
 #include "gestura/lexicon/clip_sign.hpp"
 #include "gestura/sentence/clip_sign_motion.hpp"
 #include "gestura/sentence/fingerspelling_performance.hpp"
+#include "gestura/sentence/lexicon_memo.hpp"
 #include "gestura/sentence/role_shift.hpp"
 #include "gestura/sentence/sign_prosody.hpp"
 #include "gestura/sentence/signing_space.hpp"
@@ -166,13 +167,31 @@ bool is_blank(std::string_view text) {
 }  // namespace
 
 Signer::Signer(const Avatar& avatar, LayeredLexicon& lexicon)
-    : avatar_(&avatar), lexicon_(&lexicon), rig_(make_signing_rig(avatar)), cache_(std::make_unique<SignMotionCache>(rig_)) {}
+    : avatar_(&avatar),
+      lexicon_(&lexicon),
+      rig_(make_signing_rig(avatar)),
+      cache_(std::make_unique<SignMotionCache>(rig_)),
+      memo_(std::make_unique<LexiconMemo>(lexicon)) {}
 
 Signer::~Signer() = default;
 
 void Signer::keep_citations_in(const std::string& path) {
   store_ = std::make_unique<CitationStore>(path, rig_);
   cache_->persist_to(store_->readable() ? store_.get() : nullptr);
+}
+
+float Signer::modelled_seconds(const std::string& notation) const {
+  {
+    std::lock_guard lock(modelled_mutex_);
+    if (const auto it = modelled_.find(notation); it != modelled_.end()) return it->second;
+  }
+  // Throws for a notation that does not parse (nothing is kept then).
+  const float seconds = kPlannedPerModelSecond * citation_timing(sign::parse_hamnosys_unicode(notation)).moving();
+  std::lock_guard lock(modelled_mutex_);
+  constexpr std::size_t kMaxKept = 8192;  // a long-lived server may meet many notations
+  if (modelled_.size() >= kMaxKept) modelled_.clear();
+  modelled_.emplace(notation, seconds);
+  return seconds;
 }
 
 const ClipSignMotion& Signer::clip_sign(const SignEntry& entry, const GlossToken* placed) const {
@@ -206,8 +225,9 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
     throw Error("text too long: " + std::to_string(text.size()) + " bytes, at most " + std::to_string(kMaxSayBytes) +
                 " in one utterance; split it into shorter pieces");
 
-  LexiconInventory inventory(*lexicon_, options.lang);
-  const Translation translation = translate_to_gloss(text, inventory);
+  LexiconMemo::Utterance lexicon = memo_->utterance(options.lang);
+  const std::shared_ptr<const Translation> translated = lexicon.translation(text);
+  const Translation& translation = *translated;
   const std::size_t n = translation.glosses.size();
   if (n > kMaxSayGlosses)
     throw Error("text too long: " + std::to_string(n) + " glosses, at most " + std::to_string(kMaxSayGlosses) +
@@ -242,7 +262,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
   // (sentence/signing_space.hpp); its lexicon sign is then placed->sign().
   auto sign_gloss = [&](const std::string& gloss, bool phrase_final, float extra_hold,
                         const GlossToken* placed = nullptr) -> std::optional<std::array<float, 2>> {
-    const std::optional<SignEntry> entry = lexicon_->find(placed ? placed->sign() : gloss, options.lang);
+    const std::shared_ptr<const SignEntry> entry = lexicon.find(placed ? placed->sign() : gloss);
     if (!entry) return std::nullopt;
     if (entry->notation_kind == NotationKind::clip) {
       // A keyframed sign plays its recorded motion, moved to its places in space as a notated one is.
@@ -263,7 +283,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
       return std::nullopt;
     }
     try {
-      const float modelled = kPlannedPerModelSecond * citation_timing(sign::parse_hamnosys_unicode(entry->notation)).moving();
+      const float modelled = modelled_seconds(entry->notation);
       if (placed && uses_space(*placed))
         return builder.add_sign(cache_->sign(entry->notation, space_key(*placed),
                                              [&](const SignPlan& citation) { return in_space(citation, rig_, *placed); }),
@@ -315,7 +335,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
         std::optional<std::array<float, 2>> whole;
         for (std::size_t p = 0; p < pieces.size(); ++p) {
           std::vector<std::string> parts{pieces[p]};
-          if (!lexicon_->find(pieces[p], options.lang)) parts = {pieces[p].substr(0, 1), pieces[p].substr(1)};
+          if (!lexicon.find(pieces[p])) parts = {pieces[p].substr(0, 1), pieces[p].substr(1)};
           for (std::size_t q = 0; q < parts.size(); ++q) {
             if (parts[q].empty()) continue;
             const bool last = p + 1 == pieces.size() && q + 1 == parts.size();
@@ -405,7 +425,7 @@ SentencePerformance Signer::sign_sequence(std::span<const NotatedSign> signs, co
   UtteranceBuilder builder(rig_, options.speed);
   float first_start = -1.0f, last_end = 0.0f;
   for (std::size_t i = 0; i < signs.size(); ++i) {
-    const float modelled = kPlannedPerModelSecond * citation_timing(sign::parse_hamnosys_unicode(signs[i].notation)).moving();
+    const float modelled = modelled_seconds(signs[i].notation);
     const std::array<float, 2> span = builder.add_sign(cache_->sign(signs[i].notation), i + 1 == signs.size(), 0.0f, modelled);
     if (first_start < 0.0f) first_start = span[0];
     last_end = span[1];

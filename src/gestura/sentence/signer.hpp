@@ -29,6 +29,7 @@
 namespace gestura {
 
 class CitationStore;
+class LexiconMemo;
 struct ClipSignMotion;
 struct GlossToken;
 
@@ -107,6 +108,12 @@ class Signer {
   SigningRig rig_;
   std::unique_ptr<SignMotionCache> cache_;
   std::unique_ptr<CitationStore> store_;
+  std::unique_ptr<LexiconMemo> memo_;  // the lexicon's answers, kept while it is unchanged
+  // The citation movement's seconds the notation models (sign/citation_timing.hpp), by notation:
+  // the notation is parsed once, not at every utterance.
+  float modelled_seconds(const std::string& notation) const;
+  mutable std::mutex modelled_mutex_;
+  mutable std::unordered_map<std::string, float> modelled_;
   // Clip signs made ready for this rig, by their stored bytes.
   // `placed`: the gloss as translated when it is made at places of the signing space.
   const ClipSignMotion& clip_sign(const SignEntry& entry, const GlossToken* placed = nullptr) const;
