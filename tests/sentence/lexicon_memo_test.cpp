@@ -10,14 +10,24 @@
 #include "gestura/sentence/lexicon_memo.hpp"
 #include "gestura/sentence/signer.hpp"
 #include "gestura/text/lexicon_inventory.hpp"
-#include "gestura/text/translator.hpp"
+#include "support/signing_avatar.hpp"
 
 namespace gestura {
 namespace {
 
+// The avatar is the one the sign tests share and one signer serves every test (building them is the
+// slow part); a user layer above the built-in lexicon, empty between tests.
 struct World {
-  Avatar avatar = build_avatar();
+  const Avatar& avatar = test::signing_avatar().avatar;
   Lexicon builtin = load_builtin_lexicon(builtin_lexicon_files());
+  Lexicon user = Lexicon::in_memory();
+  LayeredLexicon layers;
+  std::optional<Signer> signer;
+  World() {
+    layers.push_layer(builtin);
+    layers.push_layer(user);
+    signer.emplace(avatar, layers);
+  }
 };
 
 World& world() {
@@ -43,7 +53,7 @@ bool signs(const SentencePerformance& p, const std::string& gloss) {
   return false;
 }
 
-TEST(LexiconMemo, AnswersAsTheLexiconDoes) {
+TEST(SignerLexiconMemo, AnswersAsTheLexiconDoes) {
   LayeredLexicon layers;
   layers.push_layer(world().builtin);
   LexiconMemo memo(layers);
@@ -60,12 +70,9 @@ TEST(LexiconMemo, AnswersAsTheLexiconDoes) {
   }
 }
 
-TEST(LexiconMemo, ASignAddedBetweenUtterancesIsSignedInTheNextOne) {
-  Lexicon user = Lexicon::in_memory();
-  LayeredLexicon layers;
-  layers.push_layer(world().builtin);
-  layers.push_layer(user);
-  Signer signer(world().avatar, layers);
+TEST(SignerLexiconMemo, ASignAddedBetweenUtterancesIsSignedInTheNextOne) {
+  Lexicon& user = world().user;
+  const Signer& signer = *world().signer;
   SayOptions quick;
   quick.mouthing = false;
 
@@ -81,12 +88,9 @@ TEST(LexiconMemo, ASignAddedBetweenUtterancesIsSignedInTheNextOne) {
   for (std::size_t i = 0; i < before.glosses.size(); ++i) EXPECT_EQ(removed.glosses[i].gloss, before.glosses[i].gloss);
 }
 
-TEST(LexiconMemo, WhatATransactionSawIsNotKeptAfterItsRollback) {
-  Lexicon user = Lexicon::in_memory();
-  LayeredLexicon layers;
-  layers.push_layer(world().builtin);
-  layers.push_layer(user);
-  Signer signer(world().avatar, layers);
+TEST(SignerLexiconMemo, WhatATransactionSawIsNotKeptAfterItsRollback) {
+  Lexicon& user = world().user;
+  const Signer& signer = *world().signer;
   SayOptions quick;
   quick.mouthing = false;
   signer.say("A zebra.", quick);  // the memo holds the answers without ZEBRA
@@ -100,13 +104,11 @@ TEST(LexiconMemo, WhatATransactionSawIsNotKeptAfterItsRollback) {
   EXPECT_FALSE(signs(signer.say("A zebra.", quick), "ZEBRA"));
 }
 
-TEST(LexiconMemo, AWarmUtteranceIsTheSameAsTheFirst) {
-  LayeredLexicon layers;
-  layers.push_layer(world().builtin);
-  Signer signer(world().avatar, layers);
+TEST(SignerLexiconMemo, AWarmUtteranceIsTheSameAsTheFirst) {
+  const Signer& signer = *world().signer;
   SayOptions quick;
   quick.mouthing = false;
-  const char* text = "My sister bought a new book.";
+  const char* text = "My sister bought a book.";
   const SentencePerformance first = signer.say(text, quick);
   const SentencePerformance again = signer.say(text, quick);
   ASSERT_EQ(first.glosses.size(), again.glosses.size());
