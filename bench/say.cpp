@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "gestura/lexicon/lexicon_files.hpp"
 #include "gestura/sentence/citation_store.hpp"
@@ -52,6 +53,29 @@ void BM_SaySentence(benchmark::State& state) {
   state.counters["ik_every_frame"] = p.motion.escaped;
 }
 BENCHMARK(BM_SaySentence)->Arg(1)->Arg(0)->ArgNames({"mouthing"})->Unit(benchmark::kMillisecond);
+
+// S1 warm on a text the signer has not met (its signs it has): the 15-word sentence with a new
+// name every iteration ("… for Annaab."), so the text is translated and parsed afresh each time
+// rather than found among the texts translated before (sentence/lexicon_memo.hpp).
+void BM_SaySentenceUnseenText(benchmark::State& state) {
+  gestura::SayOptions options;
+  options.mouthing = false;
+  const std::string stem(kSentence, std::string_view(kSentence).size() - 1);  // without the full stop
+  world().signer->say(kSentence, options);
+  gestura::SentencePerformance p;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::string text = stem;
+    for (std::size_t n = ++k; n > 0; n /= 26) text.push_back(static_cast<char>('a' + n % 26));
+    text.push_back('.');
+    state.ResumeTiming();
+    p = world().signer->say(text, options);
+    benchmark::DoNotOptimize(p.clip.rotations.data());
+  }
+  state.counters["performance_s"] = p.duration;
+}
+BENCHMARK(BM_SaySentenceUnseenText)->Unit(benchmark::kMillisecond);
 
 // A sentence two of whose transitions would pass through the head (SLEEP at the face): they are bent
 // through via postures and re-solved by IK in their middle, every call.

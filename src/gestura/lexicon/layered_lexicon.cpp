@@ -7,6 +7,16 @@ namespace gestura {
 
 void LayeredLexicon::push_layer(Lexicon& layer) { layers_.push_back(&layer); }
 
+std::optional<std::vector<std::int64_t>> LayeredLexicon::version() {
+  std::vector<std::int64_t> out{static_cast<std::int64_t>(layers_.size())};
+  for (Lexicon* layer : layers_) {
+    const auto v = layer->version();
+    if (!v) return std::nullopt;
+    out.insert(out.end(), v->begin(), v->end());
+  }
+  return out;
+}
+
 bool LayeredLexicon::hidden_above(std::size_t layer, const SignEntry& entry) {
   for (std::size_t above = layer + 1; above < layers_.size(); ++above)
     if (!layers_[above]->find_all(entry.gloss, entry.language).empty()) return true;

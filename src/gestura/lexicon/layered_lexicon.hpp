@@ -3,6 +3,8 @@
 // built-in lexicon), later layers are user lexicons. A layer that has a gloss in a sign language
 // hides every variant of that gloss+language below it, so a user can both add signs and replace
 // built-in ones without editing the built-in data. The view does not own the layers.
+#include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -15,6 +17,10 @@ class LayeredLexicon {
   // Adds `layer` on top of the layers added before.
   void push_layer(Lexicon& layer);
   std::size_t layer_count() const { return layers_.size(); }
+  // The layers' versions (Lexicon::version) after their number: equal while no layer has changed and
+  // none was added, so answers read under one value may be kept; nullopt while a layer is inside a
+  // transaction.
+  std::optional<std::vector<std::int64_t>> version();
 
   std::optional<SignEntry> find(std::string_view gloss, std::string_view language, int variant = 1);
   std::vector<SignEntry> find_all(std::string_view gloss, std::string_view language = {});

@@ -203,21 +203,26 @@ std::size_t Lexicon::remove(std::string_view gloss, std::string_view language, s
   return removed;
 }
 
+std::optional<std::array<std::int64_t, 2>> Lexicon::version() {
+  if (sqlite3_get_autocommit(db_.handle()) == 0) return std::nullopt;
+  auto& data_version = db_.cached("PRAGMA data_version");
+  data_version.step();
+  const std::int64_t committed = data_version.integer(0);
+  data_version.reset();
+  return std::array<std::int64_t, 2>{committed, sqlite3_total_changes64(db_.handle())};
+}
+
 std::vector<SignEntry> Lexicon::query(std::string_view where_and_order, const std::vector<std::string>& params) {
   // Inside a transaction the answer may hold what a rollback takes back: not kept.
-  if (sqlite3_get_autocommit(db_.handle()) == 0) return query_database(where_and_order, params);
+  const auto now = version();
+  if (!now) return query_database(where_and_order, params);
   std::string key(where_and_order);
   for (const std::string& p : params) key.append(1, '\x1f').append(p);
   {
-    auto& version = db_.cached("PRAGMA data_version");
-    version.step();
-    const std::int64_t data_version = version.integer(0);
-    version.reset();
-    const std::int64_t changes = sqlite3_total_changes64(db_.handle());
-    if (data_version != memo_.data_version || changes != memo_.changes) {
+    if ((*now)[0] != memo_.data_version || (*now)[1] != memo_.changes) {
       memo_.results.clear();
-      memo_.data_version = data_version;
-      memo_.changes = changes;
+      memo_.data_version = (*now)[0];
+      memo_.changes = (*now)[1];
     }
     if (auto hit = memo_.results.find(key); hit != memo_.results.end()) return hit->second;
   }

@@ -2,6 +2,7 @@
 // A lexicon of signs stored in SQLite. One Lexicon owns one connection; it is not shared between
 // threads. Files are opened in WAL mode so readers in other processes see the last committed state
 // while a writer works; every write is one transaction.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -65,6 +66,11 @@ class Lexicon {
   void atomically(const std::function<void()>& body);
 
   sqlite::Database& database() { return db_; }
+
+  // A value that changes with every commit to the file, by this connection or another (SQLite's
+  // data_version and this connection's change count): answers read while it stays equal are still
+  // true. nullopt inside a transaction, whose writes a rollback may take back.
+  std::optional<std::array<std::int64_t, 2>> version();
 
  private:
   explicit Lexicon(sqlite::Database db);

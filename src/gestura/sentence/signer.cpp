@@ -18,6 +18,7 @@
 #include "gestura/lexicon/clip_sign.hpp"
 #include "gestura/sentence/clip_sign_motion.hpp"
 #include "gestura/sentence/fingerspelling_performance.hpp"
+#include "gestura/sentence/lexicon_memo.hpp"
 #include "gestura/sentence/role_shift.hpp"
 #include "gestura/sentence/sign_prosody.hpp"
 #include "gestura/sentence/signing_space.hpp"
@@ -169,13 +170,34 @@ bool is_blank(std::string_view text) {
 }  // namespace
 
 Signer::Signer(const Avatar& avatar, LayeredLexicon& lexicon)
-    : avatar_(&avatar), lexicon_(&lexicon), rig_(make_signing_rig(avatar)), cache_(std::make_unique<SignMotionCache>(rig_)) {}
+    : avatar_(&avatar),
+      lexicon_(&lexicon),
+      rig_(make_signing_rig(avatar)),
+      cache_(std::make_unique<SignMotionCache>(rig_)),
+      memo_(std::make_unique<LexiconMemo>(lexicon)) {}
 
 Signer::~Signer() = default;
 
 void Signer::keep_citations_in(const std::string& path) {
   store_ = std::make_unique<CitationStore>(path, rig_);
   cache_->persist_to(store_->readable() ? store_.get() : nullptr);
+}
+
+Signer::ModelledTiming Signer::modelled_timing(const std::string& notation) const {
+  {
+    std::lock_guard lock(modelled_mutex_);
+    if (const auto it = modelled_.find(notation); it != modelled_.end()) return it->second;
+  }
+  // Throws for a notation that does not parse (nothing is kept then).
+  const CitationTiming model = citation_timing(sign::parse_hamnosys_unicode(notation));
+  const ModelledTiming timing{kPlannedPerModelSecond * model.moving(),
+                              model.movements > 0 ? kPlannedPerModelSecond * model.movement / static_cast<float>(model.movements) : 0.0f,
+                              static_cast<int>(model.repeats.size())};
+  std::lock_guard lock(modelled_mutex_);
+  constexpr std::size_t kMaxKept = 8192;  // a long-lived server may meet many notations
+  if (modelled_.size() >= kMaxKept) modelled_.clear();
+  modelled_.emplace(notation, timing);
+  return timing;
 }
 
 const ClipSignMotion& Signer::clip_sign(const SignEntry& entry, const GlossToken* placed) const {
@@ -209,8 +231,9 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
     throw Error("text too long: " + std::to_string(text.size()) + " bytes, at most " + std::to_string(kMaxSayBytes) +
                 " in one utterance; split it into shorter pieces");
 
-  LexiconInventory inventory(*lexicon_, options.lang);
-  const Translation translation = translate_to_gloss(text, inventory);
+  LexiconMemo::Utterance lexicon = memo_->utterance(options.lang);
+  const std::shared_ptr<const Translation> translated = lexicon.translation(text);
+  const Translation& translation = *translated;
   const std::size_t n = translation.glosses.size();
   if (n > kMaxSayGlosses)
     throw Error("text too long: " + std::to_string(n) + " glosses, at most " + std::to_string(kMaxSayGlosses) +
@@ -245,7 +268,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
   // (sentence/signing_space.hpp); its lexicon sign is then placed->sign().
   auto sign_gloss = [&](const std::string& gloss, bool phrase_final, float extra_hold,
                         const GlossToken* placed = nullptr) -> std::optional<std::array<float, 2>> {
-    const std::optional<SignEntry> entry = lexicon_->find(placed ? placed->sign() : gloss, options.lang);
+    const std::shared_ptr<const SignEntry> entry = lexicon.find(placed ? placed->sign() : gloss);
     if (!entry) return std::nullopt;
     if (entry->notation_kind == NotationKind::clip) {
       // A keyframed sign plays its recorded motion, moved to its places in space as a notated one is.
@@ -266,15 +289,13 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
       return std::nullopt;
     }
     try {
-      const CitationTiming model = citation_timing(sign::parse_hamnosys_unicode(entry->notation));
-      const float modelled = kPlannedPerModelSecond * model.moving();
-      const float once = model.movements > 0 ? kPlannedPerModelSecond * model.movement / static_cast<float>(model.movements) : 0.0f;
+      const ModelledTiming model = modelled_timing(entry->notation);
       if (placed && uses_space(*placed))
         return builder.add_sign(cache_->sign(entry->notation, space_key(*placed),
                                              [&](const SignPlan& citation) { return in_space(citation, rig_, *placed); }),
-                                phrase_final, extra_hold, modelled, once, static_cast<int>(model.repeats.size()));
-      return builder.add_sign(cache_->sign(entry->notation), phrase_final, extra_hold, modelled, once,
-                              static_cast<int>(model.repeats.size()));
+                                phrase_final, extra_hold, model.moving, model.once, model.repeats);
+      return builder.add_sign(cache_->sign(entry->notation), phrase_final, extra_hold, model.moving, model.once,
+                              model.repeats);
     } catch (const Error& e) {
       out.notes.push_back(gloss + ": its notation cannot be performed (" + e.what() + ")");
       return std::nullopt;
@@ -321,7 +342,7 @@ SentencePerformance Signer::say(std::string_view text, const SayOptions& options
         std::optional<std::array<float, 2>> whole;
         for (std::size_t p = 0; p < pieces.size(); ++p) {
           std::vector<std::string> parts{pieces[p]};
-          if (!lexicon_->find(pieces[p], options.lang)) parts = {pieces[p].substr(0, 1), pieces[p].substr(1)};
+          if (!lexicon.find(pieces[p])) parts = {pieces[p].substr(0, 1), pieces[p].substr(1)};
           for (std::size_t q = 0; q < parts.size(); ++q) {
             if (parts[q].empty()) continue;
             const bool last = p + 1 == pieces.size() && q + 1 == parts.size();
@@ -411,12 +432,9 @@ SentencePerformance Signer::sign_sequence(std::span<const NotatedSign> signs, co
   UtteranceBuilder builder(rig_, options.speed);
   float first_start = -1.0f, last_end = 0.0f;
   for (std::size_t i = 0; i < signs.size(); ++i) {
-    const CitationTiming model = citation_timing(sign::parse_hamnosys_unicode(signs[i].notation));
-    const float modelled = kPlannedPerModelSecond * model.moving();
-    const float once = model.movements > 0 ? kPlannedPerModelSecond * model.movement / static_cast<float>(model.movements) : 0.0f;
+    const ModelledTiming model = modelled_timing(signs[i].notation);
     const std::array<float, 2> span =
-        builder.add_sign(cache_->sign(signs[i].notation), i + 1 == signs.size(), 0.0f, modelled, once,
-                         static_cast<int>(model.repeats.size()));
+        builder.add_sign(cache_->sign(signs[i].notation), i + 1 == signs.size(), 0.0f, model.moving, model.once, model.repeats);
     if (first_start < 0.0f) first_start = span[0];
     last_end = span[1];
     out.glosses.push_back({signs[i].gloss, signs[i].gloss, span[0], span[1]});

@@ -29,6 +29,7 @@
 namespace gestura {
 
 class CitationStore;
+class LexiconMemo;
 struct ClipSignMotion;
 struct GlossToken;
 
@@ -107,6 +108,18 @@ class Signer {
   SigningRig rig_;
   std::unique_ptr<SignMotionCache> cache_;
   std::unique_ptr<CitationStore> store_;
+  std::unique_ptr<LexiconMemo> memo_;  // the lexicon's answers, kept while it is unchanged
+  // What the timing model (sign/citation_timing.hpp) says of a notation, in planned seconds: the
+  // whole movement, one of its movements (0 when it has none), and how many repeats it makes. Kept
+  // by notation, so a notation is parsed once, not at every utterance.
+  struct ModelledTiming {
+    float moving = 0.0f;
+    float once = 0.0f;
+    int repeats = 0;
+  };
+  ModelledTiming modelled_timing(const std::string& notation) const;
+  mutable std::mutex modelled_mutex_;
+  mutable std::unordered_map<std::string, ModelledTiming> modelled_;
   // Clip signs made ready for this rig, by their stored bytes.
   // `placed`: the gloss as translated when it is made at places of the signing space.
   const ClipSignMotion& clip_sign(const SignEntry& entry, const GlossToken* placed = nullptr) const;

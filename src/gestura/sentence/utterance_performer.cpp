@@ -1,7 +1,9 @@
 #include "gestura/sentence/utterance_performer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "gestura/core/error.hpp"
 #include "gestura/sign/movement_timing.hpp"
@@ -216,8 +218,49 @@ class HandPerformer {
     const std::vector<int>& joints = cache_.joints(hand_);
     blend(m, p, u, scratch_posture_);
     for (std::size_t j = 0; j < n_; ++j) scratch_pose_.rotations[joint_slot(joints[j])] = scratch_posture_[j];
-    local_to_model(rig.skeleton(), scratch_pose_, scratch_model_);
+    update_model();
     return hand_penetration(rig, hand_, scratch_model_, scratch_points_);
+  }
+
+  // scratch_model_ from scratch_pose_, in which only the hand's joints move: the first time the
+  // whole body, then only the arm's subtree (clavicle to fingertips), whose joints follow one another
+  // in the skeleton; the same products as local_to_model over the whole body.
+  void update_model() const {
+    const Skeleton& s = cache_.rig().skeleton();
+    if (!model_ready_) {
+      local_to_model(s, scratch_pose_, scratch_model_);
+      model_ready_ = true;
+      subtree_ = arm_subtree(s);
+      for (std::size_t i = subtree_[0]; i < subtree_[1]; ++i)
+        subtree_parents_.push_back(static_cast<std::int16_t>(i == subtree_[0] ? -1 : s.parents[i] - static_cast<int>(subtree_[0])));
+      return;
+    }
+    if (subtree_[1] == 0) {
+      local_to_model(s, scratch_pose_, scratch_model_);
+      return;
+    }
+    const std::size_t first = subtree_[0], count = subtree_[1] - subtree_[0];
+    const int parent = s.parents[first];
+    local_to_model(subtree_parents_, std::span(scratch_pose_.translations).subspan(first, count),
+                   std::span(scratch_pose_.rotations).subspan(first, count), std::span(scratch_pose_.scales).subspan(first, count),
+                   std::span(scratch_model_).subspan(first, count),
+                   parent < 0 ? mat4(1.0f) : scratch_model_[static_cast<std::size_t>(parent)]);
+  }
+
+  // [first, end) of the joints below and including the hand's first joint when they are contiguous
+  // and hold all its joints; {0, 0} otherwise (then the whole body is recomputed).
+  std::array<std::size_t, 2> arm_subtree(const Skeleton& s) const {
+    const std::vector<int>& joints = cache_.joints(hand_);
+    const std::size_t n = s.size(), first = joint_slot(*std::min_element(joints.begin(), joints.end()));
+    std::vector<char> below(n, 0);
+    below[first] = 1;
+    std::size_t end = first + 1;
+    while (end < n && s.parents[end] >= 0 && below[static_cast<std::size_t>(s.parents[end])]) below[end++] = 1;
+    for (std::size_t i = end; i < n; ++i)
+      if (s.parents[i] >= 0 && below[static_cast<std::size_t>(s.parents[i])]) return {0, 0};
+    for (int j : joints)
+      if (!below[joint_slot(j)]) return {0, 0};
+    return {first, end};
   }
 
   Hand hand_;
@@ -231,6 +274,9 @@ class HandPerformer {
   mutable std::vector<mat4> scratch_model_ = std::vector<mat4>(cache_.rig().skeleton().size());
   mutable HandPoints scratch_points_;
   mutable std::vector<quat> scratch_posture_ = std::vector<quat>(n_);
+  mutable bool model_ready_ = false;
+  mutable std::array<std::size_t, 2> subtree_{};
+  mutable std::vector<std::int16_t> subtree_parents_;
 };
 
 }  // namespace
@@ -279,12 +325,14 @@ Clip perform_utterance(const SignPlan& plan, std::span<const CachedSignSpan> sig
     for (std::size_t f = 0; f < frames; ++f) {
       const float t = static_cast<float>(f) / fps;
       performer.evaluate(motion, t, cursor, posture);
+      // Stored unit length and continuous (make_continuous, in the same pass).
       for (std::size_t j = 0; j < joints.size(); ++j) {
+        quat q = glm::normalize(posture[j]);
+        if (f > 0 && glm::dot(q, tracks[j]->values[f - 1]) < 0) q = -q;
         tracks[j]->times[f] = t;
-        tracks[j]->values[f] = posture[j];
+        tracks[j]->values[f] = q;
       }
     }
-    for (QuatTrack* tr : tracks) make_continuous(*tr);
   }
   if (stats) *stats = st;
   return clip;

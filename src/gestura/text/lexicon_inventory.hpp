@@ -16,6 +16,8 @@ class LexiconInventory final : public SignInventory {
   std::optional<std::string> gloss_for(std::string_view word) override;
   // The agreement field of the gloss's first variant in the chosen language (the top layer's).
   Agreement agreement_of(std::string_view gloss) override;
+  // How many answers are kept.
+  std::size_t remembered() const { return cache_.size() + agreement_cache_.size(); }
 
  private:
   LayeredLexicon& lexicon_;
