@@ -23,9 +23,9 @@ struct ImageRect {
 // Buffers reused from frame to frame (no allocation per frame once grown).
 struct EdgeFilterScratch {
   std::vector<std::uint8_t> source;  // the pixels read: the rectangle grown by the filter's reach
-  std::vector<float> luma;           // their luma, 0..1
-  std::vector<float> row_min, row_max;  // per pixel: the smallest / largest luma of it and its row neighbours
-  std::vector<float> range;             // one row: the luma range of each pixel's 3×3 neighbourhood
+  std::vector<std::uint8_t> luma;    // their luma, 8 bit (for the pre-test only)
+  std::vector<std::uint8_t> row_min, row_max;  // per pixel: the smallest / largest luma of it and its row neighbours
+  std::vector<std::uint8_t> range;             // one row: the luma range of each pixel's 3×3 neighbourhood
 };
 
 // Smooths the edges of `image` inside `rect` (clipped to the image); reads up to 6 pixels beyond it.
