@@ -42,11 +42,6 @@ constexpr float kReadPlaceAtBody = 0.02f;
 constexpr float kReadPlaceInSpace = 0.05f;
 constexpr float kReadTurn = deg(25.0f);
 constexpr float kReadDepth = 0.01f;
-// An elbow above its shoulder (the upper arm raised past 90°, the worst band of RULA's upper-arm
-// score, McAtamney & Corlett 1993) costs a unit per 20 cm of its height. Signers keep the elbow
-// below the shoulder except for a few signs at the top of the head; an elbow above the head is
-// never seen.
-constexpr float kReadRaisedElbow = 0.20f;
 
 float wrap_angle(float a) { return std::remainder(a, 2.0f * kPi); }
 
@@ -308,16 +303,15 @@ struct ArmCandidate {
   float reading = 0.0f;  // reading_miss alone
 };
 
-// How an arm reads (reading_miss), with what a viewer sees at once also counted in the same units:
-// a hand inside the body (a unit per kReadDepth deeper than the margin and kEscapeTolerance) and an
-// elbow raised above its shoulder (a unit per kReadRaisedElbow).
+// How an arm reads (reading_miss), with a hand inside the body, which a viewer sees at once, counted
+// in the same units (a unit per kReadDepth deeper than the margin and kEscapeTolerance). No cost on
+// elbow height here: an arm continued low would then be kept 2 cm off where one without history
+// lands on its place (ASL OUTSIDE), and the sign would depend on where the arm came from.
 float arm_score(const SigningRig& rig, const HandRig& h, const HandState& state, float body_margin, const Pose& pose,
                 std::vector<mat4>& model, HandPoints& points, float& reading) {
-  reading = reading_miss(rig, h, state, pose, model, points);  // leaves `model` posed
-  const float raised = joint_position(model, h.elbow).y - joint_position(model, h.shoulder).y;
+  reading = reading_miss(rig, h, state, pose, model, points);
   const float depth = hand_depth(rig, h, body_margin, pose, model, points);
-  return reading + std::max(0.0f, depth - body_margin - kEscapeTolerance) / kReadDepth +
-         std::max(0.0f, raised) / kReadRaisedElbow;
+  return reading + std::max(0.0f, depth - body_margin - kEscapeTolerance) / kReadDepth;
 }
 
 // The arm solved from `prefer` (seed_arm, then refine_arm), as a candidate.
@@ -346,7 +340,7 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
   // as a hand without history is (the whole elbow circle searched); when even the better of those
   // is lost, last frame's arm is a candidate too. A lost arm gives way to one that is not;
   // otherwise the arm kept is the continued one unless another scores kReadingGain better
-  // (arm_score: how it reads, body depth, elbow height) and reads as the notated sign (an elbow
+  // (arm_score: how it reads, body depth) and reads as the notated sign (an elbow
   // that jumps round its circle is seen: it has to buy a hand that reads), or the continued arm is
   // in the body.
   const HandRig& h = rig.hand(hand);

@@ -5,7 +5,7 @@
 // that arm lands over 1 cm off its plan, ends in the body or is lost, the posture is also solved
 // as a hand without history is, and, when even that is lost, last frame's arm is a candidate; the
 // one kept reads best as the notated sign (place and turn against what still reads as them), with
-// a hand in the body and an elbow above its shoulder counted against it.
+// a hand in the body counted against it.
 // Where a hand lands depends on its plan, hardly on where the arm came from.
 // One frame of perform_plan, and what the sentence layer uses to solve a single posture, so both
 // solve exactly the same problem.
