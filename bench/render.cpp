@@ -21,7 +21,6 @@
 #include "gestura/render/subject.hpp"
 #include "gestura/render/test_motion.hpp"
 #include "gestura/render/video_writer.hpp"
-#include "gestura/render/yuv420.hpp"
 
 namespace gestura {
 namespace {
@@ -203,22 +202,6 @@ void BM_R1_Readback(benchmark::State& state) {
 }
 BENCHMARK(BM_R1_Readback)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// RGBA → YUV 4:2:0 alone (render/yuv420.hpp), one drawn 1280×720 frame: the conversion part of BM_R1_Encode/0.
-void BM_R1_ColourConversion(benchmark::State& state) {
-  Scene& s = scene();
-  s.draw(10, SkinningDevice::Gpu, &s.edge_filter);
-  Image image;
-  s.edge_filter.read_pixels(image);
-  std::vector<std::uint8_t> y(static_cast<std::size_t>(kWidth) * kHeight), u(y.size() / 4), v(y.size() / 4);
-  const CpuMeter meter;
-  for (auto _ : state) {
-    rgba_to_yuv420(image, {y.data(), u.data(), v.data(), kWidth, kWidth / 2, kWidth / 2});
-    benchmark::DoNotOptimize(y.data());
-  }
-  meter.report(state);
-  set_counters(state);
-}
-BENCHMARK(BM_R1_ColourConversion)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 const char* kExtensions[] = {"mp4", "webm", "gif"};
 

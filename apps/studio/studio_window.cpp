@@ -180,8 +180,19 @@ class Studio {
   // drawing the whole UI again (Dear ImGui's draw of the window costs llvmpipe more than the preview).
   // The UI itself (playhead, time) is drawn again at least every kUiRefresh.
   static constexpr std::chrono::milliseconds kUiRefresh{250};
-  bool reuse_ui(Clock::time_point now, bool stepped, int width, int height) const;
+  // `refreshing`: the same conditions, but the kUiRefresh is due (only the strip under the preview
+  // picture is drawn again then: draw_ui_strip).
+  bool reuse_ui(Clock::time_point now, bool stepped, int width, int height, bool refreshing = false) const;
   void compose_cached_ui(int width, int height, bool with_preview);
+  // The periodic refresh while only the preview plays: the UI is built as usual, but only the strip
+  // under the preview picture (playhead, time, the transport) is drawn again into the kept UI, as
+  // nothing else can have changed without input, a script step or a synthesis landing. On llvmpipe
+  // a draw of the whole 1280x800 window costs as much as the preview itself.
+  // Returns when the UI was built (before its draw).
+  Clock::time_point draw_ui_strip(int width, int height);
+  std::uint64_t strip_ui_frames_ = 0;
+  bool full_ui_due_ = false;  // the strip found the layout moved: the next frame draws the whole UI
+  ImVec2 preview_panel_min_{}, preview_panel_max_{};  // the preview panel's window, from the last full UI
   unsigned ui_fbo_ = 0, ui_texture_ = 0, preview_read_fbo_ = 0;
   glm::ivec2 ui_size_{0, 0};
   bool preview_in_ui_ = false;  // the last full UI showed the preview picture at preview_rect_
@@ -196,6 +207,7 @@ class Studio {
   void export_file(const std::string& path);
   void accept_recovery(bool restore);
   void palette_click(sign::Symbol symbol);
+  void draw_nonmanuals();  // the non-manual tiers of the draft (a palette group)
   void set_field(const std::string& field, const std::string& value);
   void set_learning(bool on);
   void set_posing(bool on);
@@ -284,6 +296,8 @@ class Studio {
   std::vector<BrowseRow> rows_;
   // notation editing
   int selected_symbol_ = -1;
+  bool open_nonmanuals_ = false;  // the palette's non-manual group is opened (by the script's nonmanual)
+  int scroll_to_nonmanuals_ = 0;
   // preview
   SignPreview preview_;
   std::uint64_t requested_revision_ = ~0ull;  // the draft revision last sent to synthesis
@@ -420,9 +434,22 @@ void Studio::import_file(const std::string& path) {
   app::LexiconImportRequest request;
   request.file = path;
   request.db = setup_.user_db;
+  // SiGML does not name its sign language: its signs are taken to be in the draft's.
+  request.lang = model_.draft().language.empty() ? "ase" : model_.draft().language;
+  // Signs that cannot be stored (notation that does not parse, a missing field) are skipped and
+  // reported with their line; the good ones are stored in one transaction.
+  request.skip_bad = true;
   try {
     const app::LexiconChangeResult r = app::run(request);
-    say("imported " + std::to_string(r.count) + " signs from " + path + " into " + r.path);
+    std::string text = "imported " + std::to_string(r.count) + " signs from " + path + " into " + r.path;
+    if (!r.bad_lines.empty()) {
+      text += "; skipped " + std::to_string(r.bad_lines.size()) + ":";
+      for (std::size_t i = 0; i < r.bad_lines.size() && i < 3; ++i)
+        text += " " + r.bad_lines[i].where.to_string() + ": " + r.bad_lines[i].message + (i + 1 < r.bad_lines.size() ? ";" : "");
+      if (r.bad_lines.size() > 3) text += " ...";
+      for (const app::Notice& n : r.bad_lines) std::fprintf(stderr, "gestura studio: import: %s\n", n.text().c_str());
+    }
+    say(text);
     refresh_browse();
   } catch (const std::exception& e) {
     say("import failed, nothing imported: " + app::classify(e).message + " " + app::classify(e).place.source.to_string());
@@ -613,6 +640,7 @@ void Studio::play_word(const LessonWord& word, bool reveal) {
   d.gloss = word.gloss;
   d.language = word.language;
   d.names = word.names;
+  d.nonmanuals = word.nonmanuals;
   const SignPreview p = preview_sign(d, *rig_);
   if (!p.clip) {
     say("cannot perform " + word.gloss + ": " + (p.error ? p.error->message : std::string("no clip")));
@@ -760,6 +788,15 @@ void Studio::execute(const ScriptStep& step) {
     const auto symbol = sign::symbol_from_name(arg(0));
     if (!symbol) say("no symbol '" + arg(0) + "' in the palette");
     else palette_click(*symbol);
+  } else if (a == "nonmanual") {
+    const auto tier = tier_from_key(arg(0));
+    if (!tier) {
+      say("no non-manual tier '" + arg(0) + "' (shoulder body head gaze eyebrows eyelids nose cheeks mouth-gesture mouth-picture extra)");
+    } else {
+      message_.clear();
+      open_nonmanuals_ = true;
+      model_.set_nonmanual(*tier, step.args.size() < 2 || arg(1) == "-" ? std::string() : arg(1));
+    }
   } else if (a == "replace-symbol") {
     model_.replace_symbol(number(0), arg(1));
   } else if (a == "insert-symbol") {
@@ -1177,6 +1214,14 @@ void Studio::draw_notation(const ImVec2& pos, const ImVec2& size) {
       }
     }
     if (tokens.empty()) ImGui::TextDisabled("no symbols yet: pick a handshape in the palette");
+    if (!model_.draft().nonmanuals.empty()) {
+      std::string line = "non-manual:";
+      for (const DraftNonManual& n : model_.draft().nonmanuals) {
+        line += "  " + std::string(tier_info(n.tier).key) + " " + n.value;
+        if (const auto m = code_meaning(n.tier, n.value); !m.empty()) line += " (" + std::string(m) + ")";
+      }
+      ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "%s", line.c_str());
+    }
     if (error) {
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.45f, 1.0f));
       ImGui::TextWrapped("%s%s (a draft: it is not saved until it parses)",
@@ -1200,6 +1245,56 @@ void Studio::draw_notation(const ImVec2& pos, const ImVec2& size) {
   ImGui::End();
 }
 
+void Studio::draw_nonmanuals() {
+  if (open_nonmanuals_) ImGui::SetNextItemOpen(true), open_nonmanuals_ = false, scroll_to_nonmanuals_ = 3;
+  if (!ImGui::CollapsingHeader("Non-manuals (SiGML tiers)")) return;
+  // The group at the top of the palette: for a few frames, as the scroll is bounded by the content
+  // size of the frame before (when the group was still closed).
+  if (scroll_to_nonmanuals_ > 0) ImGui::SetScrollHereY(0.0f), --scroll_to_nonmanuals_;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("face, head and body over the whole sign; a sign with any is saved as SiGML");
+  ImGui::PopStyleColor();
+  const SignDraft& d = model_.draft();
+  const float label_w = ImGui::CalcTextSize("Mouth picture (SAMPA)").x + ImGui::GetStyle().ItemSpacing.x;
+  for (const NonManualTierInfo& t : nonmanual_tiers()) {
+    ImGui::PushID(static_cast<int>(t.tier));
+    const std::vector<std::string> values = tier_values(d.nonmanuals, t.tier);
+    std::string current;
+    for (const std::string& v : values) current += (current.empty() ? "" : " ") + v;
+    ImGui::AlignTextToFramePadding();
+    if (!values.empty()) ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "%s", std::string(t.label).c_str());
+    else ImGui::TextUnformatted(std::string(t.label).c_str());
+    ImGui::SameLine(label_w);
+    ImGui::SetNextItemWidth(-1);
+    if (!t.codes.empty()) {
+      std::string preview = current.empty() ? std::string("-") : current;
+      if (values.size() == 1)
+        if (const auto m = code_meaning(t.tier, values.front()); !m.empty()) preview += "  " + std::string(m);
+      if (ImGui::BeginCombo("##code", preview.c_str())) {
+        if (ImGui::Selectable("-  (none)", values.empty())) message_.clear(), model_.set_nonmanual(t.tier, {});
+        for (const NonManualCode& c : t.codes) {
+          const std::string item = std::string(c.code) + "  " + std::string(c.meaning);
+          if (ImGui::Selectable(item.c_str(), values.size() == 1 && values.front() == c.code))
+            message_.clear(), model_.set_nonmanual(t.tier, std::string(c.code));
+        }
+        ImGui::EndCombo();
+      }
+    } else {
+      // Free text (SAMPA for a mouth picture): one undo step per field visit, as the Sign fields.
+      std::string text = current;
+      if (ImGui::InputText("##text", &text, ImGuiInputTextFlags_CharsNoBlank)) {
+        message_.clear();
+        model_.set_nonmanual(t.tier, text, std::string("nonmanual:") + std::string(t.key));
+      }
+      if (ImGui::IsItemDeactivatedAfterEdit()) model_.seal();
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(t.tier == sign::NonManualTier::mouth_picture ? "the spoken word as SAMPA, e.g. hUs (house)"
+                                                                       : "a tier code, as the SiGML producer writes it");
+    }
+    ImGui::PopID();
+  }
+}
+
 void Studio::draw_palette(const ImVec2& pos, const ImVec2& size) {
   if (begin_panel("Palette", pos, size)) {
     const int count = static_cast<int>(name_tokens(model_.draft().names).size());
@@ -1221,6 +1316,7 @@ void Studio::draw_palette(const ImVec2& pos, const ImVec2& size) {
                             static_cast<unsigned>(sign::symbol_info(s).codepoint));
       }
     }
+    draw_nonmanuals();
   }
   ImGui::End();
 }
@@ -1237,6 +1333,8 @@ void Studio::draw_preview(const ImVec2& pos, const ImVec2& size) {
                  ImVec2(0, static_cast<float>(preview_height_) / static_cast<float>(std::max(1, shown.height()))),
                  ImVec2(static_cast<float>(preview_width_) / static_cast<float>(std::max(1, shown.width())), 0));
     preview_in_ui_ = true, preview_rect_min_ = ImGui::GetItemRectMin(), preview_rect_max_ = ImGui::GetItemRectMax();
+    preview_panel_min_ = ImGui::GetWindowPos();
+    preview_panel_max_ = ImVec2(preview_panel_min_.x + ImGui::GetWindowSize().x, preview_panel_min_.y + ImGui::GetWindowSize().y);
     draw_preview_overlay(ImGui::GetItemRectMin(), avail);
     if ((posing_ || timeline_mode_) && !ik_tool_ && ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
       // Pick the bone under the click (the mouse ray against the bones' capsules), else the joint
@@ -2269,8 +2367,12 @@ void Studio::write_dump(const std::string& path) {
   j["db_names"] = nullptr;
   if (const SignDraft& d = model_.draft(); !d.gloss.empty()) {
     if (const auto row = model_.find(EntryKey{d.gloss, d.language, d.variant}); row && !row->builtin) {
+      j["db_kind"] = to_string(row->entry.notation_kind);
+      j["db_notation"] = row->entry.notation;
       try {
-        j["db_names"] = draft_from_entry(row->entry, false).names;
+        const SignDraft stored = draft_from_entry(row->entry, false);
+        j["db_names"] = stored.names;
+        j["db_nonmanuals"] = to_json(stored)["nonmanuals"];
       } catch (const Error&) {
       }
     }
@@ -2283,6 +2385,31 @@ void Studio::write_dump(const std::string& path) {
     p["sign_end"] = preview_.sign_end;
     p["flexion_right"] = flexion_at(mid, 'r');
     p["flexion_left"] = flexion_at(mid, 'l');
+    // The face and head channels over the sign: each face channel's largest weight, and how far the
+    // head joints turned from rest at most (degrees), sampled at 40 moments of the sign.
+    const Clip& clip = *preview_.clip;
+    nlohmann::json face = nlohmann::json::object(), head = nlohmann::json::object();
+    for (std::size_t c = 0; c < clip.channels.size() && c < clip.channel_names.size(); ++c) {
+      float peak = 0.0f;
+      for (int k = 0; k <= 40; ++k)
+        peak = std::max(peak, std::abs(sample_track(clip.channels[c], preview_.sign_start + (preview_.sign_end - preview_.sign_start) * k / 40.0f)));
+      if (peak > 0.01f) face[clip.channel_names[c]] = peak;
+    }
+    for (const char* name : {"skullbase", "vc4", "l_eyeball_joint", "r_eyeball_joint"}) {
+      const int joint = subject_.skeleton.find(name);
+      if (joint < 0 || static_cast<std::size_t>(joint) >= clip.rotations.size()) continue;
+      float peak = 0.0f;
+      const quat rest = subject_.skeleton.rest_rotations[static_cast<std::size_t>(joint)];
+      if (!clip.rotations[static_cast<std::size_t>(joint)].empty())
+        for (int k = 0; k <= 40; ++k) {
+          const quat q = sample_track(clip.rotations[static_cast<std::size_t>(joint)],
+                                      preview_.sign_start + (preview_.sign_end - preview_.sign_start) * k / 40.0f);
+          peak = std::max(peak, glm::degrees(2.0f * std::acos(std::min(1.0f, std::abs(glm::dot(q, rest))))));
+        }
+      head[name] = peak;
+    }
+    p["face"] = face;
+    p["head_degrees"] = head;
   }
   p["error"] = preview_.error ? nlohmann::json{{"symbol", preview_.error->symbol}, {"message", preview_.error->message}} : nlohmann::json();
   auto& problems = p["problems"] = nlohmann::json::array();
@@ -2344,11 +2471,52 @@ bool Studio::needs_frame() {
   return show_recovery_;
 }
 
-bool Studio::reuse_ui(Clock::time_point now, bool stepped, int width, int height) const {
+bool Studio::reuse_ui(Clock::time_point now, bool stepped, int width, int height, bool refreshing) const {
   return ui_fbo_ != 0 && ui_size_ == glm::ivec2(width, height) && preview_in_ui_ && !stepped && settle_frames_ == 0 &&
-         now - last_full_ui_ < kUiRefresh && pending_screenshot_.empty() && request_.frames == 0 && !environment_ && !posing_ &&
+         (refreshing || now - last_full_ui_ < kUiRefresh) && pending_screenshot_.empty() && request_.frames == 0 && !environment_ && !posing_ &&
          !figure_or_timeline() && !show_recovery_ && !preview_busy() && !export_.valid() &&
          !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+}
+
+Clock::time_point Studio::draw_ui_strip(int width, int height) {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  const ImVec2 picture_min = preview_rect_min_, picture_max = preview_rect_max_;
+  preview_in_ui_ = false;
+  draw_ui();
+  ImGui::Render();
+  const Clock::time_point built = Clock::now();
+  // The strip: the preview panel below its picture. Should the layout have moved (it cannot without
+  // input or a new size, which draw the whole UI), the next full draw puts everything right.
+  const ImVec4 strip(preview_panel_min_.x, picture_max.y, preview_panel_max_.x, preview_panel_max_.y);
+  if (!preview_in_ui_ || picture_min.x != preview_rect_min_.x || picture_max.y != preview_rect_max_.y ||
+      strip.z <= strip.x || strip.w <= strip.y) {
+    full_ui_due_ = true;
+    compose_cached_ui(width, height, true);
+    return built;
+  }
+  ImDrawData* data = ImGui::GetDrawData();
+  for (int l = 0; l < data->CmdListsCount; ++l)
+    for (ImDrawCmd& cmd : data->CmdLists[l]->CmdBuffer) {
+      ImVec4& c = cmd.ClipRect;
+      c = ImVec4(std::max(c.x, strip.x), std::max(c.y, strip.y), std::min(c.z, strip.z), std::min(c.w, strip.w));
+      if (c.z <= c.x || c.w <= c.y) c = ImVec4(strip.x, strip.y, strip.x, strip.y);  // nothing of it in the strip
+    }
+  const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+  const int x0 = static_cast<int>(std::floor(strip.x * scale.x)), x1 = static_cast<int>(std::ceil(strip.z * scale.x));
+  const int y0 = height - static_cast<int>(std::ceil(strip.w * scale.y)), y1 = height - static_cast<int>(std::floor(strip.y * scale.y));
+  glBindFramebuffer(GL_FRAMEBUFFER, ui_fbo_);
+  glViewport(0, 0, width, height);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x0, y0, x1 - x0, y1 - y0);
+  glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  ImGui_ImplOpenGL3_RenderDrawData(data);
+  compose_cached_ui(width, height, true);
+  ++strip_ui_frames_;
+  return built;
 }
 
 void Studio::compose_cached_ui(int width, int height, bool with_preview) {
@@ -2400,8 +2568,9 @@ int Studio::run() {
     if (wait_frames_ > 0) {
       --wait_frames_;
     } else if (script_next_ < script_.size() && !preview_busy()) {
-      stepped = true;
       const ScriptStep& step = script_[script_next_++];
+      // A wait only counts frames: like a user doing nothing, it does not make the UI draw again.
+      stepped = step.action != "wait";
       try {
         execute(step);
       } catch (const Error& e) {
@@ -2431,8 +2600,12 @@ int Studio::run() {
 
     const std::uint64_t revision_before_ui = model_.revision();
     const bool reuse = synthesis_ms_.size() == syntheses && reuse_ui(start, stepped, width, height);
+    const bool strip = !reuse && !full_ui_due_ && synthesis_ms_.size() == syntheses && reuse_ui(start, stepped, width, height, true);
     Clock::time_point t_ui;
-    if (reuse) {
+    if (strip) {
+      t_ui = draw_ui_strip(width, height);
+      last_full_ui_ = start;
+    } else if (reuse) {
       // Only the preview moved: the UI drawn last time, with the new picture in it.
       t_ui = Clock::now();
       compose_cached_ui(width, height, true);
@@ -2466,6 +2639,7 @@ int Studio::run() {
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       if (ui_size_ == glm::ivec2(width, height)) compose_cached_ui(width, height, false);
       last_full_ui_ = start;
+      full_ui_due_ = false;
     }
     if (timing) glFinish();
     const Clock::time_point t_draw = Clock::now();
@@ -2510,6 +2684,9 @@ int Studio::run() {
     if (reused_ui_frames_ > 0)
       std::fprintf(stderr, "gestura studio: %llu frames showed a new preview in the UI kept from the frame before (not drawn again)\n",
                    static_cast<unsigned long long>(reused_ui_frames_));
+    if (strip_ui_frames_ > 0)
+      std::fprintf(stderr, "gestura studio: %llu frames drew only the strip under the preview again (playhead, time)\n",
+                   static_cast<unsigned long long>(strip_ui_frames_));
     if (idle_waits_ > 0)
       std::fprintf(stderr, "gestura studio: %llu waits for input with nothing to draw (no frame drawn)\n",
                    static_cast<unsigned long long>(idle_waits_));

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "gestura/lexicon/lexicon.hpp"
@@ -43,6 +44,13 @@ std::optional<std::string> stored_names(const std::string& db, const std::string
   return names;
 }
 
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 TEST(StudioUnderXvfb, AHandshapeChangeBendsThePreviewAndSavesTheRowAndUndoRestoresBoth) {
   if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
@@ -98,6 +106,109 @@ TEST(StudioUnderXvfb, AHandshapeChangeBendsThePreviewAndSavesTheRowAndUndoRestor
   ASSERT_TRUE(image.loaded());
   EXPECT_EQ(1280, image.width);
   EXPECT_EQ(800, image.height);
+}
+
+TEST(StudioUnderXvfb, ANonManualTierMovesThePreviewsFaceAndHeadIsSavedAsSigmlAndUndoRestoresBoth) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed";
+  TempDir dir;
+  const std::string db = dir.file("user.sqlite"), shots = shot_dir(dir), j = dir.file("");
+  std::ofstream(j + "mixed.sigml") << "<sigml>\n"
+                                      "<hns_sign gloss=\"TESTMOUTH\"><hamnosys_nonmanual><hnm_mouthpicture picture=\"hUs\"/></hamnosys_nonmanual>\n"
+                                      "<hamnosys_manual><hamflathand/><hamextfingeru/><hampalml/><hamchest/></hamnosys_manual></hns_sign>\n"
+                                      "<hns_sign gloss=\"TESTBROKEN\"><hamnosys_manual><hamextfingeru/><hamparend/></hamnosys_manual></hns_sign>\n"
+                                      "</sigml>\n";
+  const auto r = run_studio(dir, db, "nonmanual.txt",
+                            "new\n"
+                            "set gloss TESTNM\n"
+                            "set keywords question\n"
+                            "set names hamflathand,hamextfingeru,hampalml,hamchest\n"
+                            "save\n"
+                            "wait 1\n"
+                            "dump " + j + "plain.json\n"
+                            "nonmanual eyebrows RB\n"
+                            "nonmanual head NO\n"
+                            "nonmanual mouth-picture kw\"Est\n"  // a character SiGML cannot hold: refused
+                            "wait 1\n"
+                            "dump " + j + "nm.json\n"
+                            "save\n"
+                            "dump " + j + "saved.json\n"
+                            "export " + j + "out.sigml\n"
+                            "export " + j + "out.jsonl\n"
+                            "time 1.0\n"
+                            "wait 2\n"
+                            "screenshot " + shots + "/studio-nonmanual.png\n"
+                            "undo\n"  // the save
+                            "dump " + j + "undo_save.json\n"
+                            "undo\n"  // the head
+                            "undo\n"  // the brows
+                            "wait 1\n"
+                            "dump " + j + "undo_nm.json\n"
+                            "import " + j + "out.sigml\n"  // the exported SiGML back: the row with its tiers
+                            "open TESTNM\n"
+                            "wait 1\n"
+                            "dump " + j + "imported.json\n"
+                            "import " + j + "mixed.sigml\n"  // one good sign, one whose notation does not parse
+                            "dump " + j + "mixed.json\n"
+                            "quit\n");
+  ASSERT_EQ(0, r.status) << r.output;
+  const auto plain = read_json_file(j + "plain.json"), nm = read_json_file(j + "nm.json"), saved = read_json_file(j + "saved.json"),
+             undo_save = read_json_file(j + "undo_save.json"), undo_nm = read_json_file(j + "undo_nm.json"),
+             imported = read_json_file(j + "imported.json");
+  ASSERT_TRUE(plain.is_object() && nm.is_object() && saved.is_object() && undo_save.is_object() && undo_nm.is_object() &&
+              imported.is_object());
+  ASSERT_TRUE(plain["preview"]["has_clip"].get<bool>()) << plain.dump();
+  ASSERT_TRUE(nm["preview"]["has_clip"].get<bool>()) << nm.dump();
+
+  // The preview: raised brows lift the brow channels, a nod turns the head.
+  auto brow = [](const nlohmann::json& d) { return d["preview"]["face"].value("browInnerUp_L", 0.0f); };
+  auto head = [](const nlohmann::json& d) {
+    return std::max(d["preview"]["head_degrees"].value("skullbase", 0.0f), d["preview"]["head_degrees"].value("vc4", 0.0f));
+  };
+  EXPECT_GT(brow(nm), brow(plain) + 0.4f) << nm["preview"]["face"].dump();
+  EXPECT_GT(head(nm), head(plain) + 4.0f) << nm["preview"]["head_degrees"].dump();
+  ASSERT_EQ(2u, nm["draft"]["nonmanuals"].size()) << nm["draft"].dump();  // the bad mouth picture was refused
+  EXPECT_EQ("head", nm["draft"]["nonmanuals"][0]["tier"]);
+  EXPECT_EQ("eyebrows", nm["draft"]["nonmanuals"][1]["tier"]);
+
+  // The database: HamNoSys before, SiGML with the tiers after the save, HamNoSys again after undo.
+  EXPECT_EQ("hamnosys", plain["db_kind"]);
+  EXPECT_EQ("sigml", saved["db_kind"]);
+  EXPECT_NE(std::string::npos, saved["db_notation"].get<std::string>().find("<hnm_eyebrows tag=\"RB\""));
+  EXPECT_NE(std::string::npos, saved["db_notation"].get<std::string>().find("<hnm_head tag=\"NO\""));
+  EXPECT_EQ("hamflathand,hamextfingeru,hampalml,hamchest", saved["db_names"]);
+  EXPECT_EQ("hamnosys", undo_save["db_kind"]);
+  EXPECT_EQ(2u, undo_save["draft"]["nonmanuals"].size());
+  // ... and the preview with the draft.
+  EXPECT_TRUE(undo_nm["draft"]["nonmanuals"].empty());
+  EXPECT_NEAR(brow(plain), brow(undo_nm), 0.02f);
+  EXPECT_NEAR(head(plain), head(undo_nm), 0.5f);
+
+  // Exported: the SiGML file holds the sign with its tiers, the JSON lines its SiGML; imported back
+  // it opens with them.
+  const std::string sigml = read_text(j + "out.sigml");
+  EXPECT_NE(std::string::npos, sigml.find("gloss=\"TESTNM\"")) << sigml;
+  EXPECT_NE(std::string::npos, sigml.find("hnm_head"));
+  EXPECT_NE(std::string::npos, read_text(j + "out.jsonl").find("\"sigml\""));
+  EXPECT_EQ("sigml", imported["db_kind"]) << imported["status"];
+  EXPECT_EQ(2u, imported["draft"]["nonmanuals"].size()) << imported["status"];
+  EXPECT_EQ("hamflathand,hamextfingeru,hampalml,hamchest", imported["draft"]["names"]);
+
+  // A file with a sign that does not parse: the good one is stored, the bad one skipped with its line.
+  const auto mixed = read_json_file(j + "mixed.json");
+  ASSERT_TRUE(mixed.is_object());
+  const std::string status = mixed["status"];
+  EXPECT_NE(std::string::npos, status.find("imported 1 signs")) << status;
+  EXPECT_NE(std::string::npos, status.find("skipped 1")) << status;
+  EXPECT_NE(std::string::npos, status.find("mixed.sigml:4")) << status;
+  {
+    Lexicon lex = Lexicon::open(db);
+    EXPECT_TRUE(lex.find("TESTMOUTH", "ase", 1).has_value());
+    EXPECT_FALSE(lex.find("TESTBROKEN", "ase", 1).has_value());
+  }
+
+  const auto image = gestura::test::read_png(shots + "/studio-nonmanual.png", 3);
+  ASSERT_TRUE(image.loaded());
+  EXPECT_EQ(1280, image.width);
 }
 
 TEST(StudioUnderXvfb, NotationThatDoesNotParseIsShownAtItsSymbolAndNeverSaved) {

@@ -5,6 +5,7 @@ extern "C" {
 #include <libavformat/avformat.h>
 #include <libavutil/imgutils.h>
 #include <libavutil/opt.h>
+#include <libswscale/swscale.h>
 }
 
 #include <algorithm>
@@ -16,7 +17,6 @@ extern "C" {
 #include "gestura/core/error.hpp"
 #include "gestura/core/output_limits.hpp"
 #include "gestura/core/staged_file.hpp"
-#include "gestura/render/yuv420.hpp"
 
 namespace gestura {
 namespace {
@@ -69,6 +69,7 @@ struct VideoWriter::State {
   AVStream* stream = nullptr;
   AVFrame* frame = nullptr;
   AVPacket* packet = nullptr;
+  SwsContext* scaler = nullptr;
   bool finished = false;
   // GIF: the 6×7×6 cube plus, in the last 4 entries, the most frequent exact colours of the first
   // frame (the background above all), which are then drawn flat instead of dithered.
@@ -92,6 +93,7 @@ struct VideoWriter::State {
   }
 
   ~State() {
+    sws_freeContext(scaler);
     av_packet_free(&packet);
     av_frame_free(&frame);
     avcodec_free_context(&codec);
@@ -196,6 +198,10 @@ VideoWriter::VideoWriter(const std::string& path, int width, int height, int fps
       s.palette[i] = 0xff000000u | static_cast<std::uint32_t>(r * 255 / (kRed - 1)) << 16 |
                      static_cast<std::uint32_t>(g * 255 / (kGreen - 1)) << 8 | static_cast<std::uint32_t>(b * 255 / (kBlue - 1));
     }
+  } else {
+    s.scaler = sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height, AV_PIX_FMT_YUV420P, SWS_BILINEAR,
+                              nullptr, nullptr, nullptr);
+    if (s.scaler == nullptr) s.fail("cannot set up colour conversion", 0);
   }
 }
 
@@ -227,8 +233,9 @@ void VideoWriter::write(const Image& image) {
       }
     }
   } else {
-    rgba_to_yuv420(image, {s.frame->data[0], s.frame->data[1], s.frame->data[2], s.frame->linesize[0],
-                           s.frame->linesize[1], s.frame->linesize[2]});
+    const std::uint8_t* source[1] = {image.rgba.data()};
+    const int stride[1] = {image.width * 4};
+    sws_scale(s.scaler, source, stride, 0, s.height, s.frame->data, s.frame->linesize);
   }
   s.frame->pts = s.frames++;
   s.encode(s.frame);

@@ -9,6 +9,7 @@
 
 #include "gestura/core/error.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
+#include "gestura/studio/sign_draft.hpp"
 
 namespace gestura::studio {
 namespace {
@@ -46,7 +47,13 @@ Topic user_topic(std::span<const SignEntry> entries) {
         continue;  // notation that does not decode is not a lesson
       }
     } else {
-      continue;
+      try {  // SiGML: its symbols and non-manual tiers (gestural SiGML is not a lesson here)
+        const SignDraft d = draft_from_entry(e, false);
+        w.names = d.names;
+        w.nonmanuals = d.nonmanuals;
+      } catch (const Error&) {
+        continue;
+      }
     }
     topic.words.push_back(std::move(w));
   }

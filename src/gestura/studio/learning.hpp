@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gestura/lexicon/sign_entry.hpp"
+#include "gestura/studio/nonmanual_tiers.hpp"
 
 namespace gestura::studio {
 
@@ -17,6 +18,7 @@ struct LessonWord {
   std::vector<std::string> keywords;
   int variant = 1;
   bool clip_sign = false;  // a keyframed sign (no notation): played from its recorded motion
+  std::vector<DraftNonManual> nonmanuals;  // a SiGML sign's non-manual tiers, performed with it
 };
 
 struct Topic {

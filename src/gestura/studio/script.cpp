@@ -19,7 +19,7 @@ const std::map<std::string, Arity>& actions() {
       {"open", {1, 3}},          {"new", {0, 0}},           {"duplicate", {0, 0}},     {"save", {0, 0}},
       {"delete", {0, 0}},        {"undo", {0, 0}},          {"redo", {0, 0}},          {"set", {2, 2, true}},
       {"select-symbol", {1, 1}}, {"palette", {1, 1}},       {"replace-symbol", {2, 2}}, {"insert-symbol", {2, 2}},
-      {"remove-symbol", {1, 1}}, {"search", {0, 1, true}},  {"filter", {2, 2}},        {"panel", {1, 1}},
+      {"remove-symbol", {1, 1}}, {"nonmanual", {1, 2}}, {"search", {0, 1, true}},  {"filter", {2, 2}},        {"panel", {1, 1}},
       {"camera", {1, 1}},        {"time", {1, 1}},          {"play", {0, 0}},          {"pause", {0, 0}},
       {"wait", {1, 1}},          {"import", {1, 1}},        {"export", {1, 1}},        {"recover", {0, 0}},
       {"discard-recovery", {0, 0}}, {"screenshot", {1, 1}}, {"dump", {1, 1}},          {"kill", {0, 0}},

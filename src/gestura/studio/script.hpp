@@ -7,6 +7,8 @@
 //   select-symbol INDEX           palette NAME (as a click on the palette: replaces the selected
 //   replace-symbol INDEX NAME     symbol, else appends)
 //   insert-symbol INDEX NAME      remove-symbol INDEX
+//   nonmanual TIER [VALUE] (TIER: shoulder body head gaze eyebrows eyelids nose cheeks mouth-gesture
+//   mouth-picture extra; VALUE a SiGML tag such as RB, SAMPA for mouth-picture; none or '-' clears)
 //   search TEXT...                filter FIELD VALUE (lang, handshape, location; '-' clears)
 //   panel NAME                    camera front|side|three-quarter|top
 //   time SECONDS   play   pause   wait FRAMES

@@ -1,10 +1,14 @@
 #include "gestura/studio/sign_draft.hpp"
 
+#include <sstream>
+
 #include <nlohmann/json.hpp>
+#include <pugixml.hpp>
 
 #include "gestura/core/error.hpp"
 #include "gestura/core/utf8.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
+#include "gestura/sign/sigml.hpp"
 
 namespace gestura::studio {
 namespace {
@@ -36,16 +40,42 @@ std::string string_of(const nlohmann::json& json, const char* key) {
 
 EntryKey key_of(const SignEntry& entry) { return {entry.gloss, entry.language, entry.variant}; }
 
+namespace {
+
+// The symbols and non-manual tiers of a stored <hns_sign> element.
+void read_sigml_notation(const SignEntry& entry, std::vector<std::string>& tokens, std::vector<DraftNonManual>& nonmanuals) {
+  std::vector<sign::SigmlEntry> signs;
+  try {
+    signs = sign::read_sigml_entries(entry.notation, "sign '" + entry.gloss + "'");
+  } catch (const Error& e) {
+    throw Error("the SiGML of sign '" + entry.gloss + "' does not read (" + e.what() + "): it cannot be edited here");
+  }
+  if (signs.size() != 1) throw Error("the SiGML of sign '" + entry.gloss + "' holds " + std::to_string(signs.size()) + " signs, not one");
+  const sign::SigmlEntry& one = signs.front();
+  if (!one.sign) throw Error("the SiGML of sign '" + entry.gloss + "' does not parse (" + one.error->what() + ")");
+  if (one.sign->gestural)
+    throw Error("sign '" + entry.gloss + "' is written in gestural SiGML (<hamgestural_sign>): the notation editor edits HamNoSys symbols only");
+  for (const sign::Symbol s : one.sign->symbols) tokens.emplace_back(sign::symbol_name(s));
+  for (const NonManualTierInfo& t : nonmanual_tiers())
+    for (const sign::NonManual& n : one.sign->nonmanual)
+      if (n.tier == t.tier) nonmanuals.push_back({n.tier, n.value});
+}
+
+}  // namespace
+
 SignDraft draft_from_entry(const SignEntry& entry, bool builtin) {
-  if (entry.notation_kind != NotationKind::hamnosys)
-    throw Error("sign '" + entry.gloss + "' is written in " + std::string(to_string(entry.notation_kind)) +
-                ", not HamNoSys: the notation editor edits HamNoSys signs only");
+  if (entry.notation_kind == NotationKind::clip)
+    throw Error("sign '" + entry.gloss + "' is a clip sign, not notation: open it in the timeline editor");
   SignDraft d;
   d.gloss = entry.gloss;
   d.language = entry.language;
   d.variant = entry.variant;
   std::vector<std::string> tokens;
-  for (const sign::Symbol s : sign::symbols_from_unicode(entry.notation)) tokens.emplace_back(sign::symbol_name(s));
+  if (entry.notation_kind == NotationKind::sigml) {
+    read_sigml_notation(entry, tokens, d.nonmanuals);
+  } else {
+    for (const sign::Symbol s : sign::symbols_from_unicode(entry.notation)) tokens.emplace_back(sign::symbol_name(s));
+  }
   d.names = join_names(tokens);
   d.keywords = keywords_text(entry.keywords);
   for (const Keyword& k : entry.keywords)
@@ -98,12 +128,21 @@ SignEntry to_entry(const SignDraft& draft) {
   if (trimmed(draft.gloss).empty()) throw Error("the sign has no gloss");
   if (trimmed(draft.language).empty()) throw Error("the sign has no sign language");
   if (const auto error = notation_error(draft)) throw Error(SourceLocation{.index = error->symbol}, error->message);
+  for (const DraftNonManual& n : draft.nonmanuals)
+    if (const auto problem = nonmanual_value_problem(n.tier, n.value)) throw Error(*problem);
   SignEntry e;
   e.gloss = trimmed(draft.gloss);
   e.language = trimmed(draft.language);
   e.variant = draft.variant;
-  e.notation_kind = NotationKind::hamnosys;
-  for (const sign::Symbol s : sign::symbols_from_names(draft.names)) utf8::append(e.notation, sign::symbol_info(s).codepoint);
+  if (draft.nonmanuals.empty()) {
+    e.notation_kind = NotationKind::hamnosys;
+    for (const sign::Symbol s : sign::symbols_from_names(draft.names)) utf8::append(e.notation, sign::symbol_info(s).codepoint);
+  } else {
+    e.notation_kind = NotationKind::sigml;
+    SignDraft named = draft;
+    named.gloss = e.gloss;
+    e.notation = hns_sign_xml(named);
+  }
   bool first = true;
   std::string word;
   auto flush = [&] {
@@ -122,10 +161,31 @@ SignEntry to_entry(const SignDraft& draft) {
   return e;
 }
 
+std::string hns_sign_xml(const SignDraft& draft) {
+  pugi::xml_document doc;
+  pugi::xml_node sign = doc.append_child("hns_sign");
+  sign.append_attribute("gloss") = draft.gloss.c_str();
+  if (!draft.nonmanuals.empty()) {
+    pugi::xml_node tiers = sign.append_child("hamnosys_nonmanual");
+    for (const DraftNonManual& n : draft.nonmanuals) {
+      const std::string element(tier_info(n.tier).element);
+      tiers.append_child(element.c_str())
+          .append_attribute(n.tier == sign::NonManualTier::mouth_picture ? "picture" : "tag") = n.value.c_str();
+    }
+  }
+  pugi::xml_node manual = sign.append_child("hamnosys_manual");
+  for (const sign::Symbol s : sign::symbols_from_names(draft.names)) manual.append_child(std::string(sign::symbol_name(s)).c_str());
+  std::ostringstream out;
+  sign.print(out, "", pugi::format_raw);
+  return out.str();
+}
+
 nlohmann::json to_json(const SignDraft& d) {
   nlohmann::json j{{"gloss", d.gloss},       {"lang", d.language}, {"variant", d.variant}, {"names", d.names},
                    {"keywords", d.keywords}, {"meaning", d.meaning}, {"source", d.source},   {"licence", d.licence},
                    {"agreement", to_string(d.agreement)}, {"from_builtin", d.from_builtin}};
+  auto& tiers = j["nonmanuals"] = nlohmann::json::array();
+  for (const DraftNonManual& n : d.nonmanuals) tiers.push_back({{"tier", tier_info(n.tier).key}, {"value", n.value}});
   if (d.origin) j["origin"] = {{"gloss", d.origin->gloss}, {"lang", d.origin->language}, {"variant", d.origin->variant}};
   return j;
 }
@@ -145,6 +205,16 @@ SignDraft draft_from_json(const nlohmann::json& j) {
     if (!v->is_number_integer() || v->get<long long>() < 1 || v->get<long long>() > 1000000)
       throw Error("draft field 'variant' must be a whole number from 1");
     d.variant = v->get<int>();
+  }
+  if (const auto t = j.find("nonmanuals"); t != j.end() && !t->is_null()) {
+    if (!t->is_array()) throw Error("draft field 'nonmanuals' is not a list");
+    for (const nlohmann::json& n : *t) {
+      if (!n.is_object()) throw Error("a draft's non-manual is an object {\"tier\", \"value\"}");
+      const std::string key = string_of(n, "tier");
+      const auto tier = tier_from_key(key);
+      if (!tier) throw Error("draft non-manual tier '" + key.substr(0, 40) + "' is not a tier");
+      d.nonmanuals.push_back({*tier, string_of(n, "value")});
+    }
   }
   if (const auto b = j.find("from_builtin"); b != j.end() && b->is_boolean()) d.from_builtin = b->get<bool>();
   if (const auto o = j.find("origin"); o != j.end() && o->is_object()) {

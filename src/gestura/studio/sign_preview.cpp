@@ -20,7 +20,8 @@ SignPreview preview_sign(const SignDraft& draft, const SigningRig& rig, float fp
   try {
     const sign::HamSign sign = sign::parse_hamnosys_names(draft.names);
     for (const sign::ParseNote& note : sign.notes) out.problems.push_back({"note: " + note.text, note.symbol_index, -1.0f});
-    SignSynthesis s = synthesize_sign(sign, rig, PlanOptions{}, PerformOptions{fps});
+    const std::vector<sign::NonManual> tiers = to_sigml_tiers(draft.nonmanuals);
+    SignSynthesis s = synthesize_sign(sign, tiers, rig, PlanOptions{}, PerformOptions{fps});
     if (const auto problem = synthesis_problem(s, rig)) {
       // The moment the worst deviation happened, so the timeline can mark it.
       float when = s.stats.key_position_time;

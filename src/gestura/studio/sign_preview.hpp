@@ -29,7 +29,8 @@ struct SignPreview {
   double synthesis_ms = 0.0;                // parse + plan + perform, wall clock
 };
 
-// Never throws for bad notation: it becomes `error`.
+// Never throws for bad notation: it becomes `error`. The draft's non-manual tiers are performed over
+// the sign; a value the avatar cannot perform becomes a problem, not an error.
 SignPreview preview_sign(const SignDraft& draft, const SigningRig& rig, float fps = 30.0f);
 
 // How bent the fingers of one hand are: the sum over index, middle, ring and pinky of the angle

@@ -6,6 +6,7 @@
 #include "gestura/core/error.hpp"
 #include "gestura/lexicon/lexicon_files.hpp"
 #include "gestura/sign/hamnosys_parser.hpp"
+#include "gestura/sign/sigml.hpp"
 
 namespace gestura::studio {
 namespace {
@@ -16,9 +17,15 @@ std::string key_text(const EntryKey& k) { return k.gloss + " (" + k.language + "
 bool contains_symbol(const SignEntry& e, const std::string& name) {
   if (name.empty()) return true;
   const auto wanted = sign::symbol_from_name(name);
-  if (!wanted || e.notation_kind != NotationKind::hamnosys) return false;
+  if (!wanted || e.notation_kind == NotationKind::clip) return false;
   try {
-    const auto symbols = sign::symbols_from_unicode(e.notation);
+    std::vector<sign::Symbol> symbols;
+    if (e.notation_kind == NotationKind::hamnosys) {
+      symbols = sign::symbols_from_unicode(e.notation);
+    } else {
+      for (const sign::SigmlEntry& s : sign::read_sigml_entries(e.notation))
+        if (s.sign) symbols.insert(symbols.end(), s.sign->symbols.begin(), s.sign->symbols.end());
+    }
     return std::find(symbols.begin(), symbols.end(), *wanted) != symbols.end();
   } catch (const Error&) {
     return false;
@@ -216,6 +223,36 @@ bool StudioModel::remove_symbol(int index) {
   d.names = join_names(tokens);
   history_.seal();
   edit("remove symbol " + std::to_string(index) + " " + old, d);
+  history_.seal();
+  return true;
+}
+
+bool StudioModel::set_nonmanual(sign::NonManualTier tier, const std::string& value, const std::string& merge_key) {
+  const NonManualTierInfo& info = tier_info(tier);
+  if (!value.empty())
+    if (const auto problem = nonmanual_value_problem(tier, value)) {
+      status_ = "not changed: " + *problem;
+      return false;
+    }
+  SignDraft d = draft_;
+  d.nonmanuals = with_tier_value(draft_.nonmanuals, tier, value);
+  if (d == draft_) {
+    status_ = std::string(info.label) + " is already " + (value.empty() ? std::string("empty") : value);
+    return false;
+  }
+  std::string label = std::string(info.label) + " ";
+  if (value.empty()) {
+    label += "cleared";
+  } else {
+    label += value;
+    if (const auto meaning = code_meaning(tier, value); !meaning.empty()) label += " (" + std::string(meaning) + ")";
+  }
+  if (!merge_key.empty()) {
+    edit(std::string(info.label) + " edited", d, merge_key);
+    return true;
+  }
+  history_.seal();
+  edit(label, d);
   history_.seal();
   return true;
 }

@@ -68,6 +68,10 @@ class StudioModel {
   bool replace_symbol(int index, const std::string& name);
   bool insert_symbol(int index, const std::string& name);  // index == count: append
   bool remove_symbol(int index);
+  // Sets one non-manual tier to one value (empty: removes the tier). A value SiGML cannot hold
+  // changes nothing and says why in status(). With a merge key (typing in a field), consecutive
+  // changes are one undo step until seal().
+  bool set_nonmanual(sign::NonManualTier tier, const std::string& value, const std::string& merge_key = {});
   // Writes the draft into the user lexicon in one transaction (replacing the row it came from, also
   // when its gloss or variant changed). Notation that does not parse is never saved: false, status
   // names the symbol, the database is untouched.
