@@ -14,7 +14,7 @@ FUZZ_SECONDS ?= 60
 SANITIZER_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
                  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
 
-.PHONY: run test build build-cli deps bench start-dependence bench-studio bench-anchors legibility coverage serve load load-rooms test-capture clean fuzz fuzz-smoke test-asan
+.PHONY: run test build build-cli deps bench start-dependence arm-sweep bench-studio bench-anchors legibility coverage serve load load-rooms test-capture clean fuzz fuzz-smoke test-asan
 
 deps:
 	@scripts/setup-deps.sh
@@ -61,6 +61,13 @@ start-dependence: deps
 	@cmake --preset $(PRESET) >/dev/null
 	@cmake --build --preset $(PRESET) -j $(JOBS) --target gestura-start-dependence
 	@$(BIN)/gestura-start-dependence data/lexicon/ase.jsonl $(ARGS)
+
+# One line per sign of a lexicon or SiGML file: the arm solver's key misses, depth, elbow height and
+# check's verdict, to diff two solvers sign by sign (docs/sign-phonology.md). make arm-sweep ARGS=FILE
+arm-sweep: deps
+	@cmake --preset $(PRESET) >/dev/null
+	@cmake --build --preset $(PRESET) -j $(JOBS) --target gestura-arm-sweep
+	@$(BIN)/gestura-arm-sweep $(if $(ARGS),$(ARGS),data/lexicon/ase.jsonl)
 
 # How many content words of everyday English sentences the ASL lexicon signs (docs/asl-lexicon.md).
 coverage: build-cli

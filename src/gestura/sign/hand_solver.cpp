@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "gestura/ik/dls.hpp"
 #include "gestura/ik/residual.hpp"
@@ -16,7 +17,7 @@ constexpr int kEscapePasses = 5;           // pushes out of the body per frame
 constexpr float kEscapeTolerance = 0.002f;  // metres deeper than the margin that calls for the straight way out
 constexpr float kEscapeStep = 0.01f;        // metres per step of it
 constexpr int kEscapeSteps = 15;
-constexpr float kLostHand = 0.03f;         // metres off its place that make a frame search the elbow circle
+constexpr float kLostHand = 0.03f;         // metres of IK residual that make a frame consider keeping last frame's arm
 constexpr float kContactTolerance = 0.002f;  // metres a hand's contact point may miss before it is corrected
 
 constexpr float kSpaceTurnWeight = 0.25f;  // metres a radian of turn weighs against place, out in space…
@@ -25,14 +26,22 @@ constexpr float kContactTurnCost = deg(2.0f);  // turn a contact correction may 
 constexpr float kTurnRead = deg(24.0f);  // just inside the 25° within which a 45°-step notated turn still
                                          // reads as itself (synthesis_problem's tolerance)
 
-// A hand that continues last frame's elbow and lands this far from its plan (metres, a radian of
-// turn weighed as the solver weighs it) is also solved without history; that solution is kept
-// when it lands this much nearer and within kLanded of the plan, and only tried when its elbow is
-// elsewhere on the circle.
+// The arm a frame keeps (solve_hand): a continued arm that lands over kLandingTolerance (metres, a
+// radian of turn weighed as the solver weighs it) off its plan, ends in the body or is lost is also
+// solved without history; that arm is only tried when its elbow is kSameElbow or more elsewhere on
+// the circle. The arms are compared by how they read (arm_score, in units of what still reads as
+// the notated sign), and another arm is kept only when it scores kReadingGain better.
 constexpr float kLandingTolerance = 0.01f;
-constexpr float kLandingGain = 0.005f;
-constexpr float kLanded = 0.02f;
 constexpr float kSameElbow = deg(10.0f);
+constexpr float kReadingGain = 0.1f;
+// What still reads as the notated place and turn (SynthesisTolerance, sign_synthesis.hpp, which
+// gives the reasons): 2 cm at the body, where a contact must stay a contact; 5 cm out in the
+// signing space, where a place is a region a hand's width across; 25° of turn, within which a
+// 45°-step orientation symbol reads as itself and not its neighbour; 1 cm of hand in the body.
+constexpr float kReadPlaceAtBody = 0.02f;
+constexpr float kReadPlaceInSpace = 0.05f;
+constexpr float kReadTurn = deg(25.0f);
+constexpr float kReadDepth = 0.01f;
 
 float wrap_angle(float a) { return std::remainder(a, 2.0f * kPi); }
 
@@ -257,93 +266,126 @@ float landing_miss(const SigningRig& rig, const HandRig& h, const HandState& sta
   return place + glm::mix(kSpaceTurnWeight, kBodyTurnWeight, state.body_weight) * turn;
 }
 
+// How the posed hand reads against its plan, in units of what still reads as the notated sign: the
+// place miss (as landing_miss measures it) over kReadPlaceAtBody or kReadPlaceInSpace and the turn
+// over kReadTurn, whichever is worse, plus a unit for each of the two that no longer reads. Up to 1
+// the hand reads as notated (what `check` judges); a place and a turn both wrong are two errors a
+// viewer sees, worse than either alone. Unlike landing_miss, a turn does not buy a place: an arm
+// that keeps the turn a few degrees nearer by landing 5.5 cm off in space reads worse than one
+// 4.8 cm off at a turn 16° off.
+float reading_miss(const SigningRig& rig, const HandRig& h, const HandState& state, const Pose& pose,
+                   std::vector<mat4>& model, HandPoints& points) {
+  local_to_model(rig.skeleton(), pose, model);
+  const mat4& w = model[joint_slot(h.wrist)];
+  float place = glm::distance(vec3(w * vec4(h.palm_centre_local, 1.0f)), state.position);
+  if (state.at_body) {
+    hand_surface_points(rig, h.hand, model, points);
+    std::size_t contact = 0;
+    const vec3 planned = planned_contact(rig, h.hand, state, model, points, contact);
+    place = glm::distance(planned, points[contact]);
+  }
+  const float turn =
+      glm::length(rotation_error(glm::normalize(glm::quat_cast(mat3(w))), planned_wrist_rotation(rig, h.hand, state)));
+  const float p = place / (state.at_body ? kReadPlaceAtBody : kReadPlaceInSpace), t = turn / kReadTurn;
+  return std::max(p, t) + static_cast<float>(p > 1.0f) + static_cast<float>(t > 1.0f);
+}
+
+}  // namespace
+
+namespace {
+
+// One arm the frame could take, and what it is worth (choose_arm).
+struct ArmCandidate {
+  ArmSnapshot pose;
+  std::optional<float> swivel;  // the elbow swivel to continue from next frame
+  HandSolveResult result;
+  float score = 0.0f;    // arm_score
+  float reading = 0.0f;  // reading_miss alone
+};
+
+// How an arm reads (reading_miss), with a hand inside the body, which a viewer sees at once, counted
+// in the same units (a unit per kReadDepth deeper than the margin and kEscapeTolerance). No cost on
+// elbow height here: an arm continued low would then be kept 2 cm off where one without history
+// lands on its place (ASL OUTSIDE), and the sign would depend on where the arm came from.
+float arm_score(const SigningRig& rig, const HandRig& h, const HandState& state, float body_margin, const Pose& pose,
+                std::vector<mat4>& model, HandPoints& points, float& reading) {
+  reading = reading_miss(rig, h, state, pose, model, points);
+  const float depth = hand_depth(rig, h, body_margin, pose, model, points);
+  return reading + std::max(0.0f, depth - body_margin - kEscapeTolerance) / kReadDepth;
+}
+
+// The arm solved from `prefer` (seed_arm, then refine_arm), as a candidate.
+ArmCandidate solve_arm(const SigningRig& rig, const HandRig& h, const HandState& state, float body_margin,
+                       const SwivelPreference& prefer, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
+                       HandPoints& points) {
+  const SwivelSolution arm = seed_arm(rig, h, state, prefer, pose);
+  float depth = 0.0f;
+  const IkResult r = refine_arm(rig, h, state, body_margin, arm, solver, pose, model, points, depth);
+  ArmCandidate c{ArmSnapshot(h.arm, pose), arm.swivel, HandSolveResult{r.position_error, r.orientation_error}};
+  c.score = arm_score(rig, h, state, body_margin, pose, model, points, c.reading);
+  return c;
+}
+
 }  // namespace
 
 HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
                            bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
                            HandPoints& points) {
+  // The one rule for which arm a frame takes. Continuing last frame's elbow keeps the arm on one
+  // solution. Where that solution cannot make the place and turn (the elbow low while the hand
+  // must point down above the other hand, a hand leaving the ear near the ends of the joint
+  // ranges) it would hold the hand centimetres off, or lose it, and where the hand lands would
+  // depend on where the arm came from. So when the continued arm lands over kLandingTolerance off
+  // its plan, ends in the body or is lost (IK residual over kLostHand), the posture is also solved
+  // as a hand without history is (the whole elbow circle searched); when even the better of those
+  // is lost, last frame's arm is a candidate too. A lost arm gives way to one that is not;
+  // otherwise the arm kept is the continued one unless another scores kReadingGain better
+  // (arm_score: how it reads, body depth) and reads as the notated sign (an elbow
+  // that jumps round its circle is seen: it has to buy a hand that reads), or the continued arm is
+  // in the body.
   const HandRig& h = rig.hand(hand);
+  const ArmSnapshot last_frame(h.arm, pose);
+  const std::optional<float> last_swivel = solver.swivel;
   SwivelPreference prefer;
   prefer.previous = solver.swivel;
   prefer.search_circle = search_circle;
-  SwivelSolution arm = seed_arm(rig, h, state, prefer, pose);
-  float continued_depth = 0.0f;
-  IkResult r = refine_arm(rig, h, state, body_margin, arm, solver, pose, model, points, continued_depth);
-
-  // Continuing last frame's elbow keeps the arm on one solution, but where that solution cannot
-  // make the place and turn (the elbow low while the hand must point down above the other hand)
-  // it would hold the hand centimetres off for the rest of the sign, and where the hand lands
-  // would depend on where the arm came from. The posture is then also solved from the start a
-  // hand without history takes (the whole elbow circle searched), and that one kept when it
-  // lands clearly nearer: where a hand lands does not depend on what it did before.
-  if (prefer.previous) {
-    const float miss = landing_miss(rig, h, state, pose, model, points);
-    // (A hand touching the body is within the margin of it: only a hand really inside counts.)
-    const bool inside = continued_depth > body_margin + kEscapeTolerance;
-    if (miss > kLandingTolerance || inside) {
-      SwivelPreference fresh_prefer;
-      fresh_prefer.previous.reset();
-      fresh_prefer.search_circle = true;
-      const ArmSnapshot continued(h.arm, pose);
-      const SwivelSolution fresh = seed_arm(rig, h, state, fresh_prefer, pose);
-      bool keep_fresh = false;
-      IkResult fresh_r;
-      if (std::abs(wrap_angle(fresh.swivel - arm.swivel)) > kSameElbow) {
-        float fresh_depth = 0.0f;
-        fresh_r = refine_arm(rig, h, state, body_margin, fresh, solver, pose, model, points, fresh_depth);
-        // Kept when it lands on the plan (nearer than the continued one, no deeper in the body),
-        // or when the continued arm is in the body and this one is clearly less deep without
-        // landing further off (an arm switched near the body can be carried into it by the frames
-        // that continue it: PJM 'Suwałki' ended 4.9 cm inside until deep arms were re-solved too).
-        const float fresh_miss = landing_miss(rig, h, state, pose, model, points);
-        keep_fresh = (fresh_miss < std::min(miss - kLandingGain, kLanded) &&
-                      fresh_depth <= std::max(continued_depth, kEscapeTolerance)) ||
-                     (inside && fresh_depth < continued_depth - kEscapeTolerance &&
-                      fresh_miss <= miss + kLandingGain);
-      }
-      if (keep_fresh) {
-        arm = fresh;
-        r = fresh_r;
-      } else {
-        continued.restore(pose);
-      }
+  ArmCandidate best = solve_arm(rig, h, state, body_margin, prefer, solver, pose, model, points);
+  const float continued_miss = landing_miss(rig, h, state, pose, model, points);
+  // (A hand touching the body is within the margin of it: only a hand really inside counts.)
+  const bool inside = hand_depth(rig, h, body_margin, pose, model, points) > body_margin + kEscapeTolerance;
+  const bool continued_lost = best.result.position_error > kLostHand;
+  if (last_swivel && (continued_miss > kLandingTolerance || inside || continued_lost)) {
+    SwivelPreference fresh_prefer;
+    fresh_prefer.search_circle = true;
+    ArmCandidate fresh = solve_arm(rig, h, state, body_margin, fresh_prefer, solver, pose, model, points);
+    const bool fresh_lost = fresh.result.position_error > kLostHand;
+    const bool elsewhere = std::abs(wrap_angle(*fresh.swivel - *best.swivel)) > kSameElbow;
+    if ((continued_lost && !fresh_lost) ||
+        (elsewhere && continued_lost == fresh_lost && fresh.score < best.score - kReadingGain &&
+         (fresh.reading <= 1.0f || inside)))
+      best = std::move(fresh);
+  }
+  if (best.result.position_error > kLostHand) {
+    last_frame.restore(pose);
+    float reading = 0.0f;
+    const float score = arm_score(rig, h, state, body_margin, pose, model, points, reading);
+    local_to_model(rig.skeleton(), pose, model);
+    const float palm = glm::distance(vec3(model[joint_slot(h.wrist)] * vec4(h.palm_centre_local, 1.0f)), state.position);
+    if (score < best.score - kReadingGain && hand_depth(rig, h, body_margin, pose, model, points) <= kEscapeTolerance) {
+      best = ArmCandidate{last_frame, last_swivel, HandSolveResult{palm, best.result.orientation_error}};
+      best.score = score, best.reading = reading;
     }
   }
-  solver.swivel = arm.swivel;
-  return HandSolveResult{r.position_error, r.orientation_error};
+  best.pose.restore(pose);
+  solver.swivel = best.swivel;
+  return best.result;
 }
 
 HandSolveResult pose_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,
                           bool search_circle, HandSolverState& solver, Pose& pose, std::vector<mat4>& model,
                           HandPoints& points) {
   apply_hand_posture(rig, hand, state.shape, pose);
-  if (state.active) {
-    const HandRig& h = rig.hand(hand);
-    const ArmSnapshot last_frame(h.arm, pose);
-    const std::optional<float> last_swivel = solver.swivel;
-    HandSolveResult r = solve_hand(rig, hand, state, body_margin, search_circle, solver, pose, model, points);
-    if (r.position_error <= kLostHand) return r;
-    // Near the ends of the joint ranges (a hand beside the ear, the elbow fully bent, a turn the
-    // wrist cannot make) continuing last frame's elbow swivel can lead the solver astray: a hand
-    // leaving the ear ended 40 cm off, then behind the head. Such a frame looks round the whole
-    // elbow circle afresh and, if that is no nearer, the arm keeps last frame's posture for it
-    // (unless that puts the hand in the body). Rare: the normal frame pays nothing for this.
-    solver.swivel.reset();
-    r = solve_hand(rig, hand, state, body_margin, true, solver, pose, model, points);
-    if (r.position_error <= kLostHand) return r;
-    local_to_model(rig.skeleton(), pose, model);
-    const float now = glm::distance(vec3(model[joint_slot(h.wrist)] * vec4(h.palm_centre_local, 1.0f)), state.position);
-    const ArmSnapshot solved(h.arm, pose);
-    last_frame.restore(pose);
-    local_to_model(rig.skeleton(), pose, model);
-    const float before = glm::distance(vec3(model[joint_slot(h.wrist)] * vec4(h.palm_centre_local, 1.0f)), state.position);
-    if (before < now && hand_depth(rig, h, body_margin, pose, model, points) <= kEscapeTolerance) {
-      solver.swivel = last_swivel;
-      return HandSolveResult{before, r.orientation_error};
-    }
-    solved.restore(pose);
-    return r;
-  }
+  if (state.active) return solve_hand(rig, hand, state, body_margin, search_circle, solver, pose, model, points);
   for (int j : rig.hand(hand).arm.joints) pose.rotations[joint_slot(j)] = rig.rest.rotations[joint_slot(j)];
   solver.swivel.reset();
   return {};

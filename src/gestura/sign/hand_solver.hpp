@@ -1,9 +1,12 @@
 #pragma once
 // Putting one hand where a HandState says: the arm by the analytic swivel solver (a natural elbow,
 // joint limits respected), refined by damped least squares, then pushed out of the collision body.
-// The elbow continues last frame's; where that elbow cannot put the hand on its plan (over 1 cm
-// off), the posture is also solved as a hand without history would be, and the one that lands
-// nearer kept: where a hand lands depends on its plan, hardly on where the arm came from.
+// One rule decides the arm a frame keeps (solve_hand): the elbow continues last frame's; where
+// that arm lands over 1 cm off its plan, ends in the body or is lost, the posture is also solved
+// as a hand without history is, and, when even that is lost, last frame's arm is a candidate; the
+// one kept reads best as the notated sign (place and turn against what still reads as them), with
+// a hand in the body counted against it.
+// Where a hand lands depends on its plan, hardly on where the arm came from.
 // One frame of perform_plan, and what the sentence layer uses to solve a single posture, so both
 // solve exactly the same problem.
 #include <optional>
@@ -40,7 +43,7 @@ HandSolveResult solve_hand(const SigningRig& rig, Hand hand, const HandState& st
                            HandPoints& points);
 
 // One hand of one frame: the fingers posed for state.shape and, for a signing hand, the arm solved
-// (solve_hand); a resting hand's arm hangs exactly in the rest pose (a stretched arm at its limits
+// (solve_hand, which holds the whole arm-choosing rule); a resting hand's arm hangs exactly in the rest pose (a stretched arm at its limits
 // is a singular target for the iterative solvers) and forgets its swivel. What perform_plan does
 // for each hand every frame, and what the sentence layer does to solve a single posture.
 HandSolveResult pose_hand(const SigningRig& rig, Hand hand, const HandState& state, float body_margin,

@@ -66,6 +66,10 @@ Clip perform_plan(const SignPlan& plan, const SigningRig& rig, const PerformOpti
     clamp_to_limits(s, pose);
     local_to_model(s, pose, model);
     for (Hand hand : kBothHands) st.max_penetration = std::max(st.max_penetration, hand_penetration(rig, hand, model, points));
+    for (Hand hand : kBothHands)
+      if (planned[hand].active)
+        st.max_elbow_rise = std::max(st.max_elbow_rise, joint_position(model, rig.hand(hand).elbow).y -
+                                                            joint_position(model, rig.hand(hand).shoulder).y);
     for (Hand hand : kBothHands) {
       const Key k = key[hand][f];
       if (k == Key::None || !planned[hand].active) continue;

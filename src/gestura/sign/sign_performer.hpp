@@ -29,6 +29,9 @@ struct PerformanceStats {
   float key_position_time = 0.0f;      // seconds: when the largest position error happened
   float key_space_position_time = 0.0f;
   float key_orientation_time = 0.0f;   // seconds: when the largest orientation error happened
+  // How high a signing hand's elbow rose above its own shoulder joint, any frame (metres; negative:
+  // it stayed below). Signers raise the elbow to shoulder height only at the top of the head.
+  float max_elbow_rise = -1.0f;
 };
 
 // A clip on the rig's skeleton, keyed every frame on the arms and fingers.
