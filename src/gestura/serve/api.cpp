@@ -168,7 +168,7 @@ void Api::add_routes() {
   router_.add("GET", "/metrics", "metrics", [this](ApiRequest&, const app::RunContext&) {
     ApiResponse r;
     r.content_type = "text/plain; version=0.0.4";
-    r.body = metrics_.prometheus(jobs_->waiting(), jobs_->running()) + jobs_->metrics();
+    r.body = metrics_->prometheus(jobs_->waiting(), jobs_->running()) + jobs_->metrics();
     return r;
   });
   router_.add("POST", "/api/say", "say", [this](ApiRequest& q, const app::RunContext& c) { return say(q, c); });
@@ -346,7 +346,7 @@ ApiResponse Api::handle(ApiRequest& request) {
         response = error_response(503, "timeout", "the request took longer than " + std::to_string(options_.timeout) + " s and was stopped");
     }
   }
-  metrics_.record(match.name, response.status, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  metrics_->record(match.name, response.status, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return response;
 }
 

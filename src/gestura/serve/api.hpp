@@ -39,7 +39,11 @@ class Api {
   bool room_socket(const ApiRequest& request, std::string& room) const;
 
   const ServeOptions& options() const { return options_; }
-  Metrics& metrics() { return metrics_; }
+  Metrics& metrics() { return *metrics_; }
+  // Shared, for what may outlive the Api: a connection's coroutine frame is destroyed with the
+  // io_context, after the server has already let the Api go (its rooms' streams need the
+  // io_context), and its "connection closed" count must not touch freed memory.
+  std::shared_ptr<Metrics> shared_metrics() const { return metrics_; }
   RenderJobs& jobs() { return *jobs_; }
   Rooms& rooms() { return *rooms_; }
   // Whether a request only reads state (health, metrics, job status, static files): the server
@@ -70,7 +74,7 @@ class Api {
   ServeOptions options_;
   std::filesystem::path data_, web_;
   std::unique_ptr<WorkspacePool> workspaces_;  // one per request thread and render job
-  Metrics metrics_;
+  std::shared_ptr<Metrics> metrics_ = std::make_shared<Metrics>();
   Deadlines deadlines_;
   std::unique_ptr<RenderJobs> jobs_;  // the in-process queue or the broker (--broker)
   Router router_;

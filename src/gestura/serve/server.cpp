@@ -196,10 +196,11 @@ struct Server::Impl {
 
   asio::awaitable<void> session(tcp::socket socket) {
     api->metrics().connection_opened();
+    // Counted down when the frame goes, which may be after the Api (see Api::shared_metrics).
     struct Closed {
-      Metrics& m;
-      ~Closed() { m.connection_closed(); }
-    } closed{api->metrics()};
+      std::shared_ptr<Metrics> m;
+      ~Closed() { m->connection_closed(); }
+    } closed{api->shared_metrics()};
     beast::tcp_stream stream(std::move(socket));
     beast::flat_buffer buffer;
     for (bool first = true;; first = false) {
