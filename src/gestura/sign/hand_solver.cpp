@@ -248,9 +248,14 @@ IkResult refine_arm(const SigningRig& rig, const HandRig& h, const HandState& st
   return r;
 }
 
-// How far the posed hand lands from where `state` plans it: the part that meets the body for a hand
-// at the body, the palm centre in space, and its turn weighed as the solver weighs it.
-float landing_miss(const SigningRig& rig, const HandRig& h, const HandState& state, const Pose& pose,
+// Where the posed hand misses its plan: `place` in metres (the part that meets the body for a hand
+// at the body, the palm centre in space) and `turn` in radians.
+struct PlanMiss {
+  float place = 0.0f;
+  float turn = 0.0f;
+};
+
+PlanMiss plan_miss(const SigningRig& rig, const HandRig& h, const HandState& state, const Pose& pose,
                    std::vector<mat4>& model, HandPoints& points) {
   local_to_model(rig.skeleton(), pose, model);
   const mat4& w = model[joint_slot(h.wrist)];
@@ -263,6 +268,14 @@ float landing_miss(const SigningRig& rig, const HandRig& h, const HandState& sta
   }
   const float turn =
       glm::length(rotation_error(glm::normalize(glm::quat_cast(mat3(w))), planned_wrist_rotation(rig, h.hand, state)));
+  return {place, turn};
+}
+
+// How far the posed hand lands from where `state` plans it: the part that meets the body for a hand
+// at the body, the palm centre in space, and its turn weighed as the solver weighs it.
+float landing_miss(const SigningRig& rig, const HandRig& h, const HandState& state, const Pose& pose,
+                   std::vector<mat4>& model, HandPoints& points) {
+  const auto [place, turn] = plan_miss(rig, h, state, pose, model, points);
   return place + glm::mix(kSpaceTurnWeight, kBodyTurnWeight, state.body_weight) * turn;
 }
 
@@ -275,17 +288,7 @@ float landing_miss(const SigningRig& rig, const HandRig& h, const HandState& sta
 // 4.8 cm off at a turn 16° off.
 float reading_miss(const SigningRig& rig, const HandRig& h, const HandState& state, const Pose& pose,
                    std::vector<mat4>& model, HandPoints& points) {
-  local_to_model(rig.skeleton(), pose, model);
-  const mat4& w = model[joint_slot(h.wrist)];
-  float place = glm::distance(vec3(w * vec4(h.palm_centre_local, 1.0f)), state.position);
-  if (state.at_body) {
-    hand_surface_points(rig, h.hand, model, points);
-    std::size_t contact = 0;
-    const vec3 planned = planned_contact(rig, h.hand, state, model, points, contact);
-    place = glm::distance(planned, points[contact]);
-  }
-  const float turn =
-      glm::length(rotation_error(glm::normalize(glm::quat_cast(mat3(w))), planned_wrist_rotation(rig, h.hand, state)));
+  const auto [place, turn] = plan_miss(rig, h, state, pose, model, points);
   const float p = place / (state.at_body ? kReadPlaceAtBody : kReadPlaceInSpace), t = turn / kReadTurn;
   return std::max(p, t) + static_cast<float>(p > 1.0f) + static_cast<float>(t > 1.0f);
 }
